@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// Typed exceptions. The library never aborts on bad input: it throws one of
+/// these, and the message names the offending field and value.
+
+#include <stdexcept>
+#include <string>
+
+namespace fixel {
+
+/// Base of every exception fixel throws on purpose.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Bad input: `field` is the JSON path or option name (for example
+/// `fixels[1].normal`), `value` the offending value as text, and `what()` is
+/// "field: value reason".
+class InputError : public Error {
+ public:
+  InputError(std::string field, std::string value, const std::string& reason);
+  const std::string& field() const { return field_; }
+  const std::string& value() const { return value_; }
+
+ private:
+  std::string field_;
+  std::string value_;
+};
+
+/// Text that is not an exact number, or malformed JSON.
+class ParseError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+/// A scene that is well formed but physically invalid or degenerate
+/// (for example a singular W_n).
+class SceneError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+/// Input that is valid but needs a case fixel does not handle yet.
+class UnsupportedError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+}  // namespace fixel

@@ -1,0 +1,17 @@
+#pragma once
+// Exact LU decomposition: Eigen's FullPivLU on Rational with threshold 0, so
+// that rank and invertibility count only pivots that are exactly zero.
+
+#include <Eigen/LU>
+
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+
+inline Eigen::FullPivLU<MatrixQ> exact_lu(const MatrixQ& A) {
+  Eigen::FullPivLU<MatrixQ> lu(A);
+  lu.setThreshold(Rational(0));
+  return lu;
+}
+
+}  // namespace fixel::internal

@@ -1,0 +1,35 @@
+#pragma once
+/// @file
+/// Result documents: the JSON contract of DESIGN §5 and readable reports.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fixel/scene.h"
+#include "fixel/seating.h"
+#include "fixel/verify.h"
+
+namespace fixel {
+
+/// `fixel seat --json`: {"scene", "dof", "sliding", "velocity_after",
+/// "tangential_velocity", "apex", "rays", "halfspaces": [{"a", "c"}]} and,
+/// with an impulse, "contains", "y" and "y_names" (eq. 27). Numbers are exact
+/// strings.
+std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
+
+/// The same content as a readable report.
+std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
+
+/// Writes `seating_set.off` (S clipped to seating_dump_box(S, length)) into
+/// directory `dir`, which is created if needed. Returns the written paths.
+/// Throws InputError if the directory cannot be created or written.
+std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
+                                  const Rational& length);
+
+/// `fixel verify` output: one line per check, then a summary line.
+std::string verification_text(const std::vector<VerificationCheck>& checks);
+/// `fixel verify --json`: {"checks": [{"name", "passed", "detail"}], "passed": bool}.
+std::string verification_json(const std::vector<VerificationCheck>& checks);
+
+}  // namespace fixel

@@ -1,0 +1,67 @@
+#pragma once
+/// @file
+/// The scene: a planar part (or point mass) near its fixels. DESIGN §2, §5.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fixel/rational.h"
+
+namespace fixel {
+
+/// A 2-vector of exact numbers, in the analysis frame A (the part's body
+/// frame at the current configuration, axes aligned with the world).
+struct Vec2 {
+  Rational x, y;
+};
+
+/// The moving part. Generalised coordinates are (x, y, θ) for dof 3 and
+/// (x, y) for a point mass (dof 2).
+struct Body {
+  int dof = 3;
+  Rational mass;                 ///< m > 0.
+  Rational inertia;              ///< I > 0 about the centre of mass (dof 3 only; 0 for dof 2).
+  VectorQ velocity;              ///< ν^ℓ, length dof (m/s, rad/s).
+  Vec2 p_AoCm_A;                 ///< Centre of mass in frame A.
+  std::optional<std::string> boundary_json;  ///< Raw `boundary`, kept for later stages.
+};
+
+/// One fixture point ("fixel").
+struct Fixel {
+  Vec2 p_AoF_A;   ///< Contact point in frame A.
+  Vec2 n_A;       ///< Inward unit normal (into the part), exactly x²+y² == 1.
+  Rational mu;    ///< Coulomb friction μ ≥ 0.
+  Rational gap;   ///< Gap ψ ≥ 0 at the current configuration.
+};
+
+/// A whole scene file.
+struct Scene {
+  std::string name;
+  Rational time_step;            ///< h > 0.
+  Body body;
+  std::vector<Fixel> fixels;
+  Rational pusher_mu;            ///< Pusher friction μ_p ≥ 0 (default 0).
+  VectorQ background_impulse;    ///< b₀, length dof (default 0).
+
+  /// Number of contacts n_c.
+  int num_contacts() const { return static_cast<int>(fixels.size()); }
+  /// Lever arm r_i = p_i − c of fixel i, in frame A.
+  Vec2 lever_arm(int i) const;
+  /// Tangent t_i = n_i rotated by +90°.
+  Vec2 tangent(int i) const;
+};
+
+/// Parses and validates a scene from JSON text. `source` names the input in
+/// messages. Throws ParseError for malformed text or numbers, SceneError for
+/// invalid values (each naming the JSON path and value), UnsupportedError for
+/// valid requests not handled yet.
+Scene parse_scene(const std::string& json_text, const std::string& source = "scene");
+
+/// Reads and parses a scene file. Throws InputError if it cannot be read.
+Scene load_scene(const std::string& path);
+
+/// Parses an impulse given as "px,py[,pθ]" and checks its length against dof.
+VectorQ parse_impulse(const std::string& text, int dof, const std::string& field = "--impulse");
+
+}  // namespace fixel

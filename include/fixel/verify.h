@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// The built-in verification suite behind `fixel verify`: the paper's
+/// examples, checked exactly.
+
+#include <string>
+#include <vector>
+
+#include "fixel/rational.h"
+
+namespace fixel {
+
+/// One named check and its outcome.
+struct VerificationCheck {
+  std::string name;
+  bool passed = false;
+  std::string detail;  ///< What was compared, or what differed.
+};
+
+/// Runs every check; never throws (an exception inside a check fails it).
+std::vector<VerificationCheck> run_verification();
+
+/// `x` rounded half away from zero to `decimals` places, exactly, as a
+/// rational (for comparing against tables printed to that many places).
+Rational round_decimal(const Rational& x, int decimals);
+
+}  // namespace fixel

@@ -1,0 +1,157 @@
+#include "fixel/cone.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost_mp.h>
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+
+namespace fixel {
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<Rational>;  // exact: every predicate on Rational
+using Vector3 = Kernel::Vector_3;
+
+Vector3 to_cgal(const VectorQ& v) { return Vector3(v[0], v[1], v[2]); }
+VectorQ from_cgal(const Vector3& v) {
+  VectorQ out(3);
+  out << v.x(), v.y(), v.z();
+  return out;
+}
+
+// Planar analogue of the cross product: the normal of the line spanned by r,
+// rotated +90°.
+VectorQ perp2(const VectorQ& r) {
+  VectorQ out(2);
+  out << -r[1], r[0];
+  return out;
+}
+
+// +1 if every ray has a·r >= 0, -1 if every ray has a·r <= 0, 0 otherwise.
+// Both would mean a is orthogonal to every ray; callers exclude that case.
+int supporting_side(const VectorQ& a, const std::vector<VectorQ>& rays) {
+  bool nonneg = true, nonpos = true;
+  for (const auto& r : rays) {
+    const int s = sign(a.dot(r));
+    nonneg = nonneg && s >= 0;
+    nonpos = nonpos && s <= 0;
+  }
+  return nonneg ? 1 : (nonpos ? -1 : 0);
+}
+
+void add_unique(std::vector<VectorQ>& out, const VectorQ& a) {
+  const VectorQ p = primitive_direction(a);
+  for (const auto& q : out)
+    if (q == p) return;
+  out.push_back(p);
+}
+
+// Adds a (or -a) if it supports the cone; a must not be orthogonal to every ray.
+void add_if_supporting(std::vector<VectorQ>& out, const VectorQ& a, const std::vector<VectorQ>& rays) {
+  const int side = supporting_side(a, rays);
+  if (side != 0) add_unique(out, side > 0 ? a : VectorQ(-a));
+}
+
+void add_equality(std::vector<VectorQ>& out, const VectorQ& a) {
+  add_unique(out, a);
+  add_unique(out, -a);
+}
+
+std::vector<VectorQ> nonzero(const std::vector<VectorQ>& rays) {
+  std::vector<VectorQ> out;
+  for (const auto& r : rays)
+    if (!r.isZero()) out.push_back(r);
+  return out;
+}
+
+VectorQ unit(int dim, int k) {
+  VectorQ e = VectorQ::Zero(dim);
+  e[k] = 1;
+  return e;
+}
+
+std::vector<VectorQ> facets3(const std::vector<VectorQ>& rays, int rank) {
+  std::vector<VectorQ> out;
+  if (rank == 0) {
+    for (int k = 0; k < 3; ++k) add_equality(out, unit(3, k));
+    return out;
+  }
+  if (rank == 1) {
+    const Vector3 u = to_cgal(rays.front());
+    // Two independent normals of u: cross with the axis least aligned to it.
+    const Vector3 axis = CGAL::abs(u.x()) <= CGAL::abs(u.y()) && CGAL::abs(u.x()) <= CGAL::abs(u.z())
+                             ? Vector3(1, 0, 0)
+                             : (CGAL::abs(u.y()) <= CGAL::abs(u.z()) ? Vector3(0, 1, 0) : Vector3(0, 0, 1));
+    const Vector3 n1 = CGAL::cross_product(u, axis), n2 = CGAL::cross_product(u, n1);
+    add_equality(out, from_cgal(n1));
+    add_equality(out, from_cgal(n2));
+    add_if_supporting(out, from_cgal(u), rays);  // absent when the rays span the whole line
+    return out;
+  }
+  if (rank == 2) {
+    Vector3 n = CGAL::NULL_VECTOR;
+    for (std::size_t i = 0; i < rays.size() && n == CGAL::NULL_VECTOR; ++i)
+      for (std::size_t j = i + 1; j < rays.size() && n == CGAL::NULL_VECTOR; ++j)
+        n = CGAL::cross_product(to_cgal(rays[i]), to_cgal(rays[j]));
+    add_equality(out, from_cgal(n));
+    for (const auto& r : rays) add_if_supporting(out, from_cgal(CGAL::cross_product(n, to_cgal(r))), rays);
+    return out;
+  }
+  // Full rank: every facet plane contains two independent rays.
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    for (std::size_t j = i + 1; j < rays.size(); ++j) {
+      const Vector3 c = CGAL::cross_product(to_cgal(rays[i]), to_cgal(rays[j]));
+      if (c != CGAL::NULL_VECTOR) add_if_supporting(out, from_cgal(c), rays);
+    }
+  return out;
+}
+
+std::vector<VectorQ> facets2(const std::vector<VectorQ>& rays, int rank) {
+  std::vector<VectorQ> out;
+  if (rank == 0) {
+    add_equality(out, unit(2, 0));
+    add_equality(out, unit(2, 1));
+    return out;
+  }
+  if (rank == 1) {
+    add_equality(out, perp2(rays.front()));
+    add_if_supporting(out, rays.front(), rays);
+    return out;
+  }
+  for (const auto& r : rays) add_if_supporting(out, perp2(r), rays);
+  return out;
+}
+
+}  // namespace
+
+int exact_rank(const std::vector<VectorQ>& rays, int dim) {
+  if (rays.empty()) return 0;
+  MatrixQ A(dim, static_cast<int>(rays.size()));
+  for (std::size_t k = 0; k < rays.size(); ++k) A.col(static_cast<int>(k)) = rays[k];
+  return static_cast<int>(internal::exact_lu(A).rank());
+}
+
+VectorQ primitive_direction(const VectorQ& v) {
+  if (v.isZero()) return v;
+  Integer den_lcm = 1;
+  for (int k = 0; k < v.size(); ++k)
+    den_lcm = boost::multiprecision::lcm(den_lcm, boost::multiprecision::denominator(v[k]));
+  const VectorQ scaled = v * Rational(den_lcm);  // integer entries
+  Integer g = 0;
+  for (int k = 0; k < v.size(); ++k) g = boost::multiprecision::gcd(g, boost::multiprecision::numerator(scaled[k]));
+  return scaled / Rational(boost::multiprecision::abs(g));
+}
+
+std::vector<VectorQ> cone_facet_normals(const std::vector<VectorQ>& rays, int dim) {
+  if (dim != 2 && dim != 3) throw InputError("dim", std::to_string(dim), "must be 2 or 3");
+  for (std::size_t k = 0; k < rays.size(); ++k)
+    if (rays[k].size() != dim)
+      throw InputError("rays[" + std::to_string(k) + "]", std::to_string(rays[k].size()) + " entries",
+                       "but the cone lives in dimension " + std::to_string(dim));
+  const std::vector<VectorQ> live = nonzero(rays);
+  const int rank = exact_rank(live, dim);
+  return dim == 3 ? facets3(live, rank) : facets2(live, rank);
+}
+
+}  // namespace fixel

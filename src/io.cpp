@@ -1,0 +1,134 @@
+#include "fixel/io.h"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "fixel/error.h"
+#include "fixel/off_io.h"
+
+namespace fixel {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json exact(const VectorQ& v) {
+  json out = json::array();
+  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
+  return out;
+}
+
+std::string text(const VectorQ& v) {
+  std::string s = "(";
+  for (int k = 0; k < v.size(); ++k) s += (k ? ", " : "") + to_string(v[k]);
+  return s + ")";
+}
+
+std::string halfspace_text(const Halfspace& h) {
+  static const char* names[] = {"px", "py", "ptheta"};
+  std::string s;
+  for (int k = 0; k < h.a.size(); ++k) {
+    if (h.a[k] == 0) continue;
+    const Rational c = h.a[k];
+    std::string coef = (c == 1 || c == -1) ? "" : to_string(boost::multiprecision::abs(c)) + "*";
+    s += s.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ");
+    s += coef + names[k];
+  }
+  return s + " >= " + to_string(h.c);
+}
+
+}  // namespace
+
+std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse) {
+  json doc;
+  doc["scene"] = scene.name;
+  doc["dof"] = S.dof;
+  doc["sliding"] = S.sliding;
+  doc["velocity_after"] = exact(S.nu_plus);
+  doc["tangential_velocity"] = exact(S.tangential_velocity);
+  doc["apex"] = exact(S.apex);
+  doc["rays"] = json::array();
+  for (const auto& r : S.rays) doc["rays"].push_back(exact(r));
+  doc["halfspaces"] = json::array();
+  for (const auto& h : S.halfspaces) doc["halfspaces"].push_back({{"a", exact(h.a)}, {"c", to_string(h.c)}});
+  if (impulse) {
+    doc["impulse"] = exact(*impulse);
+    doc["contains"] = S.contains(*impulse);
+    const SeatingSystem sys = seating_system(scene, S);
+    doc["y"] = exact(sys.y(*impulse));
+    doc["y_names"] = sys.y_names;
+  }
+  return doc.dump(2) + "\n";
+}
+
+std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse) {
+  std::ostringstream out;
+  out << "Seating set S of scene \"" << scene.name << "\" (dof " << S.dof << ", " << scene.num_contacts()
+      << " fixels)\n";
+  out << "  seating velocity nu+ = " << text(S.nu_plus) << "\n";
+  for (int i = 0; i < scene.num_contacts(); ++i)
+    out << "  fixel " << i << ": v_t = " << to_string(S.tangential_velocity[i]) << ", slides "
+        << (S.sliding[i] > 0 ? "+t" : "-t") << ", generator g = " << text(S.generators[i]) << "\n";
+  out << "  S = apex - cone(g):  apex = " << text(S.apex) << "\n";
+  out << "  facets (S is where all hold):\n";
+  for (const auto& h : S.halfspaces) out << "    " << halfspace_text(h) << "\n";
+  if (impulse) {
+    const bool in = S.contains(*impulse);
+    out << "Impulse p = " << text(*impulse) << " is " << (in ? "IN" : "NOT in") << " S";
+    out << (in ? ": it is consistent with seating in one step.\n" : ".\n");
+    const SeatingSystem sys = seating_system(scene, S);
+    const VectorQ y = sys.y(*impulse);
+    out << "  eq. (27) y = K^-1 (P p + a):\n";
+    for (int k = 0; k < y.size(); ++k)
+      out << "    " << sys.y_names[k] << " = " << to_string(y[k]) << (y[k] < 0 ? "   < 0" : "") << "\n";
+  }
+  return out.str();
+}
+
+std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
+                                  const Rational& length) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError("--off", dir, "cannot be created: " + ec.message());
+  const Box box = seating_dump_box(S, length);
+  std::vector<Halfspace> hs = S.halfspaces;
+  for (const auto& h : box.halfspaces()) hs.push_back(h);
+  const std::string path = (std::filesystem::path(dir) / "seating_set.off").string();
+  std::ofstream out(path);
+  if (!out) throw InputError("--off", path, "cannot be written");
+  write_polytope_off(out, hs, S.dof,
+                     {"fixel: seating impulse set S of scene \"" + scene.name + "\"" +
+                          (S.dof == 2 ? " (dof 2, drawn in the plane z = 0)" : ""),
+                      "clipped to the box " + box.describe(),
+                      "(the box holds the apex and apex + " + to_string(length) + " * r for every ray r)",
+                      "apex " + text(S.apex) + "; coordinates below are rounded to double for display"});
+  if (!out) throw InputError("--off", path, "could not be written completely");
+  return {path};
+}
+
+std::string verification_text(const std::vector<VerificationCheck>& checks) {
+  std::ostringstream out;
+  int failed = 0;
+  for (const auto& c : checks) {
+    out << (c.passed ? "PASS " : "FAIL ") << c.name << ": " << c.detail << "\n";
+    failed += c.passed ? 0 : 1;
+  }
+  out << (checks.size() - failed) << " passed, " << failed << " failed\n";
+  return out.str();
+}
+
+std::string verification_json(const std::vector<VerificationCheck>& checks) {
+  json doc;
+  doc["checks"] = json::array();
+  bool all = true;
+  for (const auto& c : checks) {
+    doc["checks"].push_back({{"name", c.name}, {"passed", c.passed}, {"detail", c.detail}});
+    all = all && c.passed;
+  }
+  doc["passed"] = all;
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace fixel

@@ -1,0 +1,93 @@
+#include "fixel/internal/json_exact.h"
+
+#include <set>
+#include <vector>
+
+#include "fixel/error.h"
+
+namespace fixel::internal {
+
+namespace {
+
+using json = nlohmann::json;
+
+// A SAX consumer that builds the DOM itself, so that number_float's raw text
+// is kept (the DOM parser would round it to a double) and duplicate keys are
+// caught (the DOM parser silently keeps the last one).
+class ExactDomBuilder {
+ public:
+  explicit ExactDomBuilder(std::string source) : source_(std::move(source)) {}
+
+  bool null() { return put(json(nullptr)); }
+  bool boolean(bool v) { return put(json(v)); }
+  bool number_integer(json::number_integer_t v) { return put(json(std::to_string(v))); }
+  bool number_unsigned(json::number_unsigned_t v) { return put(json(std::to_string(v))); }
+  bool number_float(json::number_float_t, const json::string_t& raw) { return put(json(raw)); }
+  bool string(json::string_t& v) { return put(json(v)); }
+  bool binary(json::binary_t&) { return put(json(nullptr)); }
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool end_object() { return close(); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_array() { return close(); }
+  bool key(json::string_t& k) {
+    auto& keys = keys_.back();
+    if (!keys.insert(k).second)
+      throw ParseError(source_, "key \"" + k + "\"", "appears twice in one object");
+    pending_key_ = k;
+    return true;
+  }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
+    throw ParseError(source_, "at byte " + std::to_string(position), std::string("is not valid JSON (") + ex.what() + ")");
+  }
+
+  json result() { return std::move(root_); }
+
+ private:
+  bool put(json value) {
+    if (stack_.empty()) {
+      root_ = std::move(value);
+    } else if (stack_.back()->is_array()) {
+      stack_.back()->push_back(std::move(value));
+    } else {
+      (*stack_.back())[pending_key_] = std::move(value);
+    }
+    return true;
+  }
+  bool open(json container) {
+    json* slot;
+    if (stack_.empty()) {
+      root_ = std::move(container);
+      slot = &root_;
+    } else if (stack_.back()->is_array()) {
+      stack_.back()->push_back(std::move(container));
+      slot = &stack_.back()->back();
+    } else {
+      slot = &((*stack_.back())[pending_key_] = std::move(container));
+    }
+    stack_.push_back(slot);
+    keys_.emplace_back();
+    return true;
+  }
+  bool close() {
+    stack_.pop_back();
+    keys_.pop_back();
+    return true;
+  }
+
+  std::string source_;
+  json root_;
+  std::vector<json*> stack_;
+  std::vector<std::set<std::string>> keys_;
+  std::string pending_key_;
+};
+
+}  // namespace
+
+nlohmann::json parse_json_exact(const std::string& text, const std::string& source) {
+  ExactDomBuilder builder(source);
+  // Depth is bounded by the input size; nlohmann's SAX parser is iterative.
+  json::sax_parse(text, &builder, json::input_format_t::json, true, false);
+  return builder.result();
+}
+
+}  // namespace fixel::internal

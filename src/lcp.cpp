@@ -1,0 +1,96 @@
+#include "fixel/lcp.h"
+
+namespace fixel {
+
+VectorQ contact_wrench(const Vec2& r_A, const Vec2& d_A, int dof) {
+  VectorQ w(dof);
+  w[0] = d_A.x;
+  w[1] = d_A.y;
+  if (dof == 3) w[2] = r_A.x * d_A.y - r_A.y * d_A.x;  // r ⊗ d
+  return w;
+}
+
+MatrixQ normal_wrench_matrix(const Scene& scene) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  MatrixQ Wn(dof, nc);
+  for (int i = 0; i < nc; ++i) Wn.col(i) = contact_wrench(scene.lever_arm(i), scene.fixels[i].n_A, dof);
+  return Wn;
+}
+
+ContactMatrices contact_matrices(const Scene& scene) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  ContactMatrices W;
+  W.M = MatrixQ::Zero(dof, dof);
+  W.M(0, 0) = scene.body.mass;
+  W.M(1, 1) = scene.body.mass;
+  if (dof == 3) W.M(2, 2) = scene.body.inertia;
+  W.Wn = normal_wrench_matrix(scene);
+  W.Wt = MatrixQ(dof, nc);
+  W.Wf = MatrixQ(dof, 2 * nc);
+  W.E = MatrixQ::Zero(2 * nc, nc);
+  W.U = MatrixQ::Zero(nc, nc);
+  for (int i = 0; i < nc; ++i) {
+    W.Wt.col(i) = contact_wrench(scene.lever_arm(i), scene.tangent(i), dof);
+    W.Wf.col(2 * i) = W.Wt.col(i);
+    W.Wf.col(2 * i + 1) = -W.Wt.col(i);
+    W.E(2 * i, i) = 1;
+    W.E(2 * i + 1, i) = 1;
+    W.U(i, i) = scene.fixels[i].mu;
+  }
+  return W;
+}
+
+TimeSteppingLcp build_lcp(const Scene& scene) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  TimeSteppingLcp lcp;
+  lcp.W = contact_matrices(scene);
+  const ContactMatrices& W = lcp.W;
+  // M is diagonal with positive entries, so its inverse is exact and cheap.
+  MatrixQ Minv = MatrixQ::Zero(dof, dof);
+  for (int k = 0; k < dof; ++k) Minv(k, k) = Rational(1) / W.M(k, k);
+
+  const int n = 4 * nc;
+  lcp.B = MatrixQ::Zero(n, n);
+  lcp.B.block(0, 0, nc, nc) = W.Wn.transpose() * Minv * W.Wn;
+  lcp.B.block(0, nc, nc, 2 * nc) = W.Wn.transpose() * Minv * W.Wf;
+  lcp.B.block(nc, 0, 2 * nc, nc) = W.Wf.transpose() * Minv * W.Wn;
+  lcp.B.block(nc, nc, 2 * nc, 2 * nc) = W.Wf.transpose() * Minv * W.Wf;
+  lcp.B.block(nc, 3 * nc, 2 * nc, nc) = W.E;
+  lcp.B.block(3 * nc, 0, nc, nc) = W.U;
+  lcp.B.block(3 * nc, nc, nc, 2 * nc) = -W.E.transpose();
+
+  lcp.P = MatrixQ::Zero(n, dof);
+  lcp.P.topRows(nc) = W.Wn.transpose() * Minv;
+  lcp.P.middleRows(nc, 2 * nc) = W.Wf.transpose() * Minv;
+
+  VectorQ psi(nc);
+  for (int i = 0; i < nc; ++i) psi[i] = scene.fixels[i].gap;
+  lcp.a = VectorQ::Zero(n);
+  lcp.a.head(nc) = W.Wn.transpose() * scene.body.velocity + psi / scene.time_step;
+  lcp.a.segment(nc, 2 * nc) = W.Wf.transpose() * scene.body.velocity;
+  return lcp;
+}
+
+VectorQ TimeSteppingLcp::b(const VectorQ& p_ext) const { return P * p_ext + a; }
+
+namespace {
+std::vector<std::string> names(int nc, const char* normal, const char* friction, const char* slack) {
+  std::vector<std::string> out;
+  for (int i = 0; i < nc; ++i) out.push_back(std::string(normal) + "[" + std::to_string(i) + "]");
+  for (int i = 0; i < nc; ++i) {
+    out.push_back(std::string(friction) + "[" + std::to_string(i) + "]+");
+    out.push_back(std::string(friction) + "[" + std::to_string(i) + "]-");
+  }
+  for (int i = 0; i < nc; ++i) out.push_back(std::string(slack) + "[" + std::to_string(i) + "]");
+  return out;
+}
+}  // namespace
+
+std::vector<std::string> TimeSteppingLcp::w_names() const {
+  return names(static_cast<int>(W.U.rows()), "rho_n", "rho_f", "sigma");
+}
+std::vector<std::string> TimeSteppingLcp::z_names() const {
+  return names(static_cast<int>(W.U.rows()), "p_n", "p_f", "s");
+}
+
+}  // namespace fixel

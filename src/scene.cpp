@@ -1,0 +1,208 @@
+#include "fixel/scene.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+#include "fixel/internal/json_exact.h"
+#include "fixel/lcp.h"
+
+namespace fixel {
+
+namespace {
+
+using json = nlohmann::json;
+
+std::string describe(const json& v) {
+  std::string s = v.dump();
+  if (s.size() > 80) s = s.substr(0, 77) + "...";
+  return s;
+}
+
+// Checks that `obj` is an object whose keys are all in `allowed`.
+std::string join(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+// `path` is empty for the document root, which `source` then names.
+void expect_object(const json& obj, const std::string& path, const std::set<std::string>& allowed,
+                   const std::string& source = "") {
+  if (!obj.is_object()) throw SceneError(path.empty() ? source : path, describe(obj), "must be a JSON object");
+  for (const auto& item : obj.items())
+    if (!allowed.count(item.key()))
+      throw SceneError(join(path, item.key()), describe(item.value()), "is not a known field");
+}
+
+const json& require(const json& obj, const std::string& key, const std::string& path) {
+  auto it = obj.find(key);
+  if (it == obj.end()) throw SceneError(join(path, key), "", "is missing");
+  return *it;
+}
+
+Rational number(const json& v, const std::string& path) {
+  if (!v.is_string()) throw ParseError(path, describe(v), "is not an exact number");
+  return parse_rational(v.get<std::string>(), path);
+}
+
+VectorQ vector(const json& v, const std::string& path, int expected_length, const std::string& why) {
+  if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of numbers");
+  if (static_cast<int>(v.size()) != expected_length)
+    throw SceneError(path, describe(v),
+                     "has " + std::to_string(v.size()) + " entries but " + why + " needs " +
+                         std::to_string(expected_length));
+  VectorQ out(expected_length);
+  for (int i = 0; i < expected_length; ++i) out[i] = number(v[i], path + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+Vec2 vec2(const json& v, const std::string& path) {
+  VectorQ q = vector(v, path, 2, "a planar point or direction");
+  return {q[0], q[1]};
+}
+
+std::string pair_text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
+
+void require_positive(const Rational& v, const std::string& path) {
+  if (v <= 0) throw SceneError(path, to_string(v), "must be > 0");
+}
+void require_nonnegative(const Rational& v, const std::string& path) {
+  if (v < 0) throw SceneError(path, to_string(v), "must be >= 0");
+}
+
+int parse_dof(const json& v) {
+  if (!v.is_string()) throw SceneError("body.dof", describe(v), "must be 2 or 3");
+  const std::string s = v.get<std::string>();
+  if (s != "2" && s != "3") throw SceneError("body.dof", s, "must be 2 (point mass) or 3 (planar rigid body)");
+  return s == "2" ? 2 : 3;
+}
+
+// Names the first fixel whose normal wrench lies in the span of the earlier
+// ones, so that the message points at something the user can change.
+void check_fixture_determines_motion(const Scene& scene) {
+  const MatrixQ Wn = normal_wrench_matrix(scene);
+  if (internal::exact_lu(Wn).isInvertible()) return;
+  for (int j = 1; j <= scene.num_contacts(); ++j) {
+    if (internal::exact_lu(Wn.leftCols(j)).rank() < j)
+      throw SceneError("fixels[" + std::to_string(j - 1) + "]", pair_text(scene.fixels[j - 1].p_AoF_A),
+                       "makes W_n singular: its normal wrench is a combination of the earlier fixels', "
+                       "so the fixture does not determine the motion");
+  }
+}
+
+}  // namespace
+
+Vec2 Scene::lever_arm(int i) const {
+  const Vec2& p = fixels.at(i).p_AoF_A;
+  return {p.x - body.p_AoCm_A.x, p.y - body.p_AoCm_A.y};
+}
+
+Vec2 Scene::tangent(int i) const {
+  const Vec2& n = fixels.at(i).n_A;
+  return {-n.y, n.x};
+}
+
+Scene parse_scene(const std::string& json_text, const std::string& source) {
+  const json root = internal::parse_json_exact(json_text, source);
+  expect_object(root, "", {"name", "time_step", "body", "fixels", "pusher", "background_impulse"}, source);
+
+  Scene scene;
+  const auto name_it = root.find("name");
+  if (name_it != root.end()) {
+    if (!name_it->is_string()) throw SceneError("name", describe(*name_it), "must be a string");
+    scene.name = name_it->get<std::string>();
+  }
+  scene.time_step = number(require(root, "time_step", ""), "time_step");
+  require_positive(scene.time_step, "time_step");
+
+  const json& body = require(root, "body", "");
+  expect_object(body, "body", {"dof", "mass", "inertia", "velocity", "center_of_mass", "boundary"});
+  Body& b = scene.body;
+  b.dof = parse_dof(require(body, "dof", "body"));
+  b.mass = number(require(body, "mass", "body"), "body.mass");
+  require_positive(b.mass, "body.mass");
+  const bool has_boundary = body.contains("boundary");
+  if (has_boundary) b.boundary_json = body.at("boundary").dump();
+  if (b.dof == 3) {
+    if (!body.contains("inertia")) {
+      if (has_boundary)
+        throw UnsupportedError("body.inertia", "", "is missing; computing it from the boundary is not implemented yet");
+      throw SceneError("body.inertia", "", "is missing (required for dof 3 without a boundary)");
+    }
+    b.inertia = number(body.at("inertia"), "body.inertia");
+    require_positive(b.inertia, "body.inertia");
+  } else if (body.contains("inertia")) {
+    throw SceneError("body.inertia", describe(body.at("inertia")), "is not allowed for a point mass (dof 2)");
+  }
+  b.velocity = body.contains("velocity") ? vector(body.at("velocity"), "body.velocity", b.dof, "dof " + std::to_string(b.dof))
+                                         : VectorQ::Zero(b.dof);
+  if (body.contains("center_of_mass")) {
+    b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
+  } else if (has_boundary) {
+    throw UnsupportedError("body.center_of_mass", "", "is missing; computing it from the boundary is not implemented yet");
+  } else {
+    b.p_AoCm_A = {Rational(0), Rational(0)};
+  }
+
+  const json& fixels = require(root, "fixels", "");
+  if (!fixels.is_array()) throw SceneError("fixels", describe(fixels), "must be an array");
+  for (std::size_t i = 0; i < fixels.size(); ++i) {
+    const std::string path = "fixels[" + std::to_string(i) + "]";
+    const json& f = fixels[i];
+    expect_object(f, path, {"point", "normal", "mu", "gap"});
+    Fixel fx;
+    fx.p_AoF_A = vec2(require(f, "point", path), path + ".point");
+    fx.n_A = vec2(require(f, "normal", path), path + ".normal");
+    if (fx.n_A.x * fx.n_A.x + fx.n_A.y * fx.n_A.y != 1)
+      throw SceneError(path + ".normal", pair_text(fx.n_A),
+                       "is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
+    fx.mu = number(require(f, "mu", path), path + ".mu");
+    require_nonnegative(fx.mu, path + ".mu");
+    fx.gap = number(require(f, "gap", path), path + ".gap");
+    require_nonnegative(fx.gap, path + ".gap");
+    scene.fixels.push_back(fx);
+  }
+  if (scene.num_contacts() != b.dof)
+    throw SceneError("fixels", std::to_string(scene.num_contacts()) + " fixels",
+                     "but dof is " + std::to_string(b.dof) +
+                         ": the seating analysis needs exactly dof fixels (n_c == dof)");
+
+  scene.pusher_mu = Rational(0);
+  if (root.contains("pusher")) {
+    const json& pusher = root.at("pusher");
+    expect_object(pusher, "pusher", {"mu"});
+    if (pusher.contains("mu")) {
+      scene.pusher_mu = number(pusher.at("mu"), "pusher.mu");
+      require_nonnegative(scene.pusher_mu, "pusher.mu");
+    }
+  }
+  scene.background_impulse = root.contains("background_impulse")
+                                 ? vector(root.at("background_impulse"), "background_impulse", b.dof,
+                                          "dof " + std::to_string(b.dof))
+                                 : VectorQ::Zero(b.dof);
+
+  check_fixture_determines_motion(scene);
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot be opened");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path, "", "cannot be read");
+  return parse_scene(text.str(), path);
+}
+
+VectorQ parse_impulse(const std::string& text, int dof, const std::string& field) {
+  const std::vector<Rational> values = parse_rational_list(text, field);
+  if (static_cast<int>(values.size()) != dof)
+    throw InputError(field, "\"" + text + "\"",
+                     "has " + std::to_string(values.size()) + " components but the scene has dof " + std::to_string(dof));
+  VectorQ p(dof);
+  for (int i = 0; i < dof; ++i) p[i] = values[i];
+  return p;
+}
+
+}  // namespace fixel

@@ -1,0 +1,84 @@
+#include "fixel/seating.h"
+
+#include "fixel/cone.h"
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+
+namespace fixel {
+
+using internal::exact_lu;
+
+bool SeatingSet::contains(const VectorQ& p_ext) const {
+  for (const auto& h : halfspaces)
+    if (!h.contains(p_ext)) return false;
+  return true;
+}
+
+SeatingSet seating_set(const Scene& scene) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  const ContactMatrices W = contact_matrices(scene);
+  SeatingSet S;
+  S.dof = dof;
+
+  VectorQ psi(nc);
+  for (int i = 0; i < nc; ++i) psi[i] = scene.fixels[i].gap;
+  const auto lu = exact_lu(W.Wn.transpose());
+  if (!lu.isInvertible())
+    throw SceneError("fixels", "", "make W_n singular: the fixture does not determine the motion");
+  S.nu_plus = lu.solve(VectorQ(-psi / scene.time_step));
+  S.tangential_velocity = W.Wt.transpose() * S.nu_plus;
+  S.apex = W.M * (S.nu_plus - scene.body.velocity);
+
+  for (int i = 0; i < nc; ++i) {
+    const int sigma = sign(S.tangential_velocity[i]);
+    if (sigma == 0)
+      throw UnsupportedError("fixels[" + std::to_string(i) + "]", "v_t = 0",
+                             "sticks at the seating velocity; sticking contacts are not supported yet");
+    S.sliding.push_back(sigma);
+    const VectorQ g = W.Wn.col(i) - Rational(sigma) * scene.fixels[i].mu * W.Wt.col(i);
+    S.generators.push_back(g);
+    S.rays.push_back(-g);
+  }
+  for (const VectorQ& n : cone_facet_normals(S.rays, dof)) S.halfspaces.push_back({n, n.dot(S.apex)});
+  return S;
+}
+
+SeatingSystem seating_system(const Scene& scene, const SeatingSet& S) {
+  const int nc = scene.num_contacts(), n = 4 * nc;
+  const TimeSteppingLcp lcp = build_lcp(scene);
+  const std::vector<std::string> w_names = lcp.w_names(), z_names = lcp.z_names();
+
+  SeatingSystem sys;
+  sys.P = lcp.P;
+  sys.a = lcp.a;
+  // Which half of each friction pair survives depends on the sliding sign:
+  // v_t > 0 means friction along −t, so (p_f)_2 and (ρ_f)_1 are kept.
+  auto friction_index = [&](int i, bool minus_column) { return nc + 2 * i + (minus_column ? 1 : 0); };
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(friction_index(i, S.sliding[i] < 0));  // ρ_f (w block)
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + i);                              // p_n
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + friction_index(i, S.sliding[i] > 0));  // p_f
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + 3 * nc + i);                     // s
+
+  sys.K = MatrixQ(n, n);
+  for (int k = 0; k < n; ++k) {
+    const int j = sys.kept[k];
+    if (j < n) {
+      sys.K.col(k) = VectorQ::Unit(n, j);
+      sys.y_names.push_back(w_names[j]);
+    } else {
+      sys.K.col(k) = -lcp.B.col(j - n);
+      sys.y_names.push_back(z_names[j - n]);
+    }
+  }
+  const auto lu = exact_lu(sys.K);
+  if (!lu.isInvertible())
+    throw UnsupportedError("fixels", "", "give linearly dependent seating generators: K of eq. (21) is singular");
+  sys.K_inv = lu.inverse();
+  return sys;
+}
+
+VectorQ SeatingSystem::y(const VectorQ& p_ext) const { return K_inv * (P * p_ext + a); }
+VectorQ SeatingSystem::linear_part(const VectorQ& p_ext) const { return K_inv * (P * p_ext); }
+VectorQ SeatingSystem::threshold() const { return -(K_inv * a); }
+
+}  // namespace fixel

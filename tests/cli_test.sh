@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# CLI contract checks: exit codes, messages on stderr, JSON on stdout.
+set -u
+fixel="$1"; src="$2"; fail=0; tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+
+# expect CODE PATTERN -- command args...: exit code and a pattern in stdout+stderr.
+expect() {
+  local code="$1" pattern="$2"; shift 3
+  local out; out=$("$@" 2>&1); local rc=$?
+  if [ "$rc" -ne "$code" ] || ! grep -qF -- "$pattern" <<<"$out"; then
+    echo "FAIL: $* -> exit $rc (want $code), output:"; echo "$out" | head -5; echo "  (wanted: $pattern)"; fail=1
+  fi
+}
+
+expect 0 '"contains": true' -- "$fixel" seat "$src/data/scenes/example2.json" --json --impulse -1,-1,-1
+expect 0 '"161/202"' -- "$fixel" seat "$src/data/scenes/example2.json" --json --impulse -1,-1,-1
+expect 0 '"contains": false' -- "$fixel" seat "$src/data/scenes/example2.json" --json --impulse 1,1,1
+expect 0 'is IN S' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse -1,-1,-1
+expect 0 '"apex"' -- "$fixel" seat "$src/data/scenes/example1.json" --json
+expect 0 'wrote' -- "$fixel" dump "$src/data/scenes/example2.json" --off "$tmp/off"
+expect 0 'passed, 0 failed' -- "$fixel" verify
+for cmd in seat dump verify; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
+
+expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
+expect 2 '--impulse[1]: "x" is not an exact number' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,x,2
+expect 2 'cannot be opened' -- "$fixel" seat "$tmp/missing.json"
+expect 2 'The following argument was not expected: --bogus' -- "$fixel" seat "$src/data/scenes/example2.json" --bogus
+expect 2 '' -- "$fixel"
+printf '{"name": ' > "$tmp/bad.json"
+expect 2 'is not valid JSON' -- "$fixel" seat "$tmp/bad.json"
+sed 's/"normal": \["1", "0"\]/"normal": ["3\/5", "3\/5"]/' "$src/data/scenes/example2.json" > "$tmp/nonunit.json"
+expect 2 'fixels[0].normal: (3/5, 3/5) is not of unit length' -- "$fixel" seat "$tmp/nonunit.json"
+expect 2 '--length: -1 must be > 0' -- "$fixel" dump "$src/data/scenes/example2.json" --off "$tmp/o2" --length -1
+
+exit $fail

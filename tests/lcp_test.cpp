@@ -1,0 +1,91 @@
+#include "fixel/lcp.h"
+
+#include <gtest/gtest.h>
+
+#include "fixel/internal/paper_reference.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+MatrixQ matrix(std::initializer_list<std::initializer_list<int>> rows) {
+  MatrixQ m(static_cast<int>(rows.size()), static_cast<int>(rows.begin()->size()));
+  int r = 0;
+  for (const auto& row : rows) {
+    int c = 0;
+    for (int v : row) m(r, c++) = v;
+    ++r;
+  }
+  return m;
+}
+
+TEST(Lcp, Example1MatricesMatchThePaper) {
+  const ContactMatrices W = contact_matrices(parse_scene(internal::paper::kExample1Scene));
+  EXPECT_EQ(W.M, matrix({{1, 0}, {0, 1}}));
+  EXPECT_EQ(W.Wn, matrix({{1, 0}, {0, 1}}));
+  EXPECT_EQ(W.Wf, matrix({{0, 0, -1, 1}, {1, -1, 0, 0}}));  // printed in §3.1
+  EXPECT_EQ(MatrixQ(W.E.transpose()), matrix({{1, 1, 0, 0}, {0, 0, 1, 1}}));
+  EXPECT_EQ(W.U(0, 0), Rational(1, 5));
+  EXPECT_EQ(W.U(1, 1), Rational(1, 10));
+}
+
+TEST(Lcp, Example2MatricesMatchThePaper) {
+  const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
+  EXPECT_EQ(lcp.W.Wn, matrix({{1, 0, 0}, {0, 1, 1}, {0, 0, 1}}));
+  EXPECT_EQ(lcp.W.Wf, matrix({{0, 0, -1, 1, -1, 1}, {1, -1, 0, 0, 0, 0}, {-1, 1, -1, 1, -1, 1}}));
+  for (int r = 0; r < 12; ++r) {
+    for (int c = 0; c < 12; ++c)
+      EXPECT_EQ(lcp.B(r, c), parse_rational(internal::paper::kExample2B[r][c])) << "B(" << r + 1 << "," << c + 1 << ")";
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(lcp.P(r, c), parse_rational(internal::paper::kExample2P[r][c]));
+    EXPECT_EQ(lcp.a[r], parse_rational(internal::paper::kExample2a[r]));
+  }
+}
+
+TEST(Lcp, PaperRow10TypoIsReallyATypo) {
+  // The paper prints row 10 as (μ₁ 0 0 0 −1 −1 0 …): that would couple contact
+  // 1's σ to p_f entries 2 and 3, which belong to contacts 1 and 2.
+  const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
+  EXPECT_EQ(lcp.B(9, 3), Rational(-1));
+  EXPECT_EQ(lcp.B(9, 4), Rational(-1));
+  EXPECT_EQ(lcp.B(9, 5), Rational(0));
+}
+
+// Second method: w = Bz + b must equal the physical quantities computed from
+// the post-step velocity ν⁺ = ν + M⁻¹ (W_n p_n + W_f p_f + p_ext).
+TEST(Lcp, BzPlusBEqualsGapsVelocitiesAndFrictionSlackOnRandomScenes) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int dof = trial % 4 == 0 ? 2 : 3;
+    const Scene s = testing::random_scene(rng, dof);
+    const TimeSteppingLcp lcp = build_lcp(s);
+    const int nc = s.num_contacts();
+    VectorQ z(4 * nc), p(dof);
+    for (int k = 0; k < z.size(); ++k) z[k] = testing::random_rational(rng, 0, 2, 7);
+    for (int k = 0; k < dof; ++k) p[k] = testing::random_rational(rng, -2, 2, 5);
+    const VectorQ w = lcp.B * z + lcp.b(p);
+
+    const VectorQ pn = z.head(nc), pf = z.segment(nc, 2 * nc), sl = z.tail(nc);
+    VectorQ rhs = lcp.W.Wn * pn + lcp.W.Wf * pf + p;
+    VectorQ nu = s.body.velocity;
+    for (int k = 0; k < dof; ++k) nu[k] += rhs[k] / lcp.W.M(k, k);
+    for (int i = 0; i < nc; ++i) {
+      EXPECT_EQ(w[i], lcp.W.Wn.col(i).dot(nu) + s.fixels[i].gap / s.time_step);  // ψ^{ℓ+1}/h
+      EXPECT_EQ(w[nc + 2 * i], lcp.W.Wt.col(i).dot(nu) + sl[i]);
+      EXPECT_EQ(w[nc + 2 * i + 1], -lcp.W.Wt.col(i).dot(nu) + sl[i]);
+      EXPECT_EQ(w[3 * nc + i], s.fixels[i].mu * pn[i] - pf[2 * i] - pf[2 * i + 1]);
+    }
+  }
+}
+
+TEST(Lcp, NamesFollowTheVariableOrder) {
+  const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
+  const auto z = lcp.z_names(), w = lcp.w_names();
+  ASSERT_EQ(z.size(), 12u);
+  EXPECT_EQ(z[0], "p_n[0]");
+  EXPECT_EQ(z[4], "p_f[0]-");
+  EXPECT_EQ(z[11], "s[2]");
+  EXPECT_EQ(w[9], "sigma[0]");
+}
+
+}  // namespace
+}  // namespace fixel

@@ -1,0 +1,95 @@
+#include "fixel/off_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "fixel/error.h"
+#include "fixel/internal/paper_reference.h"
+#include "fixel/io.h"
+
+namespace fixel {
+namespace {
+
+VectorQ v3(Rational x, Rational y, Rational z) {
+  VectorQ out(3);
+  out << x, y, z;
+  return out;
+}
+
+TEST(PolytopeVertices, UnitCubeHasEightVertices) {
+  const Box box{v3(0, 0, 0), v3(1, 1, 1)};
+  const auto verts = polytope_vertices(box.halfspaces(), 3);
+  EXPECT_EQ(verts.size(), 8u);
+  for (const auto& v : verts)
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(v[k] == 0 || v[k] == 1);
+}
+
+TEST(PolytopeVertices, CubeCutByADiagonalPlaneKeepsACorner) {
+  auto hs = Box{v3(0, 0, 0), v3(1, 1, 1)}.halfspaces();
+  hs.push_back({v3(-1, -1, -1), Rational(-1)});  // x + y + z <= 1
+  EXPECT_EQ(polytope_vertices(hs, 3).size(), 4u);  // the corner simplex
+  hs.push_back({v3(1, 1, 1), Rational(2)});       // and x + y + z >= 2: empty
+  EXPECT_TRUE(polytope_vertices(hs, 3).empty());
+}
+
+TEST(SeatingDumpBox, HoldsApexAndEveryRayTip) {
+  const SeatingSet S = seating_set(parse_scene(internal::paper::kExample2Scene));
+  const Box box = seating_dump_box(S, Rational(2));
+  auto inside = [&](const VectorQ& p) {
+    for (int k = 0; k < 3; ++k)
+      if (p[k] < box.lo[k] || p[k] > box.hi[k]) return false;
+    return true;
+  };
+  EXPECT_TRUE(inside(S.apex));
+  for (const auto& r : S.rays) EXPECT_TRUE(inside(VectorQ(S.apex + 2 * r)));
+  EXPECT_THROW(seating_dump_box(S, Rational(0)), InputError);
+}
+
+TEST(WriteOff, SeatingSetIsAClosedTriangulatedSurfaceWithTheBoxStated) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const SeatingSet S = seating_set(scene);
+  const auto dir = std::filesystem::temp_directory_path() / "fixel_off_test";
+  std::filesystem::remove_all(dir);
+  const auto paths = dump_off(scene, S, dir.string(), Rational(1));
+  ASSERT_EQ(paths.size(), 1u);
+  std::ifstream in(paths[0]);
+  std::string first, line, comments;
+  std::getline(in, first);
+  EXPECT_EQ(first, "OFF");
+  while (std::getline(in, line) && !line.empty() && line[0] == '#') comments += line + "\n";
+  EXPECT_NE(comments.find("clipped to the box [-11/10, -1/10]"), std::string::npos) << comments;
+  std::istringstream counts(line);
+  std::size_t nv = 0, nf = 0, ne = 0;
+  counts >> nv >> nf >> ne;
+  // S ∩ box is a bounded convex polytope: Euler's formula V − E + F = 2 for
+  // its triangulated hull, where E = 3F/2.
+  EXPECT_GE(nv, 4u);
+  EXPECT_EQ(2 * nv, nf + 4);
+  // The apex is a vertex of S ∩ box: its exact vertices include it.
+  std::vector<Halfspace> hs = S.halfspaces;
+  for (const auto& h : seating_dump_box(S, Rational(1)).halfspaces()) hs.push_back(h);
+  const auto verts = polytope_vertices(hs, 3);
+  EXPECT_EQ(verts.size(), nv);
+  EXPECT_NE(std::find(verts.begin(), verts.end(), S.apex), verts.end());
+}
+
+TEST(WriteOff, PointMassSetIsOnePolygonInThePlane) {
+  const Scene scene = parse_scene(internal::paper::kExample1Scene);
+  std::ostringstream out;
+  std::vector<Halfspace> hs = seating_set(scene).halfspaces;
+  for (const auto& h : seating_dump_box(seating_set(scene), Rational(1)).halfspaces()) hs.push_back(h);
+  const std::size_t n = write_polytope_off(out, hs, 2, {"test"});
+  EXPECT_GE(n, 3u);
+  EXPECT_NE(out.str().find("\n# test\n"), std::string::npos);
+}
+
+TEST(DumpOff, UnwritableDirectoryIsAnInputError) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  EXPECT_THROW(dump_off(scene, seating_set(scene), "/proc/fixel/cannot", Rational(1)), InputError);
+}
+
+}  // namespace
+}  // namespace fixel

@@ -1,0 +1,191 @@
+#include "fixel/scene.h"
+
+#include <gtest/gtest.h>
+
+#include "fixel/error.h"
+#include "fixel/internal/paper_reference.h"
+
+namespace fixel {
+namespace {
+
+// A valid Example 2 scene with one piece of text replaced.
+std::string example2_with(const std::string& from, const std::string& to) {
+  std::string s = internal::paper::kExample2Scene;
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return s.replace(pos, from.size(), to);
+}
+
+// Expects parse_scene to throw E with exactly this message.
+template <typename E>
+void expect_error(const std::string& text, const std::string& message) {
+  try {
+    parse_scene(text, "scene.json");
+    ADD_FAILURE() << "no error; expected: " << message;
+  } catch (const E& e) {
+    EXPECT_EQ(std::string(e.what()), message);
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "wrong exception type: " << e.what();
+  }
+}
+
+TEST(Scene, LoadsExample2Exactly) {
+  const Scene s = parse_scene(internal::paper::kExample2Scene);
+  EXPECT_EQ(s.name, "example2");
+  EXPECT_EQ(s.body.dof, 3);
+  ASSERT_EQ(s.num_contacts(), 3);
+  EXPECT_EQ(s.fixels[1].gap, Rational(1, 20));
+  EXPECT_EQ(s.fixels[2].mu, Rational(1, 10));
+  EXPECT_EQ(s.lever_arm(2).x, Rational(1));
+  EXPECT_EQ(s.tangent(0).y, Rational(1));  // (1, 0) rotated +90°
+  EXPECT_EQ(s.pusher_mu, Rational(0));
+  EXPECT_TRUE(s.background_impulse.isZero());
+}
+
+TEST(Scene, BundledFilesMatchTheBuiltInPaperScenes) {
+  const Scene file = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/example2.json");
+  const Scene builtin = parse_scene(internal::paper::kExample2Scene);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(file.fixels[i].p_AoF_A.x, builtin.fixels[i].p_AoF_A.x);
+    EXPECT_EQ(file.fixels[i].p_AoF_A.y, builtin.fixels[i].p_AoF_A.y);
+    EXPECT_EQ(file.fixels[i].gap, builtin.fixels[i].gap);
+    EXPECT_EQ(file.fixels[i].mu, builtin.fixels[i].mu);
+  }
+  const Scene e1 = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/example1.json");
+  EXPECT_EQ(e1.body.dof, 2);
+  EXPECT_EQ(e1.fixels[0].gap, Rational(3, 10));
+  EXPECT_NO_THROW(load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/nonunique.json"));
+}
+
+TEST(Scene, ReadsJsonNumbersFromTheirDecimalText) {
+  // 0.1 as a JSON number must be 1/10, not the double nearest to it.
+  const Scene s = parse_scene(example2_with(R"("gap": "1/10")", R"("gap": 0.1)"));
+  EXPECT_EQ(s.fixels[0].gap, Rational(1, 10));
+  const Scene t = parse_scene(example2_with(R"("mu": "1/10", "gap": "1/10")", R"("mu": 1e-1, "gap": 0.10000000000000000000001)"));
+  EXPECT_EQ(t.fixels[0].mu, Rational(1, 10));
+  EXPECT_EQ(t.fixels[0].gap - Rational(1, 10), parse_rational("1e-23"));
+}
+
+TEST(Scene, RejectsMalformedJson) {
+  try {
+    parse_scene("{\"name\": ", "bad.json");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.field(), "bad.json");
+    EXPECT_NE(std::string(e.what()).find("is not valid JSON"), std::string::npos);
+  }
+  EXPECT_THROW(parse_scene("[1, 2]"), SceneError);
+}
+
+TEST(Scene, RejectsDuplicateKeys) {
+  expect_error<ParseError>(example2_with(R"("name": "example2")", R"("name": "a", "name": "b")"),
+                           "scene.json: key \"name\" appears twice in one object");
+}
+
+TEST(Scene, RejectsMissingFields) {
+  expect_error<SceneError>(example2_with(R"("time_step": "1",)", ""), "time_step: is missing");
+  expect_error<SceneError>(example2_with(R"("mass": "1", )", ""), "body.mass: is missing");
+  expect_error<SceneError>(example2_with(R"("mu": "1/10", "gap": "1/20")", R"("mu": "1/10")"),
+                           "fixels[1].gap: is missing");
+  expect_error<SceneError>(example2_with(R"("inertia": "1", )", ""),
+                           "body.inertia: is missing (required for dof 3 without a boundary)");
+}
+
+TEST(Scene, RejectsUnknownFields) {
+  expect_error<SceneError>(example2_with(R"("time_step": "1",)", R"("time_step": "1", "timestep": "2",)"),
+                           "timestep: \"2\" is not a known field");
+  expect_error<SceneError>(example2_with(R"("gap": "1/5")", R"("gap": "1/5", "friction": "1")"),
+                           "fixels[2].friction: \"1\" is not a known field");
+}
+
+TEST(Scene, RejectsNonUnitNormal) {
+  expect_error<SceneError>(example2_with(R"("normal": ["0", "1"], "mu": "1/10", "gap": "1/20")",
+                                         R"("normal": ["3/5", "3/5"], "mu": "1/10", "gap": "1/20")"),
+                           "fixels[1].normal: (3/5, 3/5) is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
+  // A normal that is unit only to double precision is still rejected.
+  EXPECT_THROW(parse_scene(example2_with(R"("normal": ["1", "0"])", R"("normal": ["0.6000000000000000001", "0.8"])")),
+               SceneError);
+  EXPECT_NO_THROW(parse_scene(example2_with(R"("normal": ["1", "0"])", R"("normal": ["0.6", "0.8"])")));
+}
+
+TEST(Scene, RejectsNegativeGapAndMu) {
+  expect_error<SceneError>(example2_with(R"("gap": "1/20")", R"("gap": "-1/20")"), "fixels[1].gap: -1/20 must be >= 0");
+  expect_error<SceneError>(example2_with(R"("mu": "1/10", "gap": "1/5")", R"("mu": "-0.1", "gap": "1/5")"),
+                           "fixels[2].mu: -1/10 must be >= 0");
+}
+
+TEST(Scene, RejectsNonPositiveMassInertiaAndTimeStep) {
+  expect_error<SceneError>(example2_with(R"("mass": "1")", R"("mass": "0")"), "body.mass: 0 must be > 0");
+  expect_error<SceneError>(example2_with(R"("inertia": "1")", R"("inertia": "-2")"), "body.inertia: -2 must be > 0");
+  expect_error<SceneError>(example2_with(R"("time_step": "1")", R"("time_step": "0")"), "time_step: 0 must be > 0");
+}
+
+TEST(Scene, RejectsBadNumbersNamingThePath) {
+  expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": "heavy")"),
+                           "body.mass: \"heavy\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
+  expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": true)"), "body.mass: true is not an exact number");
+}
+
+TEST(Scene, RejectsDofOutsideTwoAndThree) {
+  expect_error<SceneError>(example2_with(R"("dof": 3)", R"("dof": 4)"),
+                           "body.dof: 4 must be 2 (point mass) or 3 (planar rigid body)");
+}
+
+TEST(Scene, RejectsVectorsWhoseLengthDoesNotMatchDof) {
+  std::string e1 = internal::paper::kExample1Scene;
+  e1.replace(e1.find(R"("velocity": ["0", "0"])"), 22, R"("velocity": ["0", "0", "0"])");
+  expect_error<SceneError>(e1, "body.velocity: [\"0\",\"0\",\"0\"] has 3 entries but dof 2 needs 2");
+  expect_error<SceneError>(example2_with(R"("name": "example2",)", R"("name": "x", "background_impulse": ["1", "2"],)"),
+                           "background_impulse: [\"1\",\"2\"] has 2 entries but dof 3 needs 3");
+  expect_error<SceneError>(example2_with(R"("point": ["-1", "0"])", R"("point": ["-1", "0", "0"])"),
+                           "fixels[0].point: [\"-1\",\"0\",\"0\"] has 3 entries but a planar point or direction needs 2");
+}
+
+TEST(Scene, RejectsInertiaForAPointMass) {
+  std::string e1 = internal::paper::kExample1Scene;
+  e1.replace(e1.find(R"("mass": "1")"), 11, R"("mass": "1", "inertia": "1")");
+  expect_error<SceneError>(e1, "body.inertia: \"1\" is not allowed for a point mass (dof 2)");
+}
+
+TEST(Scene, RejectsFixelCountDifferentFromDof) {
+  const std::string two_fixels = example2_with(
+      R"(,
+    {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"})", "");
+  expect_error<SceneError>(two_fixels,
+                           "fixels: 2 fixels but dof is 3: the seating analysis needs exactly dof fixels (n_c == dof)");
+}
+
+TEST(Scene, RejectsSingularFixtureNamingTheDependentFixel) {
+  // Fixel 2 at (0, 3) with normal (0, 1) has wrench (0, 1, 0), the same as
+  // fixel 1's; sliding it along x to (5, -1) gives moment 5 and independence.
+  const std::string independent = example2_with(R"("point": ["1", "-1"])", R"("point": ["5", "-1"])");
+  const std::string dependent = example2_with(R"("point": ["1", "-1"], "normal": ["0", "1"])",
+                                              R"("point": ["0", "3"], "normal": ["0", "1"])");
+  EXPECT_NO_THROW(parse_scene(independent));
+  expect_error<SceneError>(dependent,
+                           "fixels[2]: (0, 3) makes W_n singular: its normal wrench is a combination of the earlier "
+                           "fixels', so the fixture does not determine the motion");
+}
+
+TEST(Scene, BoundaryWithoutInertiaIsReportedAsNotYetSupported) {
+  const std::string text = example2_with(R"("inertia": "1", )", R"("boundary": [], )");
+  EXPECT_THROW(parse_scene(text), UnsupportedError);
+}
+
+TEST(Scene, ParsesImpulsesAgainstDof) {
+  EXPECT_EQ(parse_impulse("-1,-1,-1", 3)[2], Rational(-1));
+  try {
+    parse_impulse("1,2", 3);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--impulse: \"1,2\" has 2 components but the scene has dof 3");
+  }
+  EXPECT_THROW(parse_impulse("1,x,2", 3), ParseError);
+}
+
+TEST(Scene, ReportsUnreadableFile) {
+  EXPECT_THROW(load_scene("/nonexistent/scene.json"), InputError);
+}
+
+}  // namespace
+}  // namespace fixel

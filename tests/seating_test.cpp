@@ -1,0 +1,187 @@
+#include "fixel/seating.h"
+
+#include <gtest/gtest.h>
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+#include "fixel/internal/paper_reference.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+namespace paper = internal::paper;
+
+template <std::size_t N>
+VectorQ vec(const std::array<const char*, N>& a) {
+  VectorQ v(static_cast<int>(N));
+  for (std::size_t k = 0; k < N; ++k) v[static_cast<int>(k)] = parse_rational(a[k]);
+  return v;
+}
+
+VectorQ v2(Rational x, Rational y) {
+  VectorQ out(2);
+  out << x, y;
+  return out;
+}
+
+TEST(SeatingSet, Example1ApexIsMinusPsiAndRaysAreMinusOneMu) {
+  const SeatingSet S = seating_set(parse_scene(paper::kExample1Scene));
+  // Paper eq. (26) prints +ψ; the unit mass must move by −ψ in h = 1.
+  EXPECT_EQ(S.apex, v2(Rational(-3, 10), Rational(-1, 5)));
+  ASSERT_EQ(S.rays.size(), 2u);
+  EXPECT_EQ(S.rays[0], v2(-1, Rational(-1, 5)));   // −(1, μ₁)
+  EXPECT_EQ(S.rays[1], v2(Rational(-1, 10), -1));  // −(μ₂, 1)
+  EXPECT_EQ(S.sliding, (std::vector<int>{-1, 1}));
+}
+
+TEST(SeatingSet, Example1HFormIsTheTwoEdgesOfTheCone) {
+  const SeatingSet S = seating_set(parse_scene(paper::kExample1Scene));
+  ASSERT_EQ(S.halfspaces.size(), 2u);
+  // Independent check: p = apex − a (1, μ₁) − b (μ₂, 1) with a, b ≥ 0.
+  for (int i = -6; i <= 6; ++i)
+    for (int j = -6; j <= 6; ++j) {
+      const VectorQ p = v2(Rational(i, 10), Rational(j, 10));
+      const VectorQ d = S.apex - p;  // = a (1, 1/5) + b (1/10, 1)
+      const Rational det = Rational(1) - Rational(1, 50);
+      const Rational a = (d[0] - Rational(1, 10) * d[1]) / det, b = (d[1] - Rational(1, 5) * d[0]) / det;
+      EXPECT_EQ(S.contains(p), a >= 0 && b >= 0) << i << "," << j;
+    }
+}
+
+TEST(SeatingSet, ContainsPaperExample2Impulse) {
+  const Scene scene = parse_scene(paper::kExample2Scene);
+  const SeatingSet S = seating_set(scene);
+  EXPECT_TRUE(S.contains(vec(paper::kExample2Impulse)));
+  EXPECT_EQ(S.sliding, (std::vector<int>{1, 1, 1}));
+  EXPECT_EQ(S.tangential_velocity, vec(paper::kExample2SlideSpeed));
+}
+
+TEST(SeatingSystem, Example2ReproducesThePrintedEq27TableExactly) {
+  const Scene scene = parse_scene(paper::kExample2Scene);
+  const SeatingSystem sys = seating_system(scene, seating_set(scene));
+  const VectorQ p = vec(paper::kExample2Impulse);
+  EXPECT_EQ(sys.linear_part(p), vec(paper::kExample2LinearExact));
+  EXPECT_EQ(sys.threshold(), vec(paper::kExample2ThresholdExact));
+  const std::vector<std::string> names = {"rho_f[0]+", "rho_f[1]+", "rho_f[2]+", "p_n[0]", "p_n[1]", "p_n[2]",
+                                          "p_f[0]-",   "p_f[1]-",   "p_f[2]-",   "s[0]",   "s[1]",   "s[2]"};
+  EXPECT_EQ(sys.y_names, names);
+  EXPECT_EQ(MatrixQ(sys.K * sys.K_inv), MatrixQ::Identity(12, 12));
+}
+
+TEST(SeatingSet, StickingContactIsReportedAsUnsupported) {
+  // With gaps (1/10, 0, 0) the seating velocity is ν⁺ = (−1/10, 0, 0), along
+  // fixel 0's normal, so its tangential velocity W_t,0ᵀ ν⁺ = (0, 1, −1)·ν⁺ is 0.
+  std::string text = paper::kExample2Scene;
+  text.replace(text.find(R"("gap": "1/20")"), 13, R"("gap": "0")");
+  text.replace(text.find(R"("gap": "1/5")"), 12, R"("gap": "0")");
+  const Scene scene = parse_scene(text);
+  try {
+    seating_set(scene);
+    FAIL();
+  } catch (const UnsupportedError& e) {
+    EXPECT_EQ(e.field(), "fixels[0]");
+  }
+}
+
+// Solves apex − Σ λ_k g_k = p for λ (the V-form coordinates of p).
+VectorQ generator_coordinates(const SeatingSet& S, const VectorQ& p) {
+  MatrixQ G(S.dof, S.dof);
+  for (int k = 0; k < S.dof; ++k) G.col(k) = S.generators[k];
+  return internal::exact_lu(G).solve(VectorQ(S.apex - p));
+}
+
+class RandomScenes : public ::testing::Test {
+ protected:
+  // Up to `count` random scenes whose fixture is nonsingular and whose
+  // contacts all slide, with their seating sets.
+  std::vector<std::pair<Scene, SeatingSet>> make(int count, int dof, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<std::pair<Scene, SeatingSet>> out;
+    for (int attempt = 0; attempt < 10 * count && static_cast<int>(out.size()) < count; ++attempt) {
+      Scene s = testing::random_scene(rng, dof);
+      try {
+        SeatingSet S = seating_set(s);
+        if (exact_rank(S.generators, dof) < dof) continue;  // flat S: eq. (27) has no K⁻¹
+        out.emplace_back(std::move(s), std::move(S));
+      } catch (const SceneError&) {
+      }
+    }
+    EXPECT_EQ(static_cast<int>(out.size()), count);
+    return out;
+  }
+};
+
+TEST_F(RandomScenes, EveryGeneratorSatisfiesTheHFormAndEveryFacetIsTightAtApexAndTwoRays) {
+  for (const auto& [scene, S] : make(60, 3, 11)) {
+    ASSERT_EQ(S.halfspaces.size(), 3u);
+    EXPECT_TRUE(S.contains(S.apex));
+    for (const auto& r : S.rays) EXPECT_TRUE(S.contains(VectorQ(S.apex + r)));
+    for (const auto& h : S.halfspaces) {
+      EXPECT_EQ(h.a.dot(S.apex), h.c);
+      int tight = 0;
+      for (const auto& r : S.rays) tight += h.a.dot(r) == 0 ? 1 : 0;
+      EXPECT_EQ(tight, 2);
+    }
+  }
+}
+
+TEST_F(RandomScenes, PointsOnAFacetAreInAndPointsTenToTheMinus30OutsideAreNot) {
+  const Rational eps = parse_rational("1e-30");
+  std::mt19937_64 rng(5);
+  for (const auto& [scene, S] : make(40, 3, 12)) {
+    for (const auto& h : S.halfspaces) {
+      // The facet is spanned by the two rays it is tight on.
+      std::vector<VectorQ> edge;
+      for (const auto& r : S.rays)
+        if (h.a.dot(r) == 0) edge.push_back(r);
+      ASSERT_EQ(edge.size(), 2u);
+      // Strictly positive weights keep the point off the facet's edges, so a
+      // step of 10⁻³⁰ inward crosses no other facet.
+      const VectorQ on = S.apex + (testing::random_rational(rng, 0, 3, 7) + Rational(1, 7)) * edge[0] +
+                         (testing::random_rational(rng, 0, 3, 7) + Rational(1, 7)) * edge[1];
+      EXPECT_EQ(h.a.dot(on), h.c);
+      EXPECT_TRUE(S.contains(on));
+      EXPECT_FALSE(S.contains(VectorQ(on - eps * h.a)));
+      EXPECT_TRUE(S.contains(VectorQ(on + eps * h.a)));
+    }
+  }
+}
+
+TEST_F(RandomScenes, VFormHFormAndEq27AgreeOnRandomPoints) {
+  std::mt19937_64 rng(6);
+  int inside = 0, outside = 0;
+  for (const auto& [scene, S] : make(40, 3, 13)) {
+    const SeatingSystem sys = seating_system(scene, S);
+    for (int k = 0; k < 50; ++k) {
+      // Sample around the apex so that both outcomes occur.
+      VectorQ p = S.apex;
+      for (int j = 0; j < 3; ++j) p[j] += testing::random_rational(rng, -2, 2, 9);
+      const VectorQ lambda = generator_coordinates(S, p);
+      const bool by_v = (lambda.array() >= Rational(0)).all();
+      const VectorQ y = sys.y(p);
+      const bool by_eq27 = (y.array() >= Rational(0)).all();
+      EXPECT_EQ(S.contains(p), by_v);
+      EXPECT_EQ(by_eq27, by_v);
+      // Eq. (27)'s p_n entries are exactly the V-form coordinates λ.
+      EXPECT_EQ(VectorQ(y.segment(3, 3)), lambda);
+      (by_v ? inside : outside)++;
+    }
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+}
+
+TEST_F(RandomScenes, PointMassScenesHaveTwoRayCones) {
+  std::mt19937_64 rng(8);
+  for (const auto& [scene, S] : make(30, 2, 14)) {
+    ASSERT_EQ(S.halfspaces.size(), 2u);
+    for (int k = 0; k < 20; ++k) {
+      const VectorQ p = S.apex + v2(testing::random_rational(rng, -2, 2, 9), testing::random_rational(rng, -2, 2, 9));
+      EXPECT_EQ(S.contains(p), (generator_coordinates(S, p).array() >= Rational(0)).all());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fixel
