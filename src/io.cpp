@@ -108,6 +108,81 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
   return {path};
 }
 
+std::string simulation_json(const Scene& scene, const Simulation& sim) {
+  json doc;
+  doc["scene"] = scene.name;
+  doc["seated"] = sim.seated;
+  doc["steps"] = json::array();
+  for (const auto& s : sim.steps)
+    doc["steps"].push_back({{"q", exact(s.q)},
+                            {"velocity", exact(s.velocity)},
+                            {"gaps", exact(s.gaps)},
+                            {"p_n", exact(s.p_n)},
+                            {"p_f", exact(s.p_f)},
+                            {"pivots", s.pivots}});
+  return doc.dump(2) + "\n";
+}
+
+std::string simulation_text(const Scene& scene, const Simulation& sim) {
+  std::ostringstream out;
+  out << "Simulation of scene \"" << scene.name << "\", " << sim.steps.size() << " step(s), exact Lemke per step\n";
+  for (std::size_t k = 0; k < sim.steps.size(); ++k) {
+    const auto& s = sim.steps[k];
+    out << "  step " << k + 1 << ": q = " << text(s.q) << ", velocity = " << text(s.velocity) << "\n";
+    out << "          gaps = " << text(s.gaps) << ", p_n = " << text(s.p_n) << ", p_f = " << text(s.p_f) << "\n";
+  }
+  out << (sim.seated ? "SEATED: every gap is exactly 0 after the last step.\n"
+                     : "NOT seated: some gap is open after the last step.\n");
+  return out.str();
+}
+
+namespace {
+json mode_names(const std::vector<ContactMode>& modes) {
+  json out = json::array();
+  for (auto m : modes) out.push_back(to_string(m));
+  return out;
+}
+}  // namespace
+
+std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
+  json doc;
+  doc["scene"] = scene.name;
+  doc["impulse"] = exact(p_ext);
+  doc["solutions"] = json::array();
+  int seating = 0;
+  for (const auto& o : outcomes) {
+    seating += o.seated ? 1 : 0;
+    doc["solutions"].push_back({{"seated", o.seated},
+                                {"modes", mode_names(o.modes)},
+                                {"velocity", exact(o.velocity)},
+                                {"gaps", exact(o.gaps)},
+                                {"p_n", exact(o.p_n)},
+                                {"p_t", exact(o.p_t)},
+                                {"isolated", o.isolated}});
+  }
+  doc["seating"] = seating;
+  doc["non_seating"] = static_cast<int>(outcomes.size()) - seating;
+  return doc.dump(2) + "\n";
+}
+
+std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
+  std::ostringstream out;
+  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " ("
+      << outcomes.size() << " distinct, by exact enumeration of contact modes)\n";
+  int seating = 0;
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    const auto& o = outcomes[k];
+    seating += o.seated ? 1 : 0;
+    out << "  " << k + 1 << ". " << (o.seated ? "SEATS  " : "OPEN GAP") << "  modes";
+    for (auto m : o.modes) out << " " << to_string(m);
+    out << (o.isolated ? "" : "  (one of a family)") << "\n";
+    out << "     velocity = " << text(o.velocity) << ", gaps = " << text(o.gaps) << "\n";
+    out << "     p_n = " << text(o.p_n) << ", p_t = " << text(o.p_t) << "\n";
+  }
+  out << seating << " seating, " << outcomes.size() - seating << " non-seating\n";
+  return out.str();
+}
+
 std::string verification_text(const std::vector<VerificationCheck>& checks) {
   std::ostringstream out;
   int failed = 0;

@@ -19,7 +19,15 @@ expect 0 'is IN S' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse -
 expect 0 '"apex"' -- "$fixel" seat "$src/data/scenes/example1.json" --json
 expect 0 'wrote' -- "$fixel" dump "$src/data/scenes/example2.json" --off "$tmp/off"
 expect 0 'passed, 0 failed' -- "$fixel" verify
-for cmd in seat dump verify; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
+expect 0 '"seated": true' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1 --json
+expect 0 'SEATED' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1
+expect 0 '"non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique.json" --impulse 29157/10540,-71119/105400,-1169839/263500 --json
+expect 0 '1 seating, 0 non-seating' -- "$fixel" solutions "$src/data/scenes/example2.json" --impulse -1,-1,-1
+expect 2 '--steps: 0 must be >= 1' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1 --steps 0
+expect 2 'has 2 components but the scene has dof 3' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1
+expect 2 '--impulse[0]: "1..2" is not an exact number' -- "$fixel" solutions "$src/data/scenes/example2.json" --impulse 1..2,0,0
+expect 2 '--impulse is required' -- "$fixel" solutions "$src/data/scenes/example2.json"
+for cmd in seat dump verify simulate solutions; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
 expect 2 '--impulse[1]: "x" is not an exact number' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,x,2

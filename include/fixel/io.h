@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "fixel/outcomes.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
+#include "fixel/stepper.h"
 #include "fixel/verify.h"
 
 namespace fixel {
@@ -26,6 +28,18 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const std::option
 /// Throws InputError if the directory cannot be created or written.
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length);
+
+/// `fixel simulate --json`: {"seated", "steps": [{"q", "velocity", "gaps",
+/// "p_n", "p_f", "pivots"}]}.
+std::string simulation_json(const Scene& scene, const Simulation& sim);
+/// The same as a readable report.
+std::string simulation_text(const Scene& scene, const Simulation& sim);
+
+/// `fixel solutions --json`: {"impulse", "solutions": [{"seated", "modes",
+/// "velocity", "gaps", "p_n", "p_t", "isolated"}], "seating": n, "non_seating": m}.
+std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes);
+/// The same as a readable report.
+std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes);
 
 /// `fixel verify` output: one line per check, then a summary line.
 std::string verification_text(const std::vector<VerificationCheck>& checks);

@@ -34,6 +34,18 @@ int main(int argc, char** argv) {
   dump->add_option("--off", off_dir, "Output directory")->required();
   dump->add_option("--length", length_text, "Box holds apex + LENGTH * r for every ray r (default 1)");
 
+  int steps = 1;
+  auto* simulate = app.add_subcommand("simulate", "Time-step the part under an impulse with the exact LCP solver");
+  simulate->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
+  simulate->add_option("--impulse", impulse_text, "External impulse of step 1: px,py[,ptheta]")->required();
+  simulate->add_option("--steps", steps, "Number of steps (default 1); later steps get no impulse");
+  simulate->add_flag("--json", json_out, "Print one JSON document on stdout");
+
+  auto* solutions = app.add_subcommand("solutions", "Every outcome of one step (all LCP solutions, by contact mode)");
+  solutions->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
+  solutions->add_option("--impulse", impulse_text, "External impulse: px,py[,ptheta]")->required();
+  solutions->add_flag("--json", json_out, "Print one JSON document on stdout");
+
   auto* verify = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
   verify->add_flag("--json", json_out, "Print one JSON document on stdout");
 
@@ -52,6 +64,17 @@ int main(int argc, char** argv) {
       return 0;
     }
     const fixel::Scene scene = fixel::load_scene(scene_path);
+    if (*simulate) {
+      const auto sim = fixel::simulate(scene, {fixel::parse_impulse(impulse_text, scene.body.dof)}, steps);
+      std::cout << (json_out ? fixel::simulation_json(scene, sim) : fixel::simulation_text(scene, sim));
+      return 0;
+    }
+    if (*solutions) {
+      const fixel::VectorQ p = fixel::parse_impulse(impulse_text, scene.body.dof);
+      const auto outcomes = fixel::enumerate_outcomes(scene, p);
+      std::cout << (json_out ? fixel::outcomes_json(scene, p, outcomes) : fixel::outcomes_text(scene, p, outcomes));
+      return 0;
+    }
     const fixel::SeatingSet S = fixel::seating_set(scene);
     if (*seat) {
       std::optional<fixel::VectorQ> impulse;

@@ -1,0 +1,40 @@
+#pragma once
+/// @file
+/// Exact LCP solving: lexicographic Lemke on a fraction-free integer tableau,
+/// and an independent solution checker.
+
+#include <string>
+
+#include "fixel/rational.h"
+
+namespace fixel {
+
+/// How a Lemke run ended. Only kSolved carries a solution.
+enum class LemkeStatus {
+  kSolved,          ///< w, z solve the LCP (checked exactly by is_solution).
+  kRayTermination,  ///< The path left on an unbounded ray: no solution was found on it.
+  kPivotLimit,      ///< Stopped after max_pivots pivots.
+};
+
+/// "solved", "ray termination" or "pivot limit".
+std::string to_string(LemkeStatus status);
+
+/// Result of solve_lcp_lemke.
+struct LemkeResult {
+  LemkeStatus status = LemkeStatus::kRayTermination;
+  VectorQ w, z;    ///< The solution when status == kSolved, else empty.
+  int pivots = 0;  ///< Pivots performed, including the first one on z0.
+};
+
+/// Solves LCP(B, b): find w = Bz + b with 0 ≤ w ⊥ z ≥ 0. Lemke's method with
+/// covering vector e and the lexicographic ratio test, so it cannot cycle on
+/// degenerate problems. The tableau holds integers and one common
+/// denominator; every ratio comparison is the exact sign of a·d − b·c.
+/// A kSolved result has been verified by is_solution. max_pivots <= 0 means
+/// 100·(n + 1). Throws InputError if B is not square or b has the wrong size.
+LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots = 0);
+
+/// Exact check that w = Bz + b, w ≥ 0, z ≥ 0 and wᵀz = 0.
+bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const VectorQ& z);
+
+}  // namespace fixel

@@ -1,0 +1,174 @@
+#include "fixel/lemke.h"
+
+#include <stdexcept>
+#include <vector>
+
+#include "fixel/error.h"
+
+namespace fixel {
+
+namespace {
+
+// Integer tableau T = D · A_B⁻¹ [A | q] for A = [I, −L·B, −e], q = L·b,
+// where L clears every denominator of B and b (so w' = L·w). Columns:
+// 0..n−1 w', n..2n−1 z, 2n z0, 2n+1 the right-hand side. D = |det A_B| > 0.
+class Tableau {
+ public:
+  Tableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())) {
+    for (int i = 0; i < n_; ++i) {
+      scale_ = boost::multiprecision::lcm(scale_, boost::multiprecision::denominator(b[i]));
+      for (int j = 0; j < n_; ++j) scale_ = boost::multiprecision::lcm(scale_, boost::multiprecision::denominator(B(i, j)));
+    }
+    T_.assign(n_, std::vector<Integer>(2 * n_ + 2, Integer(0)));
+    basis_.resize(n_);
+    for (int i = 0; i < n_; ++i) {
+      T_[i][i] = 1;
+      for (int j = 0; j < n_; ++j) T_[i][n_ + j] = integer(-B(i, j) * Rational(scale_));
+      T_[i][z0()] = -1;
+      T_[i][rhs()] = integer(b[i] * Rational(scale_));
+      basis_[i] = i;
+    }
+  }
+
+  int z0() const { return 2 * n_; }
+  int rhs() const { return 2 * n_ + 1; }
+  int basic(int row) const { return basis_[row]; }
+  const Integer& at(int row, int col) const { return T_[row][col]; }
+  // w_i and z_i are complements.
+  int complement(int var) const { return var < n_ ? var + n_ : var - n_; }
+
+  // Fraction-free (Bareiss) pivot: every division is exact.
+  void pivot(int r, int s) {
+    const Integer p = T_[r][s];
+    for (int i = 0; i < n_; ++i) {
+      if (i == r) continue;
+      const Integer f = T_[i][s];
+      for (int j = 0; j < 2 * n_ + 2; ++j) T_[i][j] = (T_[i][j] * p - f * T_[r][j]) / D_;
+    }
+    D_ = p;
+    basis_[r] = s;
+    if (D_ < 0) {  // keep D > 0 so that column signs are value signs
+      D_ = -D_;
+      for (auto& row : T_)
+        for (auto& x : row) x = -x;
+    }
+  }
+
+  // a/b < c/d for b, d > 0, as the sign of a·d − c·b.
+  static int compare_ratio(const Integer& a, const Integer& b, const Integer& c, const Integer& d) {
+    const Integer diff = a * d - c * b;
+    return diff < 0 ? -1 : (diff > 0 ? 1 : 0);
+  }
+
+  // Lexicographic minimum ratio test on column s; -1 if no entry is positive
+  // (ray). Prefers the z0 row when it ties on the right-hand side, which ends
+  // the path with a solution.
+  int ratio_test(int s) const {
+    int best = -1;
+    for (int i = 0; i < n_; ++i) {
+      if (T_[i][s] <= 0) continue;
+      if (best < 0) {
+        best = i;
+        continue;
+      }
+      int c = compare_ratio(T_[i][rhs()], T_[i][s], T_[best][rhs()], T_[best][s]);
+      if (c == 0 && (basis_[i] == z0() || basis_[best] == z0())) {
+        if (basis_[i] == z0()) best = i;
+        continue;
+      }
+      for (int col = 0; c == 0 && col < n_; ++col) c = compare_ratio(T_[i][col], T_[i][s], T_[best][col], T_[best][s]);
+      if (c < 0) best = i;
+    }
+    return best;
+  }
+
+  void extract(VectorQ& w, VectorQ& z) const {
+    w = VectorQ::Zero(n_);
+    z = VectorQ::Zero(n_);
+    for (int i = 0; i < n_; ++i) {
+      const int v = basis_[i];
+      const Rational value(T_[i][rhs()], D_);
+      if (v < n_) w[v] = value / Rational(scale_);
+      else if (v < 2 * n_) z[v - n_] = value;
+    }
+  }
+
+ private:
+  static Integer integer(const Rational& x) { return boost::multiprecision::numerator(x); }
+
+  int n_;
+  Integer scale_ = 1;
+  Integer D_ = 1;
+  std::vector<std::vector<Integer>> T_;
+  std::vector<int> basis_;
+};
+
+}  // namespace
+
+std::string to_string(LemkeStatus status) {
+  switch (status) {
+    case LemkeStatus::kSolved: return "solved";
+    case LemkeStatus::kRayTermination: return "ray termination";
+    case LemkeStatus::kPivotLimit: return "pivot limit";
+  }
+  return "unknown";
+}
+
+bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const VectorQ& z) {
+  const auto n = b.size();
+  if (B.rows() != n || B.cols() != n || w.size() != n || z.size() != n) return false;
+  if (w != B * z + b) return false;
+  for (int i = 0; i < n; ++i)
+    if (w[i] < 0 || z[i] < 0) return false;
+  return w.dot(z) == 0;
+}
+
+LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) {
+  const int n = static_cast<int>(b.size());
+  if (B.rows() != n || B.cols() != n)
+    throw InputError("B", std::to_string(B.rows()) + "x" + std::to_string(B.cols()),
+                     "must be square of the size of b (" + std::to_string(n) + ")");
+  if (max_pivots <= 0) max_pivots = 100 * (n + 1);
+  LemkeResult result;
+  if ((b.array() >= Rational(0)).all()) {  // z = 0 already solves it
+    result.status = LemkeStatus::kSolved;
+    result.w = b;
+    result.z = VectorQ::Zero(n);
+    return result;
+  }
+
+  Tableau T(B, b);
+  // z0 enters; the row with the most negative q leaves. Ties go to the
+  // larger index, the lexicographic minimum of (q_i, e_i).
+  int r = 0;
+  for (int i = 1; i < n; ++i)
+    if (T.at(i, T.rhs()) <= T.at(r, T.rhs())) r = i;
+  int entering = T.complement(T.basic(r));
+  T.pivot(r, T.z0());
+  result.pivots = 1;
+
+  while (true) {
+    if (result.pivots >= max_pivots) {
+      result.status = LemkeStatus::kPivotLimit;
+      return result;
+    }
+    r = T.ratio_test(entering);
+    if (r < 0) {
+      result.status = LemkeStatus::kRayTermination;
+      return result;
+    }
+    const int leaving = T.basic(r);
+    T.pivot(r, entering);
+    ++result.pivots;
+    if (leaving == T.z0()) break;
+    entering = T.complement(leaving);
+  }
+  T.extract(result.w, result.z);
+  // Never report a wrong "solved": the checker is independent of the tableau.
+  if (!is_solution(B, b, result.w, result.z))
+    throw std::logic_error("fixel: Lemke produced a non-solution (internal error)");
+  result.status = LemkeStatus::kSolved;
+  return result;
+}
+
+}  // namespace fixel

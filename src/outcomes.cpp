@@ -1,0 +1,187 @@
+#include "fixel/outcomes.h"
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lp.h"
+#include "fixel/internal/exact_lu.h"
+#include "fixel/lcp.h"
+
+namespace fixel {
+
+namespace {
+
+struct Rows {
+  std::vector<VectorQ> a;
+  std::vector<Rational> b;
+  void add(const VectorQ& row, const Rational& rhs) {
+    a.push_back(row);
+    b.push_back(rhs);
+  }
+  MatrixQ matrix(int cols) const {
+    MatrixQ A(static_cast<int>(a.size()), cols);
+    for (std::size_t i = 0; i < a.size(); ++i) A.row(static_cast<int>(i)) = a[i].transpose();
+    return A;
+  }
+  VectorQ vector() const {
+    VectorQ v(static_cast<int>(b.size()));
+    for (std::size_t i = 0; i < b.size(); ++i) v[static_cast<int>(i)] = b[i];
+    return v;
+  }
+};
+
+void check_impulse(const Scene& scene, const VectorQ& p_ext) {
+  if (p_ext.size() != scene.body.dof)
+    throw InputError("impulse", std::to_string(p_ext.size()) + " components",
+                     "but the scene has dof " + std::to_string(scene.body.dof));
+}
+
+Outcome make_outcome(const Scene& scene, const ContactMatrices& W, const std::vector<ContactMode>& modes,
+                     const VectorQ& x, bool isolated) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  Outcome o;
+  o.modes = modes;
+  o.velocity = x.head(dof);
+  o.p_n = x.segment(dof, nc);
+  o.p_t = x.segment(dof + nc, nc);
+  o.gaps = VectorQ(nc);
+  o.seated = true;
+  for (int i = 0; i < nc; ++i) {
+    o.gaps[i] = scene.fixels[i].gap + scene.time_step * W.Wn.col(i).dot(o.velocity);
+    o.seated = o.seated && o.gaps[i] == 0;
+  }
+  o.isolated = isolated;
+  return o;
+}
+
+}  // namespace
+
+std::string to_string(ContactMode mode) {
+  switch (mode) {
+    case ContactMode::kOpen: return "open";
+    case ContactMode::kSlidePlus: return "slide+";
+    case ContactMode::kSlideMinus: return "slide-";
+    case ContactMode::kStick: return "stick";
+  }
+  return "?";
+}
+
+ModeSystem mode_system(const Scene& scene, const std::vector<ContactMode>& modes, const VectorQ& p_ext) {
+  check_impulse(scene, p_ext);
+  const int dof = scene.body.dof, nc = scene.num_contacts(), n = dof + 2 * nc;
+  const ContactMatrices W = contact_matrices(scene);
+  auto nu = [&](const VectorQ& w) {  // the row w·ν
+    VectorQ row = VectorQ::Zero(n);
+    row.head(dof) = w;
+    return row;
+  };
+  auto pn = [&](int i) { return VectorQ(VectorQ::Unit(n, dof + i)); };
+  auto pt = [&](int i) { return VectorQ(VectorQ::Unit(n, dof + nc + i)); };
+
+  Rows eq, in;
+  // Newton, eq. (10): M ν⁺ − W_n p_n − W_t p_t = M ν^ℓ + p_ext.
+  const VectorQ newton_rhs = W.M * scene.body.velocity + p_ext;
+  for (int k = 0; k < dof; ++k) {
+    VectorQ row = VectorQ::Zero(n);
+    row.head(dof) = W.M.row(k).transpose();
+    for (int i = 0; i < nc; ++i) {
+      row[dof + i] = -W.Wn(k, i);
+      row[dof + nc + i] = -W.Wt(k, i);
+    }
+    eq.add(row, newton_rhs[k]);
+  }
+  for (int i = 0; i < nc; ++i) {
+    const Rational closing = -scene.fixels[i].gap / scene.time_step;  // W_n,iᵀ ν⁺ for gap 0
+    const Rational mu = scene.fixels[i].mu;
+    switch (modes.at(i)) {
+      case ContactMode::kOpen:
+        eq.add(pn(i), 0);
+        eq.add(pt(i), 0);
+        in.add(nu(W.Wn.col(i)), closing);
+        break;
+      case ContactMode::kSlidePlus:
+      case ContactMode::kSlideMinus: {
+        const Rational sigma = modes[i] == ContactMode::kSlidePlus ? 1 : -1;
+        eq.add(nu(W.Wn.col(i)), closing);
+        eq.add(VectorQ(pt(i) + sigma * mu * pn(i)), 0);
+        in.add(pn(i), 0);
+        in.add(VectorQ(sigma * nu(W.Wt.col(i))), 0);
+        break;
+      }
+      case ContactMode::kStick:
+        eq.add(nu(W.Wn.col(i)), closing);
+        eq.add(nu(W.Wt.col(i)), 0);
+        in.add(pn(i), 0);
+        in.add(VectorQ(mu * pn(i) - pt(i)), 0);
+        in.add(VectorQ(mu * pn(i) + pt(i)), 0);
+        break;
+    }
+  }
+  return {eq.matrix(n), eq.vector(), in.matrix(n), in.vector()};
+}
+
+std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext) {
+  check_impulse(scene, p_ext);
+  const int nc = scene.num_contacts(), n = scene.body.dof + 2 * nc;
+  const ContactMatrices W = contact_matrices(scene);
+  std::vector<Outcome> out;
+  long total = 1;
+  for (int i = 0; i < nc; ++i) total *= 4;
+  for (long code = 0; code < total; ++code) {
+    std::vector<ContactMode> modes(nc);
+    long c = code;
+    for (int i = 0; i < nc; ++i, c /= 4) modes[i] = static_cast<ContactMode>(c % 4);
+    const ModeSystem sys = mode_system(scene, modes, p_ext);
+
+    VectorQ x;
+    bool isolated = true;
+    const auto lu = internal::exact_lu(sys.A_eq);
+    if (sys.A_eq.rows() == n && lu.isInvertible()) {
+      x = lu.solve(sys.b_eq);
+      if (((sys.A_in * x - sys.b_in).array() < Rational(0)).any()) continue;
+    } else {
+      // Singular mode: a family of outcomes or none; the exact LP finds one.
+      std::vector<internal::LinearConstraint> rows;
+      for (int r = 0; r < sys.A_eq.rows(); ++r)
+        rows.push_back({sys.A_eq.row(r).transpose(), internal::Relation::kEqual, sys.b_eq[r]});
+      for (int r = 0; r < sys.A_in.rows(); ++r)
+        rows.push_back({sys.A_in.row(r).transpose(), internal::Relation::kGreaterEqual, sys.b_in[r]});
+      const internal::LpResult lp = internal::solve_lp(n, rows);
+      if (lp.status == internal::LpStatus::kInfeasible) continue;
+      x = lp.x;
+      isolated = false;
+    }
+    Outcome o = make_outcome(scene, W, modes, x, isolated);
+    bool seen = false;
+    for (const auto& prev : out) seen = seen || same_outcome(prev, o);
+    if (!seen) out.push_back(std::move(o));
+  }
+  return out;
+}
+
+Outcome outcome_from_lcp_solution(const Scene& scene, const VectorQ& p_ext, const VectorQ& z) {
+  check_impulse(scene, p_ext);
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  if (z.size() != 4 * nc) throw InputError("z", std::to_string(z.size()) + " entries", "must have 4 n_c entries");
+  const ContactMatrices W = contact_matrices(scene);
+  VectorQ x(dof + 2 * nc);
+  const VectorQ p_n = z.head(nc);
+  VectorQ p_t(nc);
+  for (int i = 0; i < nc; ++i) p_t[i] = z[nc + 2 * i] - z[nc + 2 * i + 1];
+  const VectorQ rhs = W.Wn * p_n + W.Wt * p_t + p_ext;
+  VectorQ nu = scene.body.velocity;
+  for (int k = 0; k < dof; ++k) nu[k] += rhs[k] / W.M(k, k);
+  x << nu, p_n, p_t;
+  // The modes are not recorded for an LCP solution; report them from signs.
+  std::vector<ContactMode> modes(nc);
+  for (int i = 0; i < nc; ++i) {
+    const Rational vt = W.Wt.col(i).dot(nu);
+    modes[i] = p_n[i] == 0 ? ContactMode::kOpen
+                           : (vt > 0 ? ContactMode::kSlidePlus : (vt < 0 ? ContactMode::kSlideMinus : ContactMode::kStick));
+  }
+  return make_outcome(scene, W, modes, x, true);
+}
+
+bool same_outcome(const Outcome& a, const Outcome& b) {
+  return a.velocity == b.velocity && a.p_n == b.p_n && a.p_t == b.p_t;
+}
+
+}  // namespace fixel

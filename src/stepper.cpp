@@ -1,0 +1,47 @@
+#include "fixel/stepper.h"
+
+#include "fixel/error.h"
+#include "fixel/lcp.h"
+
+namespace fixel {
+
+Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  if (steps <= 0) throw InputError("--steps", std::to_string(steps), "must be >= 1");
+  for (std::size_t k = 0; k < impulses.size(); ++k)
+    if (impulses[k].size() != dof)
+      throw InputError("impulse[" + std::to_string(k) + "]", std::to_string(impulses[k].size()) + " components",
+                       "but the scene has dof " + std::to_string(dof));
+
+  Scene state = scene;  // carries ν^ℓ and ψ^ℓ from step to step
+  VectorQ q = VectorQ::Zero(dof);
+  Simulation sim;
+  for (int k = 0; k < steps; ++k) {
+    const VectorQ p = k < static_cast<int>(impulses.size()) ? impulses[k] : VectorQ(VectorQ::Zero(dof));
+    const TimeSteppingLcp lcp = build_lcp(state);
+    const LemkeResult solved = solve_lcp_lemke(lcp.B, lcp.b(p));
+    if (solved.status != LemkeStatus::kSolved)
+      throw Error("step " + std::to_string(k + 1) + ": Lemke ended in " + to_string(solved.status) +
+                  "; no motion was computed");
+    StepRecord rec;
+    rec.p_n = solved.z.head(nc);
+    rec.p_f = solved.z.segment(nc, 2 * nc);
+    const VectorQ impulse = lcp.W.Wn * rec.p_n + lcp.W.Wf * rec.p_f + p;
+    rec.velocity = state.body.velocity;
+    for (int j = 0; j < dof; ++j) rec.velocity[j] += impulse[j] / lcp.W.M(j, j);
+    q += scene.time_step * rec.velocity;  // eq. (11)
+    rec.q = q;
+    rec.gaps = VectorQ(nc);
+    for (int i = 0; i < nc; ++i) {
+      rec.gaps[i] = state.fixels[i].gap + scene.time_step * lcp.W.Wn.col(i).dot(rec.velocity);  // eq. (12)
+      state.fixels[i].gap = rec.gaps[i];
+    }
+    rec.pivots = solved.pivots;
+    state.body.velocity = rec.velocity;
+    sim.steps.push_back(rec);
+  }
+  sim.seated = (sim.steps.back().gaps.array() == Rational(0)).all();
+  return sim;
+}
+
+}  // namespace fixel

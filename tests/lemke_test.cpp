@@ -1,0 +1,187 @@
+#include "fixel/lemke.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+#include "fixel/internal/paper_reference.h"
+#include "fixel/lcp.h"
+#include "fixel/seating.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+MatrixQ mat(std::initializer_list<std::initializer_list<int>> rows) {
+  MatrixQ m(static_cast<int>(rows.size()), static_cast<int>(rows.begin()->size()));
+  int r = 0;
+  for (const auto& row : rows) {
+    int c = 0;
+    for (int v : row) m(r, c++) = v;
+    ++r;
+  }
+  return m;
+}
+VectorQ vec(std::initializer_list<Rational> xs) {
+  VectorQ v(static_cast<int>(xs.size()));
+  int k = 0;
+  for (const auto& x : xs) v[k++] = x;
+  return v;
+}
+
+// Second method: every solution with a nonsingular principal block B_SS,
+// found by trying all 2^n complementary bases.
+std::vector<VectorQ> brute_force_solutions(const MatrixQ& B, const VectorQ& b) {
+  const int n = static_cast<int>(b.size());
+  std::vector<VectorQ> out;
+  for (int mask = 0; mask < (1 << n); ++mask) {
+    std::vector<int> S;
+    for (int i = 0; i < n; ++i)
+      if (mask & (1 << i)) S.push_back(i);
+    VectorQ z = VectorQ::Zero(n);
+    if (!S.empty()) {
+      MatrixQ BSS(S.size(), S.size());
+      VectorQ bS(S.size());
+      for (std::size_t r = 0; r < S.size(); ++r) {
+        bS[r] = -b[S[r]];
+        for (std::size_t c = 0; c < S.size(); ++c) BSS(r, c) = B(S[r], S[c]);
+      }
+      const auto lu = internal::exact_lu(BSS);
+      if (!lu.isInvertible()) continue;
+      const VectorQ zS = lu.solve(bS);
+      for (std::size_t r = 0; r < S.size(); ++r) z[S[r]] = zS[r];
+    }
+    // Degenerate problems reach one solution from several bases.
+    if (is_solution(B, b, VectorQ(B * z + b), z) && std::find(out.begin(), out.end(), z) == out.end()) out.push_back(z);
+  }
+  return out;
+}
+
+TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  VectorQ p = vec({-1, -1, -1});
+  const TimeSteppingLcp lcp = build_lcp(scene);
+  const LemkeResult r = solve_lcp_lemke(lcp.B, lcp.b(p));
+  ASSERT_EQ(r.status, LemkeStatus::kSolved);
+  EXPECT_TRUE(is_solution(lcp.B, lcp.b(p), r.w, r.z));
+  EXPECT_TRUE(r.w.head(3).isZero());  // ρ_n = ψ^{ℓ+1}/h = 0: seated
+  const VectorQ y = seating_system(scene, seating_set(scene)).y(p);
+  EXPECT_EQ(VectorQ(r.z.head(3)), VectorQ(y.segment(3, 3)));  // p_n = (161/202, 183/505, 337/505)
+  EXPECT_EQ(r.z[0], Rational(161, 202));
+}
+
+TEST(Lemke, OneByOneProblems) {
+  auto solve = [](int B, int b) { return solve_lcp_lemke(mat({{B}}), vec({b})); };
+  const auto a = solve(1, -1);
+  ASSERT_EQ(a.status, LemkeStatus::kSolved);
+  EXPECT_EQ(a.z[0], Rational(1));
+  EXPECT_EQ(a.w[0], Rational(0));
+  EXPECT_EQ(solve(2, 0).status, LemkeStatus::kSolved);
+  // w = −z − 1 ≥ 0 has no solution; Siconos 4.4's driver reports it solved.
+  EXPECT_EQ(solve(-1, -1).status, LemkeStatus::kRayTermination);
+  EXPECT_EQ(solve(0, -1).status, LemkeStatus::kRayTermination);
+  EXPECT_EQ(solve(0, 3).z[0], Rational(0));
+}
+
+TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
+  // w1 = −z2 − 1 can never be ≥ 0; B is skew (copositive-plus), so Lemke's
+  // ray is a certificate of infeasibility.
+  const MatrixQ B = mat({{0, -1}, {1, 0}});
+  EXPECT_TRUE(brute_force_solutions(B, vec({-1, -1})).empty());
+  EXPECT_EQ(solve_lcp_lemke(B, vec({-1, -1})).status, LemkeStatus::kRayTermination);
+  EXPECT_EQ(solve_lcp_lemke(mat({{-1, 0}, {0, -1}}), vec({-1, -1})).status, LemkeStatus::kRayTermination);
+}
+
+TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
+  // b has zeros and equal negative entries: both the first pivot and later
+  // ratio tests tie; the lexicographic rule must still end with a solution.
+  const MatrixQ B = mat({{1, 2, 0, 0}, {0, 1, 2, 0}, {0, 0, 1, 2}, {2, 0, 0, 1}});
+  const VectorQ b = vec({-1, -1, 0, 0});
+  const auto r = solve_lcp_lemke(B, b);
+  ASSERT_EQ(r.status, LemkeStatus::kSolved);
+  EXPECT_TRUE(is_solution(B, b, r.w, r.z));
+  const MatrixQ I = MatrixQ::Identity(4, 4);
+  const auto r2 = solve_lcp_lemke(I, vec({0, -1, 0, -1}));
+  ASSERT_EQ(r2.status, LemkeStatus::kSolved);
+  EXPECT_EQ(r2.z, vec({0, 1, 0, 1}));
+}
+
+TEST(Lemke, PivotLimitIsAStatusNotASolution) {
+  const MatrixQ B = mat({{1, 2, 0}, {0, 1, 2}, {2, 0, 1}});
+  const auto r = solve_lcp_lemke(B, vec({-1, -1, -1}), 1);
+  EXPECT_EQ(r.status, LemkeStatus::kPivotLimit);
+  EXPECT_EQ(r.z.size(), 0);
+}
+
+TEST(Lemke, RejectsMismatchedSizes) {
+  EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError);
+}
+
+// Lemke's theorem: for positive semidefinite B (copositive-plus), the
+// lexicographic method ends with a solution exactly when one exists. Random
+// degenerate problems (b with many zeros and repeated values) check this
+// against brute force.
+TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<int> small(-2, 2), size(1, 6);
+  int solved = 0, unsolvable = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = size(rng);
+    MatrixQ A(n, n), S(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = small(rng);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j <= i; ++j) S(i, j) = small(rng), S(j, i) = -S(i, j);
+    for (int i = 0; i < n; ++i) S(i, i) = 0;
+    const MatrixQ B = A.transpose() * A + S;  // PSD plus skew: copositive-plus
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) b[i] = trial % 3 == 0 ? Rational(small(rng)) : Rational(small(rng) < 0 ? -1 : 0);
+    const auto r = solve_lcp_lemke(B, b);
+    const bool exists = !brute_force_solutions(B, b).empty();
+    ASSERT_NE(r.status, LemkeStatus::kPivotLimit);
+    EXPECT_EQ(r.status == LemkeStatus::kSolved, exists) << "trial " << trial;
+    if (r.status == LemkeStatus::kSolved) {
+      EXPECT_TRUE(is_solution(B, b, r.w, r.z));
+      ++solved;
+    } else {
+      ++unsolvable;
+    }
+  }
+  EXPECT_GT(solved, 200);
+  EXPECT_GE(unsolvable, 5);
+}
+
+// P-matrices have exactly one solution; Lemke must return it.
+TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
+  std::mt19937_64 rng(23);
+  std::uniform_int_distribution<int> small(-3, 3);
+  for (int trial = 0; trial < 100; ++trial) {
+    const int n = 2 + trial % 5;
+    MatrixQ A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = Rational(small(rng), 1 + trial % 4);
+    const MatrixQ B = A.transpose() * A + MatrixQ::Identity(n, n);  // positive definite
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) b[i] = Rational(small(rng), 3);
+    const auto all = brute_force_solutions(B, b);
+    ASSERT_EQ(all.size(), 1u);
+    const auto r = solve_lcp_lemke(B, b);
+    ASSERT_EQ(r.status, LemkeStatus::kSolved);
+    EXPECT_EQ(r.z, all[0]);
+  }
+}
+
+TEST(IsSolution, RejectsEachViolatedCondition) {
+  const MatrixQ B = mat({{1}});
+  EXPECT_TRUE(is_solution(B, vec({-1}), vec({0}), vec({1})));
+  EXPECT_FALSE(is_solution(B, vec({-1}), vec({1}), vec({1})));    // w ≠ Bz + b
+  EXPECT_FALSE(is_solution(B, vec({-1}), vec({-1}), vec({0})));   // w < 0
+  EXPECT_FALSE(is_solution(B, vec({1}), vec({0}), vec({-1})));    // z < 0
+  EXPECT_FALSE(is_solution(B, vec({1}), vec({2}), vec({1})));     // wᵀz ≠ 0
+}
+
+}  // namespace
+}  // namespace fixel

@@ -1,0 +1,132 @@
+#include "fixel/outcomes.h"
+
+#include <gtest/gtest.h>
+
+#include "fixel/error.h"
+#include "fixel/internal/paper_reference.h"
+#include "fixel/lcp.h"
+#include "fixel/lemke.h"
+#include "fixel/seating.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+VectorQ vec(std::initializer_list<Rational> xs) {
+  VectorQ v(static_cast<int>(xs.size()));
+  int k = 0;
+  for (const auto& x : xs) v[k++] = x;
+  return v;
+}
+
+// Rebuilds an LCP solution z = (p_n, p_f, s) from an outcome and checks it
+// with the independent checker: the outcome really solves the step LCP.
+void expect_outcome_solves_lcp(const Scene& scene, const VectorQ& p, const Outcome& o) {
+  const int nc = scene.num_contacts();
+  const TimeSteppingLcp lcp = build_lcp(scene);
+  VectorQ z = VectorQ::Zero(4 * nc);
+  for (int i = 0; i < nc; ++i) {
+    z[i] = o.p_n[i];
+    z[nc + 2 * i] = o.p_t[i] > 0 ? o.p_t[i] : Rational(0);
+    z[nc + 2 * i + 1] = o.p_t[i] < 0 ? Rational(-o.p_t[i]) : Rational(0);
+    z[3 * nc + i] = boost::multiprecision::abs(lcp.W.Wt.col(i).dot(o.velocity));  // s = |v_t|
+  }
+  const VectorQ b = lcp.b(p);
+  EXPECT_TRUE(is_solution(lcp.B, b, VectorQ(lcp.B * z + b), z));
+}
+
+TEST(Outcomes, PaperExample2HasExactlyOneOutcomeAndItSeats) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const auto outcomes = enumerate_outcomes(scene, vec({-1, -1, -1}));
+  ASSERT_EQ(outcomes.size(), 1u);
+  EXPECT_TRUE(outcomes[0].seated);
+  EXPECT_EQ(outcomes[0].p_n, vec({Rational(161, 202), Rational(183, 505), Rational(337, 505)}));
+}
+
+TEST(Outcomes, NonuniquenessSceneHasASeatingAndANonSeatingOutcome) {
+  const Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/nonunique.json");
+  // DESIGN §3: p = apex − Σ g_i, i.e. λ = p_n = (1, 1, 1).
+  const VectorQ p = vec({Rational(29157, 10540), Rational(-71119, 105400), Rational(-1169839, 263500)});
+  const SeatingSet S = seating_set(scene);
+  VectorQ apex_minus_g = S.apex;
+  for (const auto& g : S.generators) apex_minus_g -= g;
+  EXPECT_EQ(apex_minus_g, p);
+  EXPECT_TRUE(S.contains(p));
+
+  const auto outcomes = enumerate_outcomes(scene, p);
+  int seating = 0, non_seating = 0;
+  for (const auto& o : outcomes) {
+    expect_outcome_solves_lcp(scene, p, o);
+    EXPECT_TRUE(o.isolated);
+    if (o.seated) {
+      ++seating;
+      EXPECT_EQ(o.p_n, vec({1, 1, 1}));
+      EXPECT_EQ(o.velocity, S.nu_plus);
+    } else {
+      ++non_seating;
+      EXPECT_TRUE((o.gaps.array() > Rational(0)).any());
+    }
+  }
+  EXPECT_EQ(seating, 1);
+  EXPECT_GE(non_seating, 1);
+  EXPECT_EQ(non_seating, 2);  // (open, slide+, open) and (slide+, slide+, open)
+}
+
+TEST(Outcomes, RejectsAnImpulseOfTheWrongLength) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  EXPECT_THROW(enumerate_outcomes(scene, vec({1, 2})), InputError);
+}
+
+// Random low-friction scenes: inside S some outcome seats, outside S none
+// does, and Lemke's solution is always one of the enumerated outcomes.
+TEST(Outcomes, AgreeWithSeatingSetAndLemkeOnRandomLowFrictionScenes) {
+  std::mt19937_64 rng(31);
+  int scenes = 0, inside = 0, outside = 0;
+  for (int attempt = 0; attempt < 400 && scenes < 40; ++attempt) {
+    Scene scene = testing::random_scene(rng, 3, /*max_mu_tenths=*/3);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const SceneError&) {
+      continue;
+    }
+    ++scenes;
+    const TimeSteppingLcp lcp = build_lcp(scene);
+    for (int k = 0; k < 6; ++k) {
+      VectorQ lambda(3);
+      for (int j = 0; j < 3; ++j) lambda[j] = testing::random_rational(rng, 0, 2, 9) + Rational(1, 9);
+      const bool make_outside = k % 2 == 1;
+      if (make_outside) lambda[k % 3] = -lambda[k % 3];
+      VectorQ p = S.apex;
+      for (int j = 0; j < 3; ++j) p -= lambda[j] * S.generators[j];
+      ASSERT_EQ(S.contains(p), !make_outside);
+
+      const auto outcomes = enumerate_outcomes(scene, p);
+      bool any_seats = false;
+      for (const auto& o : outcomes) any_seats = any_seats || o.seated;
+      EXPECT_EQ(any_seats, !make_outside);
+      (make_outside ? outside : inside)++;
+
+      const LemkeResult r = solve_lcp_lemke(lcp.B, lcp.b(p));
+      ASSERT_EQ(r.status, LemkeStatus::kSolved);
+      const Outcome lemke = outcome_from_lcp_solution(scene, p, r.z);
+      bool found = false;
+      for (const auto& o : outcomes) found = found || same_outcome(o, lemke);
+      EXPECT_TRUE(found);
+    }
+  }
+  EXPECT_EQ(scenes, 40);
+  EXPECT_EQ(inside + outside, 240);
+}
+
+TEST(ModeSystem, HasOneEquationPerUnknown) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  for (auto m : {ContactMode::kOpen, ContactMode::kSlidePlus, ContactMode::kSlideMinus, ContactMode::kStick}) {
+    const ModeSystem sys = mode_system(scene, {m, m, m}, vec({0, 0, 0}));
+    EXPECT_EQ(sys.A_eq.rows(), 9);
+    EXPECT_EQ(sys.A_eq.cols(), 9);
+  }
+}
+
+}  // namespace
+}  // namespace fixel

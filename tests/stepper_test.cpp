@@ -1,0 +1,66 @@
+#include "fixel/stepper.h"
+
+#include <gtest/gtest.h>
+
+#include "fixel/error.h"
+#include "fixel/internal/paper_reference.h"
+#include "fixel/lcp.h"
+#include "fixel/seating.h"
+
+namespace fixel {
+namespace {
+
+VectorQ vec(std::initializer_list<Rational> xs) {
+  VectorQ v(static_cast<int>(xs.size()));
+  int k = 0;
+  for (const auto& x : xs) v[k++] = x;
+  return v;
+}
+
+TEST(Simulate, PaperExample2ImpulseSeatsInOneStep) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const Simulation sim = simulate(scene, {vec({-1, -1, -1})}, 1);
+  ASSERT_EQ(sim.steps.size(), 1u);
+  EXPECT_TRUE(sim.seated);
+  EXPECT_TRUE(sim.steps[0].gaps.isZero());
+  EXPECT_EQ(sim.steps[0].p_n, vec({Rational(161, 202), Rational(183, 505), Rational(337, 505)}));
+  // q moved by h ν⁺ = the seating velocity.
+  EXPECT_EQ(sim.steps[0].q, seating_set(scene).nu_plus);
+}
+
+TEST(Simulate, AnImpulseOutsideSDoesNotSeat) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  EXPECT_FALSE(simulate(scene, {vec({1, 1, 1})}, 1).seated);
+}
+
+TEST(Simulate, StateCarriesOverBetweenStepsConsistently) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const Simulation sim = simulate(scene, {vec({Rational(-1, 2), Rational(-1, 4), 0})}, 4);
+  ASSERT_EQ(sim.steps.size(), 4u);
+  const ContactMatrices W = contact_matrices(scene);
+  VectorQ q = VectorQ::Zero(3), gaps(3);
+  gaps << Rational(1, 10), Rational(1, 20), Rational(1, 5);
+  for (const auto& s : sim.steps) {
+    q += scene.time_step * s.velocity;
+    EXPECT_EQ(s.q, q);
+    for (int i = 0; i < 3; ++i) {
+      gaps[i] += scene.time_step * W.Wn.col(i).dot(s.velocity);
+      EXPECT_GE(gaps[i], 0);
+    }
+    EXPECT_EQ(s.gaps, gaps);
+  }
+}
+
+TEST(Simulate, RejectsBadStepsAndImpulseLength) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  try {
+    simulate(scene, {vec({-1, -1, -1})}, 0);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--steps: 0 must be >= 1");
+  }
+  EXPECT_THROW(simulate(scene, {vec({-1, -1})}, 1), InputError);
+}
+
+}  // namespace
+}  // namespace fixel
