@@ -1,0 +1,234 @@
+// Exact lexicographic Lemke against a double-precision Lemke (and Siconos's
+// lcp_lexicolemke when available) on the seating LCPs of random scenes.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <iostream>
+#include <random>
+
+#include "../tests/test_scenes.h"
+#include "bench_util.h"
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+#include "fixel/lcp.h"
+#include "fixel/lemke.h"
+#include "fixel/seating.h"
+
+#ifdef FIXEL_HAVE_SICONOS
+#include <siconos/numerics/LCP_Solvers.h>
+#include <siconos/numerics/LinearComplementarityProblem.h>
+#include <siconos/numerics/NumericsMatrix.h>
+#include <siconos/numerics/SolverOptions.h>
+#include <siconos/numerics/lcp_cst.h>
+#endif
+
+namespace {
+
+using fixel::MatrixQ;
+using fixel::Rational;
+using fixel::VectorQ;
+
+struct Problem {
+  MatrixQ B;
+  VectorQ b;
+  Eigen::MatrixXd Bd;
+  Eigen::VectorXd bd;
+};
+
+// Seating LCPs (size 12) of random 3-fixel scenes, at impulses around S.
+const std::vector<Problem>& problems() {
+  static const std::vector<Problem> all = [] {
+    std::vector<Problem> out;
+    std::mt19937_64 rng(2026);
+    while (out.size() < 64) {
+      fixel::Scene scene = fixel::testing::random_scene(rng, 3);
+      fixel::SeatingSet S;
+      try {
+        S = fixel::seating_set(scene);
+      } catch (const fixel::Error&) {
+        continue;
+      }
+      VectorQ p = S.apex;
+      for (int j = 0; j < 3; ++j) p -= fixel::testing::random_rational(rng, -1, 3, 7) * S.generators[j];
+      const fixel::TimeSteppingLcp lcp = fixel::build_lcp(scene);
+      Problem pr{lcp.B, lcp.b(p), Eigen::MatrixXd(12, 12), Eigen::VectorXd(12)};
+      for (int i = 0; i < 12; ++i) {
+        pr.bd[i] = fixel::to_double(pr.b[i]);
+        for (int j = 0; j < 12; ++j) pr.Bd(i, j) = fixel::to_double(pr.B(i, j));
+      }
+      out.push_back(std::move(pr));
+    }
+    return out;
+  }();
+  return all;
+}
+
+// Textbook double-precision Lemke: covering vector e, smallest-ratio rule
+// with a tolerance, no lexicographic tie-breaking.
+bool double_lemke(const Eigen::MatrixXd& B, const Eigen::VectorXd& b, Eigen::VectorXd& z) {
+  const int n = static_cast<int>(b.size());
+  const double tol = 1e-12;
+  z = Eigen::VectorXd::Zero(n);
+  if (b.minCoeff() >= 0) return true;
+  Eigen::MatrixXd T(n, 2 * n + 2);
+  T << Eigen::MatrixXd::Identity(n, n), -B, -Eigen::VectorXd::Ones(n), b;
+  std::vector<int> basis(n);
+  for (int i = 0; i < n; ++i) basis[i] = i;
+  auto pivot = [&](int r, int s) {
+    T.row(r) /= T(r, s);
+    for (int i = 0; i < n; ++i)
+      if (i != r) T.row(i) -= T(i, s) * T.row(r);
+    basis[r] = s;
+  };
+  int r;
+  T.col(2 * n + 1).minCoeff(&r);
+  int entering = basis[r] + n;
+  pivot(r, 2 * n);
+  for (int it = 0; it < 1000; ++it) {
+    int best = -1;
+    double ratio = 0;
+    for (int i = 0; i < n; ++i)
+      if (T(i, entering) > tol) {
+        const double q = T(i, 2 * n + 1) / T(i, entering);
+        if (best < 0 || q < ratio - tol || (q <= ratio + tol && basis[i] == 2 * n)) best = i, ratio = q;
+      }
+    if (best < 0) return false;
+    const int leaving = basis[best];
+    pivot(best, entering);
+    if (leaving == 2 * n) {
+      for (int i = 0; i < n; ++i)
+        if (basis[i] >= n && basis[i] < 2 * n) z[basis[i] - n] = T(i, 2 * n + 1);
+      return true;
+    }
+    entering = leaving < n ? leaving + n : leaving - n;
+  }
+  return false;
+}
+
+#ifdef FIXEL_HAVE_SICONOS
+bool siconos_lemke(const Eigen::MatrixXd& B, const Eigen::VectorXd& b, Eigen::VectorXd& z) {
+  const int n = static_cast<int>(b.size());
+  Eigen::MatrixXd M = B;  // column-major, as Siconos expects
+  Eigen::VectorXd q = b, w(n);
+  z = Eigen::VectorXd::Zero(n);
+  NumericsMatrix* NM = NM_create_from_data(NM_DENSE, n, n, M.data());
+  LinearComplementarityProblem problem{n, NM, q.data()};
+  SolverOptions* options = solver_options_create(SICONOS_LCP_LEMKE);
+  int info = 0;
+  lcp_lexicolemke(&problem, z.data(), w.data(), &info, options);
+  solver_options_delete(options);
+  NM->matrix0 = nullptr;  // the data belongs to M
+  NM_clear(NM);
+  free(NM);
+  return info == 0;
+}
+#endif
+
+// A double solution disagrees if its status differs from the exact one or
+// its support {i : z_i > 1e-9} differs from the exact support.
+template <typename Solver>
+int report_disagreements(const char* name, Solver solve) {
+  int disagreements = 0;
+  const auto& all = problems();
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const auto exact = fixel::solve_lcp_lemke(all[k].B, all[k].b);
+    Eigen::VectorXd z;
+    const bool ok = solve(all[k].Bd, all[k].bd, z);
+    bool differ = ok != (exact.status == fixel::LemkeStatus::kSolved);
+    double worst = 0;
+    if (!differ && ok)
+      for (int i = 0; i < 12; ++i) {
+        differ = differ || ((z[i] > 1e-9) != (exact.z[i] > 0));
+        worst = std::max(worst, std::abs(z[i] - fixel::to_double(exact.z[i])));
+      }
+    if (differ) {
+      ++disagreements;
+      // Seating LCPs may have several solutions. Decide exactly whether the
+      // complementary basis the solver ended on (z_i basic where z_i > w_i)
+      // is an exact solution: solve it in rationals and check it.
+      std::string verdict = "no solution reported";
+      if (ok) {
+        const Eigen::VectorXd w = all[k].Bd * z + all[k].bd;
+        std::vector<int> S;
+        for (int i = 0; i < 12; ++i)
+          if (z[i] > w[i]) S.push_back(i);
+        VectorQ zq = VectorQ::Zero(12);
+        bool solvable = true;
+        if (!S.empty()) {
+          MatrixQ BSS(S.size(), S.size());
+          VectorQ bS(S.size());
+          for (std::size_t r = 0; r < S.size(); ++r) {
+            bS[r] = -all[k].b[S[r]];
+            for (std::size_t c = 0; c < S.size(); ++c) BSS(r, c) = all[k].B(S[r], S[c]);
+          }
+          const auto lu = fixel::internal::exact_lu(BSS);
+          solvable = lu.isInvertible();
+          if (solvable) {
+            const VectorQ zS = lu.solve(bS);
+            for (std::size_t r = 0; r < S.size(); ++r) zq[S[r]] = zS[r];
+          }
+        }
+        verdict = solvable && fixel::is_solution(all[k].B, all[k].b, VectorQ(all[k].B * zq + all[k].b), zq)
+                      ? "its basis is an exact solution (another solution of a non-unique LCP)"
+                      : "its basis is NOT an exact solution";
+      }
+      std::cout << "  " << name << " disagrees on problem " << k << " (exact: " << fixel::to_string(exact.status)
+                << ", double: " << (ok ? "solved" : "failed") << ", max |dz| " << worst << "): " << verdict << "\n";
+    }
+  }
+  std::cout << name << ": " << disagreements << " of " << all.size() << " problems disagree with exact Lemke\n";
+  return disagreements;
+}
+
+void BM_ExactLemke(benchmark::State& state) {
+  const auto& all = problems();
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fixel::solve_lcp_lemke(all[k].B, all[k].b));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_ExactLemke)->Repetitions(5)->ReportAggregatesOnly(true);
+
+void BM_DoubleLemke(benchmark::State& state) {
+  const auto& all = problems();
+  std::size_t k = 0;
+  Eigen::VectorXd z;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(double_lemke(all[k].Bd, all[k].bd, z));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_DoubleLemke)->Repetitions(5)->ReportAggregatesOnly(true);
+
+#ifdef FIXEL_HAVE_SICONOS
+void BM_SiconosLexicoLemke(benchmark::State& state) {
+  const auto& all = problems();
+  std::size_t k = 0;
+  Eigen::VectorXd z;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(siconos_lemke(all[k].Bd, all[k].bd, z));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_SiconosLexicoLemke)->Repetitions(5)->ReportAggregatesOnly(true);
+#endif
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  std::cout << "Seating LCPs of " << problems().size() << " random 3-fixel scenes (size 12); one solve per iteration.\n";
+  report_disagreements("double Lemke", double_lemke);
+#ifdef FIXEL_HAVE_SICONOS
+  report_disagreements("Siconos lcp_lexicolemke", siconos_lemke);
+#else
+  std::cout << "Siconos not found at configure time: its benchmark is skipped.\n";
+#endif
+  fixel::bench::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  reporter.PrintRatios(std::cout);
+  return 0;
+}
