@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/json_exact.h"
@@ -71,6 +72,47 @@ void require_nonnegative(const Rational& v, const std::string& path) {
   if (v < 0) throw SceneError(path, to_string(v), "must be >= 0");
 }
 
+std::vector<Vec2> points(const json& v, const std::string& path) {
+  if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of [x, y] points");
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec2(v[i], path + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+Boundary parse_boundary(const json& v) {
+  const std::string path = "body.boundary";
+  if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of curves");
+  std::vector<Curve> curves;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const std::string cpath = path + "[" + std::to_string(k) + "]";
+    const json& c = v[k];
+    if (!c.is_object()) throw SceneError(cpath, describe(c), "must be a JSON object");
+    const json& type = require(c, "type", cpath);
+    Curve curve;
+    if (type == "polyline") {
+      expect_object(c, cpath, {"type", "points"});
+      curve.type = Curve::Type::kPolyline;
+      curve.points = points(require(c, "points", cpath), cpath + ".points");
+    } else if (type == "bspline") {
+      expect_object(c, cpath, {"type", "degree", "knots", "control_points"});
+      curve.type = Curve::Type::kBSpline;
+      const Rational degree = number(require(c, "degree", cpath), cpath + ".degree");
+      if (degree < 1 || degree > 20 || boost::multiprecision::denominator(degree) != 1)
+        throw SceneError(cpath + ".degree", to_string(degree), "must be an integer from 1 to 20");
+      curve.degree = static_cast<int>(boost::multiprecision::numerator(degree));
+      curve.points = points(require(c, "control_points", cpath), cpath + ".control_points");
+      const json& knots = require(c, "knots", cpath);
+      if (!knots.is_array()) throw SceneError(cpath + ".knots", describe(knots), "must be an array of numbers");
+      for (std::size_t i = 0; i < knots.size(); ++i)
+        curve.knots.push_back(number(knots[i], cpath + ".knots[" + std::to_string(i) + "]"));
+    } else {
+      throw SceneError(cpath + ".type", describe(type), "must be \"polyline\" or \"bspline\"");
+    }
+    curves.push_back(std::move(curve));
+  }
+  return make_boundary(std::move(curves), path);
+}
+
 int parse_dof(const json& v) {
   if (!v.is_string()) throw SceneError("body.dof", describe(v), "must be 2 or 3");
   const std::string s = v.get<std::string>();
@@ -120,30 +162,33 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
   expect_object(body, "body", {"dof", "mass", "inertia", "velocity", "center_of_mass", "boundary"});
   Body& b = scene.body;
   b.dof = parse_dof(require(body, "dof", "body"));
-  b.mass = number(require(body, "mass", "body"), "body.mass");
-  require_positive(b.mass, "body.mass");
   const bool has_boundary = body.contains("boundary");
-  if (has_boundary) b.boundary_json = body.at("boundary").dump();
+  if (has_boundary) b.boundary = std::make_shared<const Boundary>(parse_boundary(body.at("boundary")));
+  // With a boundary, mass defaults to the area (density 1) and the centre of
+  // mass to the area centroid.
+  if (body.contains("mass") || !has_boundary) {
+    b.mass = number(require(body, "mass", "body"), "body.mass");
+    require_positive(b.mass, "body.mass");
+  } else {
+    b.mass = b.boundary->mass.area;
+  }
+  if (body.contains("center_of_mass")) b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
+  else b.p_AoCm_A = has_boundary ? b.boundary->mass.centroid : Vec2{Rational(0), Rational(0)};
   if (b.dof == 3) {
-    if (!body.contains("inertia")) {
-      if (has_boundary)
-        throw UnsupportedError("body.inertia", "", "is missing; computing it from the boundary is not implemented yet");
+    if (body.contains("inertia")) {
+      b.inertia = number(body.at("inertia"), "body.inertia");
+      require_positive(b.inertia, "body.inertia");
+    } else if (has_boundary) {
+      // Uniform density m / A about the centre of mass.
+      b.inertia = b.mass / b.boundary->mass.area * b.boundary->mass.polar_moment_about(b.p_AoCm_A);
+    } else {
       throw SceneError("body.inertia", "", "is missing (required for dof 3 without a boundary)");
     }
-    b.inertia = number(body.at("inertia"), "body.inertia");
-    require_positive(b.inertia, "body.inertia");
   } else if (body.contains("inertia")) {
     throw SceneError("body.inertia", describe(body.at("inertia")), "is not allowed for a point mass (dof 2)");
   }
   b.velocity = body.contains("velocity") ? vector(body.at("velocity"), "body.velocity", b.dof, "dof " + std::to_string(b.dof))
                                          : VectorQ::Zero(b.dof);
-  if (body.contains("center_of_mass")) {
-    b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
-  } else if (has_boundary) {
-    throw UnsupportedError("body.center_of_mass", "", "is missing; computing it from the boundary is not implemented yet");
-  } else {
-    b.p_AoCm_A = {Rational(0), Rational(0)};
-  }
 
   const json& fixels = require(root, "fixels", "");
   if (!fixels.is_array()) throw SceneError("fixels", describe(fixels), "must be an array");

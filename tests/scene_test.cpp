@@ -167,9 +167,14 @@ TEST(Scene, RejectsSingularFixtureNamingTheDependentFixel) {
                            "fixels', so the fixture does not determine the motion");
 }
 
-TEST(Scene, BoundaryWithoutInertiaIsReportedAsNotYetSupported) {
-  const std::string text = example2_with(R"("inertia": "1", )", R"("boundary": [], )");
-  EXPECT_THROW(parse_scene(text), UnsupportedError);
+TEST(Scene, RejectsABoundaryThatIsNotAList) {
+  expect_error<SceneError>(example2_with(R"("inertia": "1", )", R"("boundary": {}, )"),
+                           "body.boundary: {} must be an array of curves");
+  expect_error<SceneError>(example2_with(R"("inertia": "1", )", R"("boundary": [{"type": "circle"}], )"),
+                           "body.boundary[0].type: \"circle\" must be \"polyline\" or \"bspline\"");
+  expect_error<ParseError>(example2_with(R"("inertia": "1", )",
+                                         R"("boundary": [{"type": "polyline", "points": [["0", "x"]]}], )"),
+                           "body.boundary[0].points[0][1]: \"x\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
 }
 
 TEST(Scene, ParsesImpulsesAgainstDof) {

@@ -2,11 +2,16 @@
 /// @file
 /// The scene: a planar part (or point mass) near its fixels. DESIGN §2, §5.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "fixel/rational.h"
+
+namespace fixel {
+struct Boundary;
+}
 
 namespace fixel {
 
@@ -24,7 +29,8 @@ struct Body {
   Rational inertia;              ///< I > 0 about the centre of mass (dof 3 only; 0 for dof 2).
   VectorQ velocity;              ///< ν^ℓ, length dof (m/s, rad/s).
   Vec2 p_AoCm_A;                 ///< Centre of mass in frame A.
-  std::optional<std::string> boundary_json;  ///< Raw `boundary`, kept for later stages.
+  /// The part's outline (one closed counter-clockwise loop), if given.
+  std::shared_ptr<const Boundary> boundary;
 };
 
 /// One fixture point ("fixel").

@@ -1,0 +1,220 @@
+#include "fixel/wrench_cone.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost_mp.h>
+#include <CGAL/convex_hull_2.h>
+
+#include <cmath>
+
+#include "fixel/cone.h"
+#include "fixel/error.h"
+
+namespace fixel {
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<Rational>;  // exact hull predicates
+
+Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+Rational dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
+Vec2 rot90(const Vec2& v) { return {-v.y, v.x}; }
+bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
+
+VectorQ wrench(const Vec2& d, const Rational& moment) {
+  VectorQ w(3);
+  w << d.x, d.y, moment;
+  return w;
+}
+
+// d is in cone(a, b) for a pointed planar cone (a to b counter-clockwise).
+bool in_planar_cone(const Vec2& d, const Vec2& a, const Vec2& b) {
+  if (cross(a, b) == 0) return cross(a, d) == 0 && dot(a, d) > 0;  // a single ray
+  return cross(a, d) >= 0 && cross(d, b) >= 0;
+}
+
+// Extreme directions of a set of non-zero planar vectors; false if they do
+// not lie in a cone of angle < π.
+bool extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
+  int s = -1, e = -1;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    bool all_ccw = true, all_cw = true;
+    for (const auto& w : v) {
+      all_ccw = all_ccw && cross(v[i], w) >= 0;
+      all_cw = all_cw && cross(w, v[i]) >= 0;
+    }
+    if (all_ccw && s < 0) s = static_cast<int>(i);
+    if (all_cw && e < 0) e = static_cast<int>(i);
+  }
+  if (s < 0 || e < 0) return false;
+  first = v[s];
+  last = v[e];
+  const Rational c = cross(first, last);
+  if (c < 0 || (c == 0 && dot(first, last) < 0)) return false;  // spans π or more
+  // Anti-parallel legs inside (span exactly π) are caught by the test above
+  // only through the extremes; check every pair against the extremes too.
+  for (const auto& w : v)
+    if (!in_planar_cone(w, first, last) && !(c == 0 && cross(first, w) == 0 && dot(first, w) > 0)) return false;
+  return true;
+}
+
+Rational to_dyadic_floor(double x) {
+  const double scale = 1048576.0;  // 2^20
+  return Rational(static_cast<long long>(std::floor(x * scale)), 1048576);
+}
+
+WrenchCone finish(std::vector<VectorQ> gens) {
+  WrenchCone cone;
+  cone.generators = std::move(gens);
+  cone.facets = cone_facet_normals(cone.generators, 3);
+  return cone;
+}
+
+WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de) {
+  std::vector<VectorQ> gens;
+  for (const Vec2& d : {ds, de}) {
+    Rational lo = 0, hi = 0;
+    for (std::size_t k = 0; k < b.hull.size(); ++k) {
+      const Rational m = cross({b.hull[k].x - c.x, b.hull[k].y - c.y}, d);  // r ⊗ d, linear in r
+      if (k == 0 || m < lo) lo = m;
+      if (k == 0 || m > hi) hi = m;
+    }
+    gens.push_back(wrench(d, lo));
+    gens.push_back(wrench(d, hi));
+  }
+  return finish(std::move(gens));
+}
+
+std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de) {
+  const Vec2 us = internal::unit_direction_outward(ds, true), ue = internal::unit_direction_outward(de, false);
+  const Rational span = cross(us, ue);
+  if (span < 0 || (span == 0 && dot(us, ue) < 0)) return std::nullopt;  // rounding reached π
+  std::vector<Rational> X;
+  for (const auto& p : b.hull) {
+    const Vec2 r{p.x - c.x, p.y - c.y};
+    X.push_back(cross(r, us));
+    X.push_back(cross(r, ue));
+    // The extra ⊥ angle: X = r ⊗ d is ±|r| where d ⊥ r.
+    if (!is_zero(r)) {
+      const Rational bound = internal::sqrt_upper(dot(r, r));
+      if (in_planar_cone(rot90(r), us, ue)) X.push_back(bound);
+      if (in_planar_cone(Vec2{-rot90(r).x, -rot90(r).y}, us, ue)) X.push_back(-bound);
+    }
+  }
+  Rational xmin = X[0], xmax = X[0];
+  for (const auto& x : X) {
+    xmin = x < xmin ? x : xmin;
+    xmax = x > xmax ? x : xmax;
+  }
+  // A unit d in the arc is α u_s + β u_e with 1 <= α + β <= 1/cos(Δ/2). The
+  // corner generators cover it only if a positive lower bound (negative upper
+  // bound) is shrunk by a factor c <= cos(Δ/2) = sqrt((1 + u_s·u_e)/2).
+  const Rational shrink = internal::sqrt_lower((1 + dot(us, ue)) / 2);
+  if (xmin > 0) xmin *= shrink;
+  if (xmax < 0) xmax *= shrink;
+  return finish({wrench(us, xmin), wrench(us, xmax), wrench(ue, xmin), wrench(ue, xmax)});
+}
+
+}  // namespace
+
+namespace internal {
+
+Vec2 unit_direction_outward(const Vec2& d, bool cw) {
+  // u(t) = ((1 − t²), 2t) / (1 + t²) covers angles (−π, π) with t = tan(θ/2);
+  // directions near π use −u(t) with θ − π instead.
+  const double theta = std::atan2(to_double(d.y), to_double(d.x));
+  const bool flip = std::abs(theta) > M_PI / 2;
+  const double half = (flip ? (theta > 0 ? theta - M_PI : theta + M_PI) : theta) / 2;
+  Rational t = to_dyadic_floor(std::tan(half));
+  const Rational step(1, 1048576);
+  if (!cw) t += step;
+  for (int i = 0; i < 4096; ++i) {
+    const Rational n = 1 + t * t;
+    Vec2 u{(1 - t * t) / n, 2 * t / n};
+    if (flip) u = {-u.x, -u.y};
+    if (cw ? cross(u, d) >= 0 : cross(d, u) >= 0) return u;
+    t += cw ? -step : step;  // tan(θ/2) is increasing: move the angle outward
+  }
+  throw Error("unit_direction_outward: no rational direction found (internal error)");
+}
+
+Rational sqrt_upper(const Rational& x) {
+  Rational q = to_dyadic_floor(std::sqrt(to_double(x))) + Rational(1, 1048576);
+  while (q * q < x) q += Rational(1, 1048576) + q / 1048576;
+  return q;
+}
+
+Rational sqrt_lower(const Rational& x) {
+  Rational q = to_dyadic_floor(std::sqrt(to_double(x)));
+  if (q < 0) q = 0;
+  while (q * q > x) q -= Rational(1, 1048576) + q / 1048576;
+  return q < 0 ? Rational(0) : q;
+}
+
+}  // namespace internal
+
+std::string to_string(EdgeFamily family) {
+  switch (family) {
+    case EdgeFamily::kNormal: return "normal";
+    case EdgeFamily::kMinus: return "n-mu*t";
+    case EdgeFamily::kPlus: return "n+mu*t";
+    case EdgeFamily::kWholeCone: return "friction cone";
+  }
+  return "?";
+}
+
+Vec2 push_direction(const Vec2& tangent, EdgeFamily family, const Rational& mu) {
+  const Vec2 n = rot90(tangent), t = rot90(n);
+  switch (family) {
+    case EdgeFamily::kNormal: return n;
+    case EdgeFamily::kPlus: return {n.x + mu * t.x, n.y + mu * t.y};
+    case EdgeFamily::kMinus:
+    case EdgeFamily::kWholeCone: return {n.x - mu * t.x, n.y - mu * t.y};
+  }
+  return n;
+}
+
+bool WrenchCone::contains(const VectorQ& w) const {
+  for (const auto& a : facets)
+    if (a.dot(w) < 0) return false;
+  return true;
+}
+
+SegmentBounds segment_bounds(const BezierPiece& segment) {
+  SegmentBounds b;
+  for (const auto& leg : segment.legs())
+    if (!is_zero(leg)) b.legs.push_back(leg);
+  if (b.legs.empty())
+    throw SceneError("boundary[" + std::to_string(segment.curve) + "]",
+                     "u in [" + to_string(segment.u0) + ", " + to_string(segment.u1) + "]",
+                     "is a degenerate segment: all its control points coincide");
+  std::vector<Kernel::Point_2> pts, hull;
+  for (const auto& p : segment.control) pts.emplace_back(p.x, p.y);
+  CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull));
+  for (const auto& p : hull) b.hull.push_back({p.x(), p.y()});
+  b.pointed = extremes(b.legs, b.t_start, b.t_end);
+  return b;
+}
+
+std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2& c, EdgeFamily family,
+                                              const Rational& mu, ConeMethod method) {
+  if (!b.pointed) return std::nullopt;
+  // Push directions are a fixed orientation-preserving linear image of the
+  // tangent, so the extreme legs map to the extreme directions.
+  Vec2 ds = push_direction(b.t_start, family, mu), de = push_direction(b.t_end, family, mu);
+  if (family == EdgeFamily::kWholeCone) de = push_direction(b.t_end, EdgeFamily::kPlus, mu);
+  const Rational span = cross(ds, de);
+  if (span < 0 || (span == 0 && dot(ds, de) < 0)) return std::nullopt;  // friction widened it to π
+  if (method == ConeMethod::kTight) return tight(b, c, ds, de);
+  return paper(b, c, ds, de);
+}
+
+std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const Vec2& c, EdgeFamily family,
+                                              const Rational& mu, ConeMethod method) {
+  return segment_wrench_cone(segment_bounds(segment), c, family, mu, method);
+}
+
+WrenchCone corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out) {
+  return finish({wrench(d_in, cross(r, d_in)), wrench(d_out, cross(r, d_out))});
+}
+
+}  // namespace fixel
