@@ -23,17 +23,13 @@ class RatioReporter : public benchmark::ConsoleReporter {
       units_[name] = benchmark::GetTimeUnitString(r.time_unit);
     }
   }
-  // Prints "name  median  ratio-to-baseline" for every benchmark whose name
-  // starts with `prefix` (the ratio base is the first such benchmark).
+  // Prints "name  median  ratio" for every benchmark; the ratio is to the
+  // first benchmark of the run (each program lists its baseline first).
   void PrintRatios(std::ostream& out) const {
-    out << "\nmedian times and ratios (base = first benchmark of each group):\n";
-    std::map<std::string, double> base;
-    for (const auto& name : order_) {
-      const std::string group = name.find('/') == std::string::npos ? "" : name.substr(name.find('/'));
-      if (!base.count(group)) base[group] = medians_.at(name);
+    out << "\nmedian times and ratios to the first benchmark:\n";
+    for (const auto& name : order_)
       out << "  " << name << "  " << medians_.at(name) << " " << units_.at(name) << "  x"
-          << medians_.at(name) / base[group] << "\n";
-    }
+          << medians_.at(name) / medians_.at(order_.front()) << "\n";
   }
 
  private:

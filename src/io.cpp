@@ -6,7 +6,9 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/curve.h"
 #include "fixel/off_io.h"
+#include "fixel/wrench_cone.h"
 
 namespace fixel {
 
@@ -105,7 +107,60 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
                       "(the box holds the apex and apex + " + to_string(length) + " * r for every ray r)",
                       "apex " + text(S.apex) + "; coordinates below are rounded to double for display"});
   if (!out) throw InputError("--off", path, "could not be written completely");
-  return {path};
+  std::vector<std::string> written = {path};
+  if (!scene.body.boundary) return written;
+
+  const Boundary& boundary = *scene.body.boundary;
+  const std::string obj_path = (std::filesystem::path(dir) / "boundary.obj").string();
+  std::ofstream obj(obj_path);
+  if (!obj) throw InputError("--off", obj_path, "cannot be written");
+  obj << "# fixel: boundary of scene \"" << scene.name << "\", 32 samples per Bezier piece (display only)\n";
+  obj.precision(17);
+  int count = 0;
+  for (const auto& piece : boundary.pieces) {
+    obj << "# curve " << piece.curve << ", u in [" << to_string(piece.u0) << ", " << to_string(piece.u1) << "]\n";
+    for (int k = 0; k < 32; ++k) {
+      const Vec2 p = piece.point(Rational(k, 32));
+      obj << "v " << to_double(p.x) << " " << to_double(p.y) << " 0\n";
+      ++count;
+    }
+  }
+  obj << "l";
+  for (int k = 1; k <= count; ++k) obj << " " << k;
+  obj << " 1\n";
+  written.push_back(obj_path);
+
+  std::vector<EdgeFamily> families = {EdgeFamily::kNormal};
+  if (scene.pusher_mu > 0) families = {EdgeFamily::kMinus, EdgeFamily::kPlus};
+  Box cube{VectorQ::Constant(3, Rational(-1)), VectorQ::Constant(3, Rational(1))};
+  for (std::size_t k = 0; k < boundary.pieces.size(); ++k) {
+    const BezierPiece& piece = boundary.pieces[k];
+    const SegmentBounds bounds = segment_bounds(piece);
+    for (auto family : families)
+      for (auto method : {ConeMethod::kTight, ConeMethod::kPaper}) {
+        const auto cone = segment_wrench_cone(bounds, scene.body.p_AoCm_A, family, scene.pusher_mu, method);
+        if (!cone) continue;
+        std::vector<Halfspace> hs;
+        for (const auto& a : cone->facets) hs.push_back({a, Rational(0)});
+        for (const auto& h : cube.halfspaces()) hs.push_back(h);
+        const std::string name = "segment_" + std::to_string(k) + "_" +
+                                 (family == EdgeFamily::kNormal ? "normal" : (family == EdgeFamily::kMinus ? "minus" : "plus")) +
+                                 "_" + (method == ConeMethod::kTight ? "tight" : "paper") + ".off";
+        const std::string cone_path = (std::filesystem::path(dir) / name).string();
+        std::ofstream cone_out(cone_path);
+        if (!cone_out) throw InputError("--off", cone_path, "cannot be written");
+        std::string gens;
+        for (const auto& g : cone->generators) gens += text(g) + " ";
+        write_polytope_off(cone_out, hs, 3,
+                           {"fixel: wrench cone of curve " + std::to_string(piece.curve) + ", u in [" + to_string(piece.u0) +
+                                ", " + to_string(piece.u1) + "], family " + to_string(family) + ", " +
+                                (method == ConeMethod::kTight ? "tight" : "paper") + " cone",
+                            "wrench space (fx, fy, moment about the centre of mass), clipped to the box " + cube.describe(),
+                            "generators " + gens});
+        written.push_back(cone_path);
+      }
+  }
+  return written;
 }
 
 std::string simulation_json(const Scene& scene, const Simulation& sim) {

@@ -23,8 +23,12 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const std::option
 /// The same content as a readable report.
 std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
 
-/// Writes `seating_set.off` (S clipped to seating_dump_box(S, length)) into
-/// directory `dir`, which is created if needed. Returns the written paths.
+/// Writes into directory `dir` (created if needed): `seating_set.off` (S
+/// clipped to seating_dump_box(S, length)); with a boundary, `boundary.obj`
+/// (the outline as a sampled polyline) and one
+/// `segment_<k>_<family>_<method>.off` per Bézier piece, edge family and cone
+/// method (the cone clipped to the box [−1, 1]³; pieces whose tangent cone
+/// is not pointed have no cone). Returns the written paths.
 /// Throws InputError if the directory cannot be created or written.
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length);
