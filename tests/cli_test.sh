@@ -27,6 +27,10 @@ expect 2 '--steps: 0 must be >= 1' -- "$fixel" simulate "$src/data/scenes/exampl
 expect 2 'has 2 components but the scene has dof 3' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1
 expect 2 '--impulse[0]: "1..2" is not an exact number' -- "$fixel" solutions "$src/data/scenes/example2.json" --impulse 1..2,0,0
 expect 2 '--impulse is required' -- "$fixel" solutions "$src/data/scenes/example2.json"
+expect 0 'segment_0_minus_tight.off' -- "$fixel" dump "$src/data/scenes/fig6.json" --off "$tmp/fig6"
+[ -s "$tmp/fig6/boundary.obj" ] || { echo "FAIL: no boundary.obj"; fail=1; }
+sed 's/\["-1", "1.5"\], \["-2", "0.5"\], \["-2", "-0.5"\], \["-1", "-1.5"\],/["-1", "-1.5"], ["-2", "-0.5"], ["-2", "0.5"], ["-1", "1.5"],/' "$src/data/scenes/fig6.json" > "$tmp/scrambled.json"
+expect 2 'body.boundary' -- "$fixel" seat "$tmp/scrambled.json"
 for cmd in seat dump verify simulate solutions; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
