@@ -32,9 +32,9 @@ bool in_planar_cone(const Vec2& d, const Vec2& a, const Vec2& b) {
   return cross(a, d) >= 0 && cross(d, b) >= 0;
 }
 
-// Extreme directions of a set of non-zero planar vectors; false if they do
-// not lie in a cone of angle < π.
-bool extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
+}  // namespace
+
+bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
   int s = -1, e = -1;
   for (std::size_t i = 0; i < v.size(); ++i) {
     bool all_ccw = true, all_cw = true;
@@ -56,6 +56,8 @@ bool extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
     if (!in_planar_cone(w, first, last) && !(c == 0 && cross(first, w) == 0 && dot(first, w) > 0)) return false;
   return true;
 }
+
+namespace {
 
 Rational to_dyadic_floor(double x) {
   const double scale = 1048576.0;  // 2^20
@@ -143,6 +145,21 @@ Rational sqrt_upper(const Rational& x) {
   return q;
 }
 
+Rational cos_half_angle_lower(const Vec2& a, const Vec2& b) {
+  // cos(Δ/2) >= c  ⇔  cos Δ >= k = 2c² − 1  ⇔  P >= k √Q with P = a·b, Q = |a|²|b|².
+  const Rational P = dot(a, b), Q = dot(a, a) * dot(b, b);
+  const double cos_delta = to_double(P) / std::sqrt(to_double(Q));
+  Rational c = to_dyadic_floor(std::sqrt(std::max(0.0, (1 + cos_delta) / 2)));
+  const Rational step(1, 1048576);
+  while (c > 0) {
+    const Rational k = 2 * c * c - 1;
+    const bool ok = k <= 0 ? (P >= 0 || P * P <= k * k * Q) : (P > 0 && P * P >= k * k * Q);
+    if (ok) return c;
+    c = c > step ? c - step - c / 1024 : Rational(0);
+  }
+  return Rational(0);
+}
+
 Rational sqrt_lower(const Rational& x) {
   Rational q = to_dyadic_floor(std::sqrt(to_double(x)));
   if (q < 0) q = 0;
@@ -191,7 +208,7 @@ SegmentBounds segment_bounds(const BezierPiece& segment) {
   for (const auto& p : segment.control) pts.emplace_back(p.x, p.y);
   CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull));
   for (const auto& p : hull) b.hull.push_back({p.x(), p.y()});
-  b.pointed = extremes(b.legs, b.t_start, b.t_end);
+  b.pointed = direction_extremes(b.legs, b.t_start, b.t_end);
   return b;
 }
 

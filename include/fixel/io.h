@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fixel/outcomes.h"
+#include "fixel/region.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
@@ -44,6 +45,16 @@ std::string simulation_text(const Scene& scene, const Simulation& sim);
 std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes);
 /// The same as a readable report.
 std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes);
+
+/// `fixel region --json` / `fixel sample --json`: {"scene", "method",
+/// "resolution", "pusher_mu", "intervals": [{"curve", "u0", "u1", "status",
+/// "half_line", "magnitudes": {"min", "min_inclusive", "max",
+/// "max_inclusive"} | null}], "counts", "stats": {...}}.
+std::string region_json(const Scene& scene, const Region& region, const std::string& method,
+                        const std::optional<Rational>& resolution, const Rational& pusher_mu);
+/// The same as a readable report.
+std::string region_text(const Scene& scene, const Region& region, const std::string& method,
+                        const std::optional<Rational>& resolution, const Rational& pusher_mu);
 
 /// `fixel verify` output: one line per check, then a summary line.
 std::string verification_text(const std::vector<VerificationCheck>& checks);

@@ -71,7 +71,13 @@ std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& bounds, const
 /// generators (d_in, r ⊗ d_in) and (d_out, r ⊗ d_out).
 WrenchCone corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out);
 
+/// Extreme directions of non-zero planar vectors: every v is in
+/// cone(first, last). False when they do not fit in a cone of angle < π.
+bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last);
+
 namespace internal {
+// A rational c in [0, cos(Δ/2)], Δ the angle between non-zero a and b (< π).
+Rational cos_half_angle_lower(const Vec2& a, const Vec2& b);
 // Rational points on the unit circle near the direction of d, on its
 // clockwise (cw = true) or counter-clockwise side: cross(u, d) >= 0 or
 // cross(d, u) >= 0.

@@ -7,6 +7,7 @@
 #include "fixel/io.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
+#include "fixel/svg.h"
 #include "fixel/verify.h"
 
 namespace {
@@ -46,6 +47,23 @@ int main(int argc, char** argv) {
   solutions->add_option("--impulse", impulse_text, "External impulse: px,py[,ptheta]")->required();
   solutions->add_flag("--json", json_out, "Print one JSON document on stdout");
 
+  std::string resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path;
+  auto* region = app.add_subcommand("region", "The pushing region by exact recursive subdivision (paper §5)");
+  region->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
+  region->add_option("--resolution", resolution_text, "Stop splitting at this curve-parameter width (default 1/1024)");
+  region->add_option("--cone", cone_text, "Segment cone: tight (default) or paper")
+      ->check(CLI::IsMember({"tight", "paper"}));
+  region->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
+  region->add_option("--svg", svg_path, "Also draw the region to this SVG file");
+  region->add_flag("--json", json_out, "Print one JSON document on stdout");
+
+  int points = 64;
+  auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
+  sample->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
+  sample->add_option("--points", points, "Points per curve (default 64)");
+  sample->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
+  sample->add_flag("--json", json_out, "Print one JSON document on stdout");
+
   auto* verify = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
   verify->add_flag("--json", json_out, "Print one JSON document on stdout");
 
@@ -80,6 +98,29 @@ int main(int argc, char** argv) {
       std::optional<fixel::VectorQ> impulse;
       if (!impulse_text.empty()) impulse = fixel::parse_impulse(impulse_text, scene.body.dof);
       std::cout << (json_out ? fixel::seat_json(scene, S, impulse) : fixel::seat_text(scene, S, impulse));
+      return 0;
+    }
+    if (*region || *sample) {
+      std::optional<fixel::Rational> mu;
+      if (!pusher_mu_text.empty()) mu = fixel::parse_rational(pusher_mu_text, "--pusher-mu");
+      const fixel::Rational used_mu = mu.value_or(scene.pusher_mu);
+      if (*sample) {
+        const auto r = fixel::sample_region(scene, S, points, mu);
+        std::cout << (json_out ? fixel::region_json(scene, r, "sample", std::nullopt, used_mu)
+                               : fixel::region_text(scene, r, "sample", std::nullopt, used_mu));
+        return 0;
+      }
+      fixel::RegionOptions options;
+      options.resolution = fixel::parse_rational(resolution_text, "--resolution");
+      options.cone = cone_text == "paper" ? fixel::ConeMethod::kPaper : fixel::ConeMethod::kTight;
+      options.pusher_mu = mu;
+      const auto r = fixel::compute_region(scene, S, options);
+      std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, used_mu)
+                             : fixel::region_text(scene, r, cone_text, options.resolution, used_mu));
+      if (!svg_path.empty()) {
+        fixel::write_region_svg(svg_path, scene, S, r, cone_text, options.resolution, used_mu);
+        if (!json_out) std::cout << "wrote " << svg_path << "\n";
+      }
       return 0;
     }
     if (*dump) {

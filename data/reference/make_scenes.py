@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""Writes the bundled region scenes of data/scenes/ (exact decimal strings).
+
+example2_rounded: the paper's Example 2 (same fixels, m = I = h = 1, centre
+of mass at the origin) with an outline: the rectangle [-1, 7/5] x [-1, 1]
+with its four corners rounded by cubic Beziers (radius 3/10), straight edges
+as polylines.
+"""
+import json
+from fractions import Fraction as F
+
+def s(q):
+    q = F(q)
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+def pt(x, y):
+    return [s(x), s(y)]
+
+def rounded_rectangle(x0, x1, y0, y1, r, k=F(11, 20)):
+    """Counter-clockwise: bottom edge, BR corner, right edge, TR, top, TL, left, BL."""
+    curves = []
+    def corner(c, a, b):
+        # cubic Bezier from c+a to c+b (a, b are radius vectors), k ~ 4(sqrt2-1)/3
+        p0 = (c[0] + a[0], c[1] + a[1]); p3 = (c[0] + b[0], c[1] + b[1])
+        p1 = (p0[0] + k * b[0], p0[1] + k * b[1]); p2 = (p3[0] + k * a[0], p3[1] + k * a[1])
+        curves.append({"type": "bspline", "degree": 3, "knots": ["0"] * 4 + ["1"] * 4,
+                       "control_points": [pt(*p0), pt(*p1), pt(*p2), pt(*p3)]})
+    def edge(a, b):
+        curves.append({"type": "polyline", "points": [pt(*a), pt(*b)]})
+    edge((x0 + r, y0), (x1 - r, y0))
+    corner((x1 - r, y0 + r), (0, -r), (r, 0))
+    edge((x1, y0 + r), (x1, y1 - r))
+    corner((x1 - r, y1 - r), (r, 0), (0, r))
+    edge((x1 - r, y1), (x0 + r, y1))
+    corner((x0 + r, y1 - r), (0, r), (-r, 0))
+    edge((x0, y1 - r), (x0, y0 + r))
+    corner((x0 + r, y0 + r), (-r, 0), (0, -r))
+    return curves
+
+example2 = {
+    "name": "example2_rounded", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "inertia": "1", "velocity": ["0", "0", "0"], "center_of_mass": ["0", "0"],
+             "boundary": rounded_rectangle(F(-1), F(7, 5), F(-1), F(1), F(3, 10))},
+    "fixels": [
+        {"point": ["-1", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10"},
+        {"point": ["0", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20"},
+        {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"}],
+    "pusher": {"mu": "0"}, "background_impulse": ["0", "0", "0"]}
+
+with open("data/scenes/example2_rounded.json", "w") as f:
+    json.dump(example2, f, indent=1)
+    f.write("\n")
+
+# blob: a closed uniform cubic B-spline (B-splines only). Fixels sit on the
+# curve: u = 3 is (P0 + 4 P1 + P2)/6 = (-32/15, 0) with tangent (P2 - P0)/2
+# = (0, -1), normal (1, 0); u = 11/2 is (P2 + 23 P3 + 23 P4 + P5)/48 =
+# (0, -53/30) with a horizontal tangent, normal (0, 1); the third is at
+# u = 6, (P3 + 4 P4 + P5)/6 = (5/6, -5/3), tangent (3, 4/5)/2, whose normal
+# (-4/15, 1)/|.| is approximated by the rational unit (-7/25, 24/25).
+ctrl = [(-2, 1), (F(-11, 5), 0), (-2, -1), (-1, F(-9, 5)), (1, F(-9, 5)), (2, -1), (F(11, 5), 0), (2, 1),
+        (1, F(9, 5)), (-1, F(9, 5))]
+ctrl = ctrl + ctrl[:3]
+blob = {
+    "name": "blob", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"],
+             "boundary": [{"type": "bspline", "degree": 3, "knots": [str(k) for k in range(len(ctrl) + 4)],
+                           "control_points": [pt(*c) for c in ctrl]}]},
+    "fixels": [
+        {"point": pt(F(-32, 15), 0), "normal": ["1", "0"], "mu": "1/5", "gap": "1/10"},
+        {"point": pt(0, F(-53, 30)), "normal": ["0", "1"], "mu": "1/5", "gap": "1/20"},
+        {"point": pt(F(5, 6), F(-5, 3)), "normal": ["-7/25", "24/25"], "mu": "1/5", "gap": "3/20"}],
+    "pusher": {"mu": "0"}}
+with open("data/scenes/blob.json", "w") as f:
+    json.dump(blob, f, indent=1)
+    f.write("\n")
+
+# polygon: a house-shaped pentagon; centre of mass and inertia come from the
+# outline (density 1).
+house = {
+    "name": "polygon", "time_step": "1",
+    "body": {"dof": 3, "velocity": ["0", "0", "0"],
+             "boundary": [{"type": "polyline",
+                           "points": [pt(-1, -1), pt(F(3, 2), -1), pt(F(3, 2), F(1, 2)), pt(F(1, 4), F(3, 2)),
+                                      pt(-1, F(1, 2)), pt(-1, -1)]}]},
+    "fixels": [
+        {"point": ["-1", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10"},
+        {"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20"},
+        {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20"}],
+    "pusher": {"mu": "0"}}
+with open("data/scenes/polygon.json", "w") as f:
+    json.dump(house, f, indent=1)
+    f.write("\n")

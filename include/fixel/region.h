@@ -1,0 +1,100 @@
+#pragma once
+/// @file
+/// The pushing region (paper §5; DESIGN §4): where on the boundary a single
+/// push seats the part, and how hard to push.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fixel/curve.h"
+#include "fixel/rational.h"
+#include "fixel/scene.h"
+#include "fixel/seating.h"
+#include "fixel/wrench_cone.h"
+
+namespace fixel {
+
+/// An interval of positive reals with optional infinite upper end.
+struct Magnitudes {
+  bool empty = true;
+  Rational lo;                  ///< Lower end (>= 0).
+  bool lo_closed = false;
+  std::optional<Rational> hi;   ///< Upper end; std::nullopt means +∞.
+  bool hi_closed = false;
+  /// Unbounded above (and not empty).
+  bool half_line() const { return !empty && !hi.has_value(); }
+  /// Exact membership.
+  bool contains(const Rational& x) const;
+  /// "[lo, hi)", "(0, inf)", "empty".
+  std::string describe() const;
+};
+
+/// Ray test: T(g) = {τ > 0 : b0 + τ g ∈ S}, exact from the H-form, one facet
+/// at a time. The ray hits S iff the result is not empty.
+Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g);
+
+/// Status of a stretch of boundary.
+enum class RegionStatus {
+  kIn,       ///< Every point is in the pushing region.
+  kOut,      ///< No point is in the pushing region.
+  kPartial,  ///< Undecided at the resolution.
+};
+std::string to_string(RegionStatus status);
+
+/// A stretch [u0, u1] of curve `curve` (u0 == u1 for a corner point).
+struct RegionInterval {
+  int curve = 0;
+  Rational u0, u1;
+  RegionStatus status = RegionStatus::kPartial;
+  /// IN only: every push ray is a half-line (any magnitude above the lower
+  /// end works, so the push magnitude need not be controlled).
+  bool half_line = false;
+  /// IN only: Euclidean magnitudes |p| (N·s) of the push impulse's force
+  /// that seat the part at every point of the interval and in every push
+  /// direction of the contact cone, as a certified rational inner bound;
+  /// empty when no common magnitude was found.
+  Magnitudes magnitudes;
+};
+
+/// Counters of a region computation.
+struct RegionStats {
+  long cone_tests = 0;     ///< Segment classifications (one per segment visited).
+  long lp_tests = 0;       ///< Exact LPs for the OUT test.
+  long point_tests = 0;    ///< Point tests (corners, samples).
+  int depth = 0;           ///< Deepest subdivision level (0 = whole Bézier piece).
+  Rational partial_length; ///< Total parameter length left PARTIAL.
+  double seconds = 0;      ///< Wall time (display only).
+};
+
+/// The region: intervals that tile every curve's parameter range, in order.
+struct Region {
+  std::vector<RegionInterval> intervals;
+  RegionStats stats;
+};
+
+/// Options of compute_region.
+struct RegionOptions {
+  Rational resolution = Rational(1, 1024);  ///< Stop splitting at this parameter width (curve units).
+  ConeMethod cone = ConeMethod::kTight;
+  std::optional<Rational> pusher_mu;        ///< Overrides the scene's pusher μ.
+  bool merge = true;                        ///< Merge adjacent intervals with equal status.
+};
+
+/// The pushing region by recursive subdivision (DESIGN §4). Throws
+/// InputError for a non-positive resolution or negative μ, and SceneError if
+/// the scene has no boundary.
+Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options);
+
+/// The point-sampling baseline: N uniformly spaced parameters per curve,
+/// u = u_begin + k (u_end − u_begin) / N, k = 0..N−1, each an interval
+/// [u, u] with status in or out (partial where the normal is undefined).
+Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve,
+                     std::optional<Rational> pusher_mu = std::nullopt);
+
+/// Exact point test at parameter u of curve k (a corner uses its whole fan of
+/// push directions). kPartial when the contact normal is undefined there.
+RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& pusher_mu,
+                          Magnitudes* magnitudes = nullptr);
+
+}  // namespace fixel

@@ -1,0 +1,21 @@
+#pragma once
+/// @file
+/// SVG pictures (display only: coordinates are doubles).
+
+#include <string>
+
+#include "fixel/region.h"
+#include "fixel/scene.h"
+#include "fixel/seating.h"
+
+namespace fixel {
+
+/// Draws the pushing region: the outline coloured by status, the fixels with
+/// normals and friction cones, the centre of mass and a legend (left panel),
+/// and the wrench directions on the unit sphere in a longitude/latitude
+/// projection (right panel; docs/cli.md). Throws InputError if the file
+/// cannot be written.
+void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
+                      const std::string& method, const Rational& resolution, const Rational& pusher_mu);
+
+}  // namespace fixel
