@@ -31,7 +31,17 @@ expect 0 'segment_0_minus_tight.off' -- "$fixel" dump "$src/data/scenes/fig6.jso
 [ -s "$tmp/fig6/boundary.obj" ] || { echo "FAIL: no boundary.obj"; fail=1; }
 sed 's/\["-1", "1.5"\], \["-2", "0.5"\], \["-2", "-0.5"\], \["-1", "-1.5"\],/["-1", "-1.5"], ["-2", "-0.5"], ["-2", "0.5"], ["-1", "1.5"],/' "$src/data/scenes/fig6.json" > "$tmp/scrambled.json"
 expect 2 'body.boundary' -- "$fixel" seat "$tmp/scrambled.json"
-for cmd in seat dump verify simulate solutions; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
+expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --json
+expect 0 'wrote' -- "$fixel" region "$src/data/scenes/polygon.json" --cone paper --svg "$tmp/p.svg"
+grep -q "<svg" "$tmp/p.svg" || { echo "FAIL: no svg"; fail=1; }
+expect 0 '"method": "sample"' -- "$fixel" sample "$src/data/scenes/blob.json" --points 16 --json
+expect 0 'pusher mu 7/10' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --pusher-mu 7/10
+expect 2 'body.boundary: is missing' -- "$fixel" region "$src/data/scenes/example2.json"
+expect 2 '--resolution: 0 must be > 0' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 0
+expect 2 '--pusher-mu: -1 must be >= 0' -- "$fixel" region "$src/data/scenes/blob.json" --pusher-mu -1
+expect 2 '--cone: diagonal not in {tight,paper}' -- "$fixel" region "$src/data/scenes/blob.json" --cone diagonal
+expect 2 '--points: 0 must be >= 1' -- "$fixel" sample "$src/data/scenes/blob.json" --points 0
+for cmd in seat dump verify simulate solutions region sample; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
 expect 2 '--impulse[1]: "x" is not an exact number' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,x,2

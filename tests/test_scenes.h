@@ -51,3 +51,55 @@ inline Scene random_scene(std::mt19937_64& rng, int dof = 3, int max_mu_tenths =
 }
 
 }  // namespace fixel::testing
+
+#include <cmath>
+#include <memory>
+
+#include "fixel/curve.h"
+
+namespace fixel::testing {
+
+// A random closed uniform cubic B-spline blob around the origin (radii in
+// [1, 2], counter-clockwise), with three fixels in the pattern of the
+// paper's Example 2 (one pushing +x on the left, two pushing +y below),
+// their normals slightly rotated by random rational rotations.
+inline Scene random_blob_scene(std::mt19937_64& rng, const Rational& pusher_mu = 0) {
+  const int n = 8 + static_cast<int>(rng() % 5);
+  std::vector<Vec2> ctrl;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * M_PI * k / n;
+    const Rational r = Rational(1) + random_rational(rng, 0, 1, 16);
+    ctrl.push_back({r * Rational(static_cast<long long>(std::lround(std::cos(angle) * 1000)), 1000),
+                    r * Rational(static_cast<long long>(std::lround(std::sin(angle) * 1000)), 1000)});
+  }
+  for (int k = 0; k < 3; ++k) ctrl.push_back(ctrl[k]);
+  Curve c;
+  c.type = Curve::Type::kBSpline;
+  c.degree = 3;
+  c.points = ctrl;
+  for (int k = 0; k < static_cast<int>(ctrl.size()) + 4; ++k) c.knots.push_back(Rational(k));
+  Scene s;
+  s.name = "random blob";
+  s.time_step = 1;
+  s.body.dof = 3;
+  s.body.boundary = std::make_shared<const Boundary>(make_boundary({c}));
+  s.body.mass = 1;
+  s.body.p_AoCm_A = {Rational(0), Rational(0)};
+  s.body.inertia = s.body.boundary->mass.polar_moment_about(s.body.p_AoCm_A) / s.body.boundary->mass.area;
+  s.body.velocity = VectorQ::Zero(3);
+  auto tilt = [&](Vec2 n) {  // rotate by a small rational rotation
+    const Rational t = random_rational(rng, -1, 1, 20) / 4, d = 1 + t * t;
+    const Rational co = (1 - t * t) / d, si = 2 * t / d;
+    return Vec2{co * n.x - si * n.y, si * n.x + co * n.y};
+  };
+  const Rational y1 = random_rational(rng, -1, 0, 8), x2 = random_rational(rng, -1, 0, 8),
+                 x3 = random_rational(rng, 0, 1, 8) + Rational(1, 4);
+  s.fixels = {Fixel{{Rational(-3, 2), y1}, tilt({1, 0}), random_rational(rng, 0, 1, 10) / 3, random_rational(rng, 1, 3, 20) / 10},
+              Fixel{{x2, Rational(-3, 2)}, tilt({0, 1}), random_rational(rng, 0, 1, 10) / 3, random_rational(rng, 1, 3, 20) / 10},
+              Fixel{{x3, Rational(-3, 2)}, tilt({0, 1}), random_rational(rng, 0, 1, 10) / 3, random_rational(rng, 1, 3, 20) / 10}};
+  s.pusher_mu = pusher_mu;
+  s.background_impulse = VectorQ::Zero(3);
+  return s;
+}
+
+}  // namespace fixel::testing

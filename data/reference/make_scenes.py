@@ -57,6 +57,8 @@ with open("data/scenes/example2_rounded.json", "w") as f:
 # (0, -53/30) with a horizontal tangent, normal (0, 1); the third is at
 # u = 6, (P3 + 4 P4 + P5)/6 = (5/6, -5/3), tangent (3, 4/5)/2, whose normal
 # (-4/15, 1)/|.| is approximated by the rational unit (-7/25, 24/25).
+# Fixel friction 1/10 as in Example 2 (with 1/5 the blob's region is a thin
+# stretch whose wrenches graze the boundary of the hit set).
 ctrl = [(-2, 1), (F(-11, 5), 0), (-2, -1), (-1, F(-9, 5)), (1, F(-9, 5)), (2, -1), (F(11, 5), 0), (2, 1),
         (1, F(9, 5)), (-1, F(9, 5))]
 ctrl = ctrl + ctrl[:3]
@@ -66,9 +68,9 @@ blob = {
              "boundary": [{"type": "bspline", "degree": 3, "knots": [str(k) for k in range(len(ctrl) + 4)],
                            "control_points": [pt(*c) for c in ctrl]}]},
     "fixels": [
-        {"point": pt(F(-32, 15), 0), "normal": ["1", "0"], "mu": "1/5", "gap": "1/10"},
-        {"point": pt(0, F(-53, 30)), "normal": ["0", "1"], "mu": "1/5", "gap": "1/20"},
-        {"point": pt(F(5, 6), F(-5, 3)), "normal": ["-7/25", "24/25"], "mu": "1/5", "gap": "3/20"}],
+        {"point": pt(F(-32, 15), 0), "normal": ["1", "0"], "mu": "1/10", "gap": "1/10"},
+        {"point": pt(0, F(-53, 30)), "normal": ["0", "1"], "mu": "1/10", "gap": "1/20"},
+        {"point": pt(F(5, 6), F(-5, 3)), "normal": ["-7/25", "24/25"], "mu": "1/10", "gap": "3/20"}],
     "pusher": {"mu": "0"}}
 with open("data/scenes/blob.json", "w") as f:
     json.dump(blob, f, indent=1)

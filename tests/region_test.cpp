@@ -1,0 +1,335 @@
+#include "fixel/region.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "fixel/error.h"
+#include "fixel/lcp.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+Scene scene_file(const std::string& name) {
+  return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+}
+
+VectorQ v3(Rational a, Rational b, Rational c) {
+  VectorQ v(3);
+  v << a, b, c;
+  return v;
+}
+
+// Status of the interval holding (curve, u); corner points (zero-length
+// intervals) take precedence over the intervals they bound.
+const RegionInterval* interval_at(const Region& region, int curve, const Rational& u) {
+  const RegionInterval* found = nullptr;
+  for (const auto& r : region.intervals) {
+    if (r.curve != curve || u < r.u0 || u > r.u1) continue;
+    if (r.u0 == r.u1) return &r;
+    if (!found) found = &r;
+  }
+  return found;
+}
+
+TEST(RayMagnitudes, AgreeWithDirectMembershipAlongRandomRays) {
+  std::mt19937_64 rng(71);
+  const Scene scene = scene_file("example2");
+  const SeatingSet S = seating_set(scene);
+  int hits = 0, misses = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const VectorQ g = v3(testing::random_rational(rng, -2, 1, 5), testing::random_rational(rng, -2, 1, 5),
+                         testing::random_rational(rng, -2, 1, 5));
+    const VectorQ b0 = trial % 3 == 0 ? VectorQ(S.apex + v3(-1, -1, -1) / 2) : VectorQ(VectorQ::Zero(3));
+    const Magnitudes T = ray_magnitudes(S, b0, g);
+    (T.empty ? misses : hits)++;
+    for (int k = 1; k <= 40; ++k) {
+      const Rational tau(k, 8);
+      EXPECT_EQ(T.contains(tau), S.contains(VectorQ(b0 + tau * g))) << trial << " tau " << to_string(tau);
+    }
+    if (!T.empty) {  // the ends are exact
+      if (T.lo > 0) {
+        EXPECT_EQ(S.contains(VectorQ(b0 + T.lo * g)), T.lo_closed);
+      }
+      if (T.hi) {
+        EXPECT_TRUE(S.contains(VectorQ(b0 + *T.hi * g)));
+      }
+    }
+  }
+  EXPECT_GT(hits, 30);
+  EXPECT_GT(misses, 30);
+}
+
+TEST(RayMagnitudes, PaperImpulseDirectionIsAHalfLine) {
+  const Scene scene = scene_file("example2");
+  const Magnitudes T = ray_magnitudes(seating_set(scene), VectorQ::Zero(3), v3(-1, -1, -1));
+  EXPECT_TRUE(T.contains(1));
+  EXPECT_TRUE(T.half_line());
+}
+
+// Soundness: on random blobs, for frictionless and frictional pushers,
+// every exact rational sample inside an IN interval passes the exact point
+// test and every one inside an OUT interval fails it.
+TEST(Region, IsSoundOnRandomBlobsByExactSampling) {
+  std::mt19937_64 rng(73);
+  long samples = 0;
+  int scenes_with_in = 0, scenes_with_out = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    const Rational mu = trial % 2 == 0 ? Rational(0) : Rational(trial % 4 == 1 ? 1 : 3, 10);
+    Scene scene = testing::random_blob_scene(rng, mu);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    RegionOptions opt;
+    opt.resolution = Rational(1, 64);
+    const Region region = compute_region(scene, S, opt);
+    bool any_in = false, any_out = false;
+    for (const auto& r : region.intervals) {
+      if (r.status == RegionStatus::kPartial) continue;
+      any_in = any_in || r.status == RegionStatus::kIn;
+      any_out = any_out || r.status == RegionStatus::kOut;
+      const int k_max = r.u0 == r.u1 ? 0 : 400;
+      for (int k = 0; k <= k_max; ++k) {
+        const Rational u = k_max == 0 ? r.u0 : r.u0 + (r.u1 - r.u0) * Rational(k, k_max);
+        const RegionInterval* owner = interval_at(region, r.curve, u);
+        if (owner != &r) continue;  // a corner decides its own point
+        Magnitudes m;
+        const RegionStatus p = point_status(scene, S, r.curve, u, mu, &m);
+        ASSERT_EQ(p, r.status) << "trial " << trial << " u " << to_string(u);
+        if (r.status == RegionStatus::kIn && !r.magnitudes.empty) {
+          // A certified common magnitude works at this point too.
+          EXPECT_FALSE(m.empty);
+        }
+        ++samples;
+      }
+    }
+    scenes_with_in += any_in;
+    scenes_with_out += any_out;
+  }
+  EXPECT_GE(samples, 10000);
+  EXPECT_GE(scenes_with_in, 4);
+  EXPECT_GE(scenes_with_out, 8);
+}
+
+TEST(Region, CertifiedMagnitudesSeatEveryPushDirection) {
+  // At sample points of IN intervals with a common magnitude range, the
+  // lower end (and a larger value) pushed along the exact normal lands in S.
+  for (const char* name : {"example2_rounded", "polygon", "blob"}) {
+    const Scene scene = scene_file(name);
+    const SeatingSet S = seating_set(scene);
+    RegionOptions opt;
+    opt.resolution = Rational(1, 256);
+    const Region region = compute_region(scene, S, opt);
+    int checked = 0;
+    for (const auto& r : region.intervals) {
+      if (r.status != RegionStatus::kIn || r.magnitudes.empty || r.u0 == r.u1) continue;
+      for (const auto& piece : scene.body.boundary->pieces) {
+        if (piece.curve != r.curve || piece.u1 <= r.u0 || piece.u0 >= r.u1) continue;
+        for (int k = 0; k <= 8; ++k) {
+          const Rational u = std::max(piece.u0, r.u0) + (std::min(piece.u1, r.u1) - std::max(piece.u0, r.u0)) * Rational(k, 8);
+          const Vec2 T = piece.derivative(piece.local(u)), p = piece.point(piece.local(u));
+          const Vec2 n{-T.y, T.x};
+          const Rational L = internal::sqrt_upper(n.x * n.x + n.y * n.y);
+          const Rational lo = r.magnitudes.lo * Rational(1001, 1000) + Rational(1, 1000000);
+          std::vector<Rational> ms = {lo, r.magnitudes.lo * 2 + 1};
+          if (r.magnitudes.hi) ms = {lo, (r.magnitudes.lo + *r.magnitudes.hi) / 2};
+          for (const Rational& m : ms) {
+            if (!r.magnitudes.contains(m)) continue;
+            const VectorQ w = contact_wrench({p.x - scene.body.p_AoCm_A.x, p.y - scene.body.p_AoCm_A.y}, n, 3);
+            const Magnitudes Tn = ray_magnitudes(S, scene.background_impulse, w);
+            // The impulse of magnitude m along n is τ n with τ = m / |n|,
+            // bracketed by m / L and m / L' (L' <= |n| <= L). T is an
+            // interval, so both ends inside puts τ inside.
+            EXPECT_TRUE(Tn.contains(m / L) && Tn.contains(m / internal::sqrt_lower(n.x * n.x + n.y * n.y)))
+                << name << " u " << to_string(u) << " m " << to_string(m) << " T " << Tn.describe();
+            ++checked;
+          }
+        }
+      }
+    }
+    EXPECT_GT(checked, 0) << name;
+  }
+}
+
+TEST(Region, HalvingTheResolutionNeverTurnsADecidedPointPartial) {
+  std::mt19937_64 rng(79);
+  for (int trial = 0; trial < 4; ++trial) {
+    Scene scene = testing::random_blob_scene(rng);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    RegionOptions coarse, fine;
+    coarse.resolution = Rational(1, 32);
+    fine.resolution = Rational(1, 64);
+    const Region a = compute_region(scene, S, coarse), b = compute_region(scene, S, fine);
+    for (const auto& r : a.intervals) {
+      if (r.status == RegionStatus::kPartial) continue;
+      for (int k = 0; k <= 16; ++k) {
+        const Rational u = r.u0 + (r.u1 - r.u0) * Rational(k, 16);
+        if (interval_at(a, r.curve, u) != &r) continue;
+        EXPECT_EQ(interval_at(b, r.curve, u)->status, r.status);
+      }
+    }
+    EXPECT_LE(b.stats.partial_length, a.stats.partial_length);
+  }
+}
+
+TEST(Region, PartialLengthShrinksWithTheResolution) {
+  const Scene scene = scene_file("blob");
+  const SeatingSet S = seating_set(scene);
+  // Asymptotically each transition leaves O(R) partial; from R = 1/1024 on
+  // the bundled blob shows it (coarser R still resolve the region itself).
+  Rational previous = -1;
+  for (int k = 10; k <= 16; k += 2) {
+    RegionOptions opt;
+    opt.resolution = Rational(1, 1 << k);
+    const Rational partial = compute_region(scene, S, opt).stats.partial_length;
+    // Quartering R at least halves the partial length, and does not remove
+    // it faster than R itself shrinks (roughly proportional).
+    if (previous >= 0) {
+      EXPECT_LE(partial, previous / 2) << "R = 1/" << (1 << k);
+      EXPECT_GE(partial, previous / 8) << "R = 1/" << (1 << k);
+    }
+    EXPECT_GT(partial, 0);
+    previous = partial;
+  }
+}
+
+TEST(Region, BundledExamplesAtResolutionRangeOver4096LeaveLittlePartial) {
+  for (const char* name : {"example2_rounded", "blob", "polygon"}) {
+    const Scene scene = scene_file(name);
+    Rational total = 0;
+    for (const auto& c : scene.body.boundary->curves) total += c.u_end() - c.u_begin();
+    // Per-curve ranges differ; use the smallest so every curve gets at least
+    // 1/4096 of its range.
+    Rational smallest = total;
+    for (const auto& c : scene.body.boundary->curves) smallest = std::min(smallest, Rational(c.u_end() - c.u_begin()));
+    RegionOptions opt;
+    opt.resolution = smallest / 4096;
+    const Region region = compute_region(scene, seating_set(scene), opt);
+    EXPECT_LE(region.stats.partial_length * 200, total) << name;
+  }
+}
+
+TEST(Region, IntervalsTileEveryCurveExactly) {
+  for (const char* name : {"example2_rounded", "blob", "polygon", "fig6"}) {
+    const Scene scene = scene_file(name);
+    const Region region = compute_region(scene, seating_set(scene), RegionOptions{});
+    for (std::size_t c = 0; c < scene.body.boundary->curves.size(); ++c) {
+      Rational at = scene.body.boundary->curves[c].u_begin();
+      for (const auto& r : region.intervals) {
+        if (r.curve != static_cast<int>(c)) continue;
+        EXPECT_EQ(r.u0, at) << name;
+        EXPECT_LE(r.u0, r.u1);
+        at = r.u1;
+      }
+      EXPECT_EQ(at, scene.body.boundary->curves[c].u_end()) << name;
+    }
+  }
+}
+
+TEST(Region, SamplingBaselineAgreesWithEveryDecidedInterval) {
+  for (const char* name : {"example2_rounded", "blob", "polygon"}) {
+    const Scene scene = scene_file(name);
+    const SeatingSet S = seating_set(scene);
+    const Region region = compute_region(scene, S, RegionOptions{});
+    const Region samples = sample_region(scene, S, 200);
+    int compared = 0;
+    for (const auto& s : samples.intervals) {
+      const RegionInterval* r = interval_at(region, s.curve, s.u0);
+      ASSERT_NE(r, nullptr);
+      if (r->status == RegionStatus::kPartial) continue;
+      EXPECT_EQ(s.status, r->status) << name << " u " << to_string(s.u0);
+      ++compared;
+    }
+    EXPECT_GT(compared, 150) << name;
+  }
+}
+
+TEST(Region, EmptyRegion) {
+  const Scene scene = scene_file("fig6");
+  const Region region = compute_region(scene, seating_set(scene), RegionOptions{});
+  for (const auto& r : region.intervals) EXPECT_EQ(r.status, RegionStatus::kOut);
+}
+
+TEST(Region, WholeBoundaryWhenTheBackgroundImpulseIsInsideS) {
+  Scene scene = scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  // b0 = apex − Σ g_i is interior to S: every ray starts inside.
+  scene.background_impulse = S.apex;
+  for (const auto& g : S.generators) scene.background_impulse -= g;
+  const Region region = compute_region(scene, S, RegionOptions{});
+  ASSERT_EQ(region.intervals.size(), scene.body.boundary->curves.size());
+  for (const auto& r : region.intervals) {
+    EXPECT_EQ(r.status, RegionStatus::kIn);
+    EXPECT_FALSE(r.magnitudes.empty);
+    EXPECT_EQ(r.magnitudes.lo, 0);
+    EXPECT_FALSE(r.magnitudes.lo_closed);
+  }
+}
+
+TEST(Region, NonZeroBackgroundImpulseShiftsTheRegion) {
+  Scene scene = scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  const Region base = compute_region(scene, S, RegionOptions{});
+  scene.background_impulse = v3(0, Rational(-1, 2), 0);  // e.g. gravity · h
+  const Region shifted = compute_region(scene, S, RegionOptions{});
+  Rational in_base = 0, in_shifted = 0;
+  for (const auto& r : base.intervals) in_base += r.status == RegionStatus::kIn ? Rational(r.u1 - r.u0) : Rational(0);
+  for (const auto& r : shifted.intervals) in_shifted += r.status == RegionStatus::kIn ? Rational(r.u1 - r.u0) : Rational(0);
+  EXPECT_NE(in_base, in_shifted);
+  // Sound under b0 too.
+  for (const auto& r : shifted.intervals)
+    if (r.status != RegionStatus::kPartial && r.u0 < r.u1) {
+      const Rational mid = (r.u0 + r.u1) / 2;
+      EXPECT_EQ(point_status(scene, S, r.curve, mid, 0), r.status);
+    }
+}
+
+TEST(Region, FrictionalPusherWithOneEdgeInAndOneOutIsOutNotPartial) {
+  // On the right edge of the rounded rectangle with μ_p = 7/10 the n + μt
+  // rays all hit S and the n − μt rays all miss. One classification must
+  // settle the whole edge as OUT (the paper's single friction-cone bound
+  // would leave it PARTIAL).
+  const Scene scene = scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.pusher_mu = Rational(7, 10);
+  opt.resolution = 2;  // no splitting at all
+  const Region region = compute_region(scene, S, opt);
+  const RegionInterval* edge = interval_at(region, 2, Rational(1, 2));
+  ASSERT_NE(edge, nullptr);
+  EXPECT_EQ(edge->status, RegionStatus::kOut);
+  // The single-cone bound of the whole friction cone is neither IN nor OUT.
+  const BezierPiece& piece = scene.body.boundary->pieces[2];
+  const auto whole = segment_wrench_cone(piece, scene.body.p_AoCm_A, EdgeFamily::kWholeCone, Rational(7, 10), ConeMethod::kTight);
+  ASSERT_TRUE(whole);
+  int hit = 0;
+  for (const auto& g : whole->generators) hit += ray_magnitudes(S, scene.background_impulse, g).empty ? 0 : 1;
+  EXPECT_GT(hit, 0);
+  EXPECT_LT(hit, static_cast<int>(whole->generators.size()));
+}
+
+TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
+  const Scene scene = scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.resolution = 0;
+  EXPECT_THROW(compute_region(scene, S, opt), InputError);
+  opt.resolution = 1;
+  opt.pusher_mu = Rational(-1);
+  EXPECT_THROW(compute_region(scene, S, opt), InputError);
+  const Scene plain = scene_file("example2");
+  EXPECT_THROW(compute_region(plain, seating_set(plain), RegionOptions{}), SceneError);
+  EXPECT_THROW(sample_region(scene, S, 0), InputError);
+}
+
+}  // namespace
+}  // namespace fixel
