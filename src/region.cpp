@@ -127,10 +127,12 @@ bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens) {
 RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   ++ctx.stats.cone_tests;
   RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}};
-  const SegmentBounds bounds = segment_bounds(seg);
+  // The tight cone needs no hull (min/max over all control points is the
+  // same); the paper cone's ⊥-angle test wants the polygon's vertices.
+  const SegmentBounds bounds = segment_bounds(seg, ctx.method == ConeMethod::kPaper);
   std::vector<WrenchCone> cones;
   for (auto f : families(ctx.mu)) {
-    auto cone = segment_wrench_cone(bounds, ctx.scene.body.p_AoCm_A, f, ctx.mu, ctx.method);
+    auto cone = segment_wrench_cone(bounds, ctx.scene.body.p_AoCm_A, f, ctx.mu, ctx.method, /*with_facets=*/false);
     if (!cone) return out;  // tangent or friction cone reaches π: split
     cones.push_back(std::move(*cone));
   }

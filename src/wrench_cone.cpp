@@ -64,14 +64,15 @@ Rational to_dyadic_floor(double x) {
   return Rational(static_cast<long long>(std::floor(x * scale)), 1048576);
 }
 
-WrenchCone finish(std::vector<VectorQ> gens) {
+// Facets are optional: region classification only needs the generators.
+WrenchCone finish(std::vector<VectorQ> gens, bool with_facets) {
   WrenchCone cone;
   cone.generators = std::move(gens);
-  cone.facets = cone_facet_normals(cone.generators, 3);
+  if (with_facets) cone.facets = cone_facet_normals(cone.generators, 3);
   return cone;
 }
 
-WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de) {
+WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de, bool with_facets) {
   std::vector<VectorQ> gens;
   for (const Vec2& d : {ds, de}) {
     Rational lo = 0, hi = 0;
@@ -83,10 +84,11 @@ WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Ve
     gens.push_back(wrench(d, lo));
     gens.push_back(wrench(d, hi));
   }
-  return finish(std::move(gens));
+  return finish(std::move(gens), with_facets);
 }
 
-std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de) {
+std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de,
+                                 bool with_facets) {
   const Vec2 us = internal::unit_direction_outward(ds, true), ue = internal::unit_direction_outward(de, false);
   const Rational span = cross(us, ue);
   if (span < 0 || (span == 0 && dot(us, ue) < 0)) return std::nullopt;  // rounding reached π
@@ -113,7 +115,7 @@ std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec
   const Rational shrink = internal::sqrt_lower((1 + dot(us, ue)) / 2);
   if (xmin > 0) xmin *= shrink;
   if (xmax < 0) xmax *= shrink;
-  return finish({wrench(us, xmin), wrench(us, xmax), wrench(ue, xmin), wrench(ue, xmax)});
+  return finish({wrench(us, xmin), wrench(us, xmax), wrench(ue, xmin), wrench(ue, xmax)}, with_facets);
 }
 
 }  // namespace
@@ -196,7 +198,7 @@ bool WrenchCone::contains(const VectorQ& w) const {
   return true;
 }
 
-SegmentBounds segment_bounds(const BezierPiece& segment) {
+SegmentBounds segment_bounds(const BezierPiece& segment, bool with_hull) {
   SegmentBounds b;
   for (const auto& leg : segment.legs())
     if (!is_zero(leg)) b.legs.push_back(leg);
@@ -204,16 +206,20 @@ SegmentBounds segment_bounds(const BezierPiece& segment) {
     throw SceneError("boundary[" + std::to_string(segment.curve) + "]",
                      "u in [" + to_string(segment.u0) + ", " + to_string(segment.u1) + "]",
                      "is a degenerate segment: all its control points coincide");
-  std::vector<Kernel::Point_2> pts, hull;
-  for (const auto& p : segment.control) pts.emplace_back(p.x, p.y);
-  CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull));
-  for (const auto& p : hull) b.hull.push_back({p.x(), p.y()});
+  if (with_hull) {
+    std::vector<Kernel::Point_2> pts, hull;
+    for (const auto& p : segment.control) pts.emplace_back(p.x, p.y);
+    CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull));
+    for (const auto& p : hull) b.hull.push_back({p.x(), p.y()});
+  } else {
+    b.hull = segment.control;
+  }
   b.pointed = direction_extremes(b.legs, b.t_start, b.t_end);
   return b;
 }
 
 std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2& c, EdgeFamily family,
-                                              const Rational& mu, ConeMethod method) {
+                                              const Rational& mu, ConeMethod method, bool with_facets) {
   if (!b.pointed) return std::nullopt;
   // Push directions are a fixed orientation-preserving linear image of the
   // tangent, so the extreme legs map to the extreme directions.
@@ -221,8 +227,8 @@ std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2
   if (family == EdgeFamily::kWholeCone) de = push_direction(b.t_end, EdgeFamily::kPlus, mu);
   const Rational span = cross(ds, de);
   if (span < 0 || (span == 0 && dot(ds, de) < 0)) return std::nullopt;  // friction widened it to π
-  if (method == ConeMethod::kTight) return tight(b, c, ds, de);
-  return paper(b, c, ds, de);
+  if (method == ConeMethod::kTight) return tight(b, c, ds, de, with_facets);
+  return paper(b, c, ds, de, with_facets);
 }
 
 std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const Vec2& c, EdgeFamily family,
@@ -231,7 +237,7 @@ std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const 
 }
 
 WrenchCone corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out) {
-  return finish({wrench(d_in, cross(r, d_in)), wrench(d_out, cross(r, d_out))});
+  return finish({wrench(d_in, cross(r, d_in)), wrench(d_out, cross(r, d_out))}, true);
 }
 
 }  // namespace fixel

@@ -92,3 +92,21 @@ house = {
 with open("data/scenes/polygon.json", "w") as f:
     json.dump(house, f, indent=1)
     f.write("\n")
+
+# blob32: a 32-piece closed uniform cubic B-spline (the benchmark's goal
+# part), the blob's control polygon refined to 32 points on the same ellipse-
+# like shape, with the blob's fixels (on the control hull's scale).
+import math
+n = 32
+ctrl32 = []
+for k in range(n):
+    a = 2 * math.pi * k / n + math.pi  # start on the left, counter-clockwise
+    ctrl32.append((F(round(2.2 * math.cos(a) * 1000), 1000), F(round(1.9 * math.sin(a) * 1000), 1000)))
+ctrl32 = ctrl32 + ctrl32[:3]
+blob32 = json.loads(json.dumps(blob))
+blob32["name"] = "blob32"
+blob32["body"]["boundary"] = [{"type": "bspline", "degree": 3, "knots": [str(k) for k in range(len(ctrl32) + 4)],
+                               "control_points": [pt(*c) for c in ctrl32]}]
+with open("data/scenes/blob32.json", "w") as f:
+    json.dump(blob32, f, indent=1)
+    f.write("\n")

@@ -38,7 +38,9 @@ struct SegmentBounds {
 };
 
 /// Bounds of a Bézier segment. Throws SceneError if every leg is zero.
-SegmentBounds segment_bounds(const BezierPiece& segment);
+/// Without `with_hull`, `hull` holds all control points instead (the tight
+/// cone's min/max over them equals that over the hull's vertices).
+SegmentBounds segment_bounds(const BezierPiece& segment, bool with_hull = true);
 
 /// Which conservative cone to build.
 enum class ConeMethod {
@@ -62,9 +64,10 @@ struct WrenchCone {
 std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const Vec2& p_AoCm_A, EdgeFamily family,
                                               const Rational& mu, ConeMethod method);
 
-/// Same from precomputed bounds (both methods share them).
+/// Same from precomputed bounds (both methods share them). Without
+/// `with_facets` only the generators are filled (facets stay empty).
 std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& bounds, const Vec2& p_AoCm_A, EdgeFamily family,
-                                              const Rational& mu, ConeMethod method);
+                                              const Rational& mu, ConeMethod method, bool with_facets = true);
 
 /// The exact wrench cone of a corner point r (lever arm) whose push
 /// directions fan from d_in to d_out (the angle between them < π):
