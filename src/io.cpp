@@ -1,5 +1,6 @@
 #include "fixel/io.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -59,9 +60,11 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const std::option
   if (impulse) {
     doc["impulse"] = exact(*impulse);
     doc["contains"] = S.contains(*impulse);
-    const SeatingSystem sys = seating_system(scene, S);
-    doc["y"] = exact(sys.y(*impulse));
-    doc["y_names"] = sys.y_names;
+    if (std::find(S.sliding.begin(), S.sliding.end(), 0) == S.sliding.end()) {  // eq. 27 needs sliding
+      const SeatingSystem sys = seating_system(scene, S);
+      doc["y"] = exact(sys.y(*impulse));
+      doc["y_names"] = sys.y_names;
+    }
   }
   return doc.dump(2) + "\n";
 }
@@ -72,8 +75,10 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const std::option
       << " fixels)\n";
   out << "  seating velocity nu+ = " << text(S.nu_plus) << "\n";
   for (int i = 0; i < scene.num_contacts(); ++i)
-    out << "  fixel " << i << ": v_t = " << to_string(S.tangential_velocity[i]) << ", slides "
-        << (S.sliding[i] > 0 ? "+t" : "-t") << ", generator g = " << text(S.generators[i]) << "\n";
+    out << "  fixel " << i << ": v_t = " << to_string(S.tangential_velocity[i])
+        << (S.sliding[i] > 0 ? ", slides +t" : S.sliding[i] < 0 ? ", slides -t" : ", sticks") << "\n";
+  for (std::size_t k = 0; k < S.generators.size(); ++k)
+    out << "  generator g" << k << " (fixel " << S.generator_fixel[k] << ") = " << text(S.generators[k]) << "\n";
   out << "  S = apex - cone(g):  apex = " << text(S.apex) << "\n";
   out << "  facets (S is where all hold):\n";
   for (const auto& h : S.halfspaces) out << "    " << halfspace_text(h) << "\n";
@@ -81,6 +86,7 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const std::option
     const bool in = S.contains(*impulse);
     out << "Impulse p = " << text(*impulse) << " is " << (in ? "IN" : "NOT in") << " S";
     out << (in ? ": it is consistent with seating in one step.\n" : ".\n");
+    if (std::find(S.sliding.begin(), S.sliding.end(), 0) != S.sliding.end()) return out.str();  // eq. 27 needs sliding
     const SeatingSystem sys = seating_system(scene, S);
     const VectorQ y = sys.y(*impulse);
     out << "  eq. (27) y = K^-1 (P p + a):\n";

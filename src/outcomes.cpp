@@ -148,6 +148,30 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
       if (lp.status == internal::LpStatus::kInfeasible) continue;
       x = lp.x;
       isolated = false;
+      // A family may hold seating and non-seating outcomes: for each open
+      // contact, maximise its gap W_n,iᵀν⁺ (exact LP) and report a point
+      // where it is positive, so that no non-seating outcome is missed.
+      for (int i = 0; i < nc; ++i) {
+        if (modes[i] != ContactMode::kOpen) continue;
+        VectorQ objective = VectorQ::Zero(n);
+        objective.head(scene.body.dof) = -W.Wn.col(i);  // minimise −gap
+        const internal::LpResult best = internal::solve_lp(n, rows, objective);
+        VectorQ y = best.x;
+        if (best.status == internal::LpStatus::kUnbounded) {
+          // Unbounded gap: add gap_i >= 1 (beyond the closing value) to get a point.
+          auto bounded = rows;
+          VectorQ g = VectorQ::Zero(n);
+          g.head(scene.body.dof) = W.Wn.col(i);
+          bounded.push_back({g, internal::Relation::kGreaterEqual, Rational(1) - scene.fixels[i].gap / scene.time_step});
+          y = internal::solve_lp(n, bounded).x;
+        }
+        if (y.size() == 0) continue;
+        Outcome o = make_outcome(scene, W, modes, y, false);
+        if (o.seated) continue;
+        bool seen = false;
+        for (const auto& prev : out) seen = seen || same_outcome(prev, o);
+        if (!seen) out.push_back(std::move(o));
+      }
     }
     Outcome o = make_outcome(scene, W, modes, x, isolated);
     bool seen = false;

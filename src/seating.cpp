@@ -31,13 +31,23 @@ SeatingSet seating_set(const Scene& scene) {
 
   for (int i = 0; i < nc; ++i) {
     const int sigma = sign(S.tangential_velocity[i]);
-    if (sigma == 0)
-      throw UnsupportedError("fixels[" + std::to_string(i) + "]", "v_t = 0",
-                             "sticks at the seating velocity; sticking contacts are not supported yet");
     S.sliding.push_back(sigma);
+    if (sigma == 0) {
+      // Sticking (DESIGN §3): the friction impulse may lie anywhere in the
+      // cone, so both edges W_n ± μ W_t generate (one when μ = 0).
+      for (int s : {1, -1}) {
+        const VectorQ g = W.Wn.col(i) + Rational(s) * scene.fixels[i].mu * W.Wt.col(i);
+        if (s == -1 && scene.fixels[i].mu == 0) break;
+        S.generators.push_back(g);
+        S.rays.push_back(-g);
+        S.generator_fixel.push_back(i);
+      }
+      continue;
+    }
     const VectorQ g = W.Wn.col(i) - Rational(sigma) * scene.fixels[i].mu * W.Wt.col(i);
     S.generators.push_back(g);
     S.rays.push_back(-g);
+    S.generator_fixel.push_back(i);
   }
   for (const VectorQ& n : cone_facet_normals(S.rays, dof)) S.halfspaces.push_back({n, n.dot(S.apex)});
   return S;
@@ -45,6 +55,10 @@ SeatingSet seating_set(const Scene& scene) {
 
 SeatingSystem seating_system(const Scene& scene, const SeatingSet& S) {
   const int nc = scene.num_contacts(), n = 4 * nc;
+  for (int i = 0; i < nc; ++i)
+    if (S.sliding[i] == 0)
+      throw UnsupportedError("fixels[" + std::to_string(i) + "]", "v_t = 0",
+                             "sticks: eq. (21)-(27) assume every contact slides (use the H-form of S instead)");
   const TimeSteppingLcp lcp = build_lcp(scene);
   const std::vector<std::string> w_names = lcp.w_names(), z_names = lcp.z_names();
 

@@ -69,19 +69,31 @@ TEST(SeatingSystem, Example2ReproducesThePrintedEq27TableExactly) {
   EXPECT_EQ(MatrixQ(sys.K * sys.K_inv), MatrixQ::Identity(12, 12));
 }
 
-TEST(SeatingSet, StickingContactIsReportedAsUnsupported) {
-  // With gaps (1/10, 0, 0) the seating velocity is ν⁺ = (−1/10, 0, 0), along
-  // fixel 0's normal, so its tangential velocity W_t,0ᵀ ν⁺ = (0, 1, −1)·ν⁺ is 0.
+// With gaps (1/10, 0, 0) the seating velocity is ν⁺ = (−1/10, 0, 0), along
+// fixel 0's normal, so its tangential velocity W_t,0ᵀ ν⁺ = (0, 1, −1)·ν⁺ is 0.
+Scene sticking_scene() {
   std::string text = paper::kExample2Scene;
   text.replace(text.find(R"("gap": "1/20")"), 13, R"("gap": "0")");
   text.replace(text.find(R"("gap": "1/5")"), 12, R"("gap": "0")");
-  const Scene scene = parse_scene(text);
-  try {
-    seating_set(scene);
-    FAIL();
-  } catch (const UnsupportedError& e) {
-    EXPECT_EQ(e.field(), "fixels[0]");
-  }
+  return parse_scene(text);
+}
+
+TEST(SeatingSet, StickingContactGetsBothFrictionEdgesAsGenerators) {
+  const Scene scene = sticking_scene();
+  const SeatingSet S = seating_set(scene);
+  EXPECT_EQ(S.sliding[0], 0);
+  ASSERT_EQ(S.generators.size(), 4u);  // W_n,0 ± μ W_t,0, then one per sliding fixel
+  EXPECT_EQ(S.generator_fixel, (std::vector<int>{0, 0, 1, 2}));
+  const ContactMatrices W = contact_matrices(scene);
+  EXPECT_EQ(S.generators[0], VectorQ(W.Wn.col(0) + Rational(1, 10) * W.Wt.col(0)));
+  EXPECT_EQ(S.generators[1], VectorQ(W.Wn.col(0) - Rational(1, 10) * W.Wt.col(0)));
+  // The H-form comes from the hull of 4 rays: every generator satisfies it,
+  // and it is tight at the apex.
+  EXPECT_GE(S.halfspaces.size(), 4u);
+  for (const auto& h : S.halfspaces) EXPECT_EQ(h.a.dot(S.apex), h.c);
+  for (const auto& r : S.rays) EXPECT_TRUE(S.contains(VectorQ(S.apex + r)));
+  // Eq. (21)-(27) assume sliding contacts.
+  EXPECT_THROW(seating_system(scene, S), UnsupportedError);
 }
 
 // Solves apex − Σ λ_k g_k = p for λ (the V-form coordinates of p).

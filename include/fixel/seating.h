@@ -20,9 +20,12 @@ struct SeatingSet {
   int dof = 3;
   VectorQ nu_plus;              ///< ν^{ℓ+1} = −W_n^{-T} Ψ / h, the seating velocity.
   VectorQ tangential_velocity;  ///< v_t = W_tᵀ ν^{ℓ+1}, one per fixel.
-  std::vector<int> sliding;     ///< σ_i = sign(v_t,i) ∈ {−1, +1}.
+  std::vector<int> sliding;     ///< σ_i = sign(v_t,i) ∈ {−1, 0, +1}; 0 = sticking.
   VectorQ apex;                 ///< M (ν^{ℓ+1} − ν^ℓ).
-  std::vector<VectorQ> generators;  ///< g_i = W_n,i − σ_i μ_i W_t,i.
+  /// g_i = W_n,i − σ_i μ_i W_t,i for a sliding fixel; W_n,i ± μ_i W_t,i
+  /// (two generators, one if μ_i = 0) for a sticking one.
+  std::vector<VectorQ> generators;
+  std::vector<int> generator_fixel;  ///< The fixel of each generator.
   std::vector<VectorQ> rays;        ///< −g_i, the rays of S.
   std::vector<Halfspace> halfspaces;  ///< S = ∩ halfspaces (exact facets).
 
@@ -30,8 +33,8 @@ struct SeatingSet {
   bool contains(const VectorQ& p_ext) const;
 };
 
-/// Computes S for a validated scene (n_c == dof, W_n nonsingular). Throws
-/// UnsupportedError naming the fixel when a contact sticks (v_t,i == 0).
+/// Computes S for a validated scene (n_c == dof, W_n nonsingular), for
+/// sliding and sticking (v_t,i == 0) contacts alike.
 SeatingSet seating_set(const Scene& scene);
 
 /// The reduced system K y = P p + a of eqs. (21)–(22), y ≥ 0 ⇔ p ∈ S.
@@ -54,8 +57,9 @@ struct SeatingSystem {
 };
 
 /// Builds the eq. (21) system for the sliding modes of `S`. Throws
-/// UnsupportedError when K is singular (the generators of S are linearly
-/// dependent, so S is flat and eq. (27) does not apply).
+/// UnsupportedError when a contact sticks (eq. 21 assumes sliding) or K is
+/// singular (the generators of S are linearly dependent, so S is flat and
+/// eq. (27) does not apply).
 SeatingSystem seating_system(const Scene& scene, const SeatingSet& S);
 
 }  // namespace fixel

@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// Past the paper: impulses whose every one-step outcome seats the part
+/// (LCP nonuniqueness, paper §6), and the seat-and-stay set (paper §3.3).
+
+#include <vector>
+
+#include "fixel/outcomes.h"
+#include "fixel/polyhedron.h"
+#include "fixel/scene.h"
+#include "fixel/seating.h"
+
+namespace fixel {
+
+/// The impulses for which the step LCP has a solution in `modes` with fixel
+/// `open_fixel` open and its gap strictly positive after the step.
+struct NonSeatingSet {
+  std::vector<ContactMode> modes;
+  int open_fixel = 0;
+  Polyhedron impulses;  ///< In impulse space (dim = dof), exact.
+};
+
+/// G = S minus every non-seating set: the impulses whose every LCP outcome
+/// seats the part.
+struct GuaranteedSet {
+  /// The non-seating sets that meet S (the others cannot remove anything).
+  std::vector<NonSeatingSet> non_seating;
+  /// G as disjoint convex pieces (strict rows where a boundary is excluded).
+  std::vector<Polyhedron> pieces;
+  /// Exact membership: p ∈ S and p in no non-seating set.
+  bool contains(const VectorQ& p_ext, const SeatingSet& S) const;
+};
+
+/// Builds G by exact projection of every contact mode with an open contact
+/// (docs/theory.md §9). Throws InputError on a scene without n_c == dof.
+GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S);
+
+/// How much of S is lost: the fraction of the sample points
+/// apex + t·Σ w_j r_j (r_j the rays of S, w on the simplex grid with step
+/// 1/grid, t ∈ {1/4, 1/2, 1, 2, 4}) that are not in G. Exact count ratio.
+Rational lost_fraction(const SeatingSet& S, const GuaranteedSet& G, int grid = 6);
+
+/// Facets of the weak-stability impulse cone h·C_stab,
+/// C_stab = cone{−(W_n,i ± μ_i W_t,i)} (paper §3.3): {w : a·w ≥ 0}.
+std::vector<Halfspace> stability_cone(const Scene& scene);
+
+/// The seat-and-stay set S ∩ h·C_stab.
+Polyhedron seat_and_stay(const Scene& scene, const SeatingSet& S);
+
+}  // namespace fixel

@@ -1,0 +1,215 @@
+#include "fixel/polyhedron.h"
+
+#include <algorithm>
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lp.h"
+
+namespace fixel {
+
+namespace {
+
+Halfspace normalized(const VectorQ& a, const Rational& c) {
+  // Scale so that a is a primitive integer vector (positive factor).
+  if (a.isZero()) return {a, c};
+  const VectorQ p = primitive_direction(a);
+  Rational factor = 0;
+  for (int k = 0; k < a.size(); ++k)
+    if (a[k] != 0) {
+      factor = p[k] / a[k];
+      break;
+    }
+  return {p, c * factor};
+}
+
+bool same_row(const Halfspace& x, const Halfspace& y) { return x.a == y.a && x.c == y.c; }
+
+void add_unique(std::vector<Halfspace>& rows, const Halfspace& h) {
+  for (const auto& r : rows)
+    if (same_row(r, h)) return;
+  rows.push_back(h);
+}
+
+}  // namespace
+
+bool Polyhedron::contains(const VectorQ& p) const {
+  for (const auto& h : closed)
+    if (!(h.a.dot(p) >= h.c)) return false;
+  for (const auto& h : strict)
+    if (!(h.a.dot(p) > h.c)) return false;
+  return true;
+}
+
+Polyhedron Polyhedron::intersect(const Polyhedron& other) const {
+  Polyhedron out = *this;
+  for (const auto& h : other.closed) add_unique(out.closed, h);
+  for (const auto& h : other.strict) add_unique(out.strict, h);
+  return out;
+}
+
+bool is_empty(const Polyhedron& P) {
+  // Trivial rows (a = 0) decide themselves.
+  for (const auto& h : P.closed)
+    if (h.a.isZero() && h.c > 0) return true;
+  for (const auto& h : P.strict)
+    if (h.a.isZero() && h.c >= 0) return true;
+  // Variables (p, t): closed rows a·p >= c; strict rows a·p − t >= c;
+  // t <= 1; maximise t. Non-empty iff feasible and (no strict rows or t* > 0).
+  const int n = P.dim + 1;
+  std::vector<internal::LinearConstraint> rows;
+  for (const auto& h : P.closed) {
+    VectorQ a = VectorQ::Zero(n);
+    a.head(P.dim) = h.a;
+    rows.push_back({a, internal::Relation::kGreaterEqual, h.c});
+  }
+  for (const auto& h : P.strict) {
+    VectorQ a = VectorQ::Zero(n);
+    a.head(P.dim) = h.a;
+    a[P.dim] = -1;
+    rows.push_back({a, internal::Relation::kGreaterEqual, h.c});
+  }
+  VectorQ t = VectorQ::Unit(n, P.dim);
+  rows.push_back({t, internal::Relation::kLessEqual, Rational(1)});
+  const internal::LpResult lp = internal::solve_lp(n, rows, VectorQ(-t));
+  if (lp.status == internal::LpStatus::kInfeasible) return true;
+  if (P.strict.empty()) return false;
+  return lp.status == internal::LpStatus::kOptimal && lp.x[P.dim] <= 0;
+}
+
+std::vector<Polyhedron> subtract(const Polyhedron& Q, const Polyhedron& P) {
+  // Rows of P in a fixed order: closed then strict.
+  struct Row {
+    Halfspace h;
+    bool strict;
+  };
+  std::vector<Row> rows;
+  for (const auto& h : P.closed) rows.push_back({h, false});
+  for (const auto& h : P.strict) rows.push_back({h, true});
+  std::vector<Polyhedron> out;
+  Polyhedron prefix = Q;  // Q with rows 0..k−1 of P holding
+  for (const auto& row : rows) {
+    Polyhedron piece = prefix;
+    // Violating a·p >= c is a·p < c, i.e. (−a)·p > −c; violating a·p > c is (−a)·p >= −c.
+    const Halfspace flipped{VectorQ(-row.h.a), Rational(-row.h.c)};
+    if (row.strict) add_unique(piece.closed, flipped);
+    else add_unique(piece.strict, flipped);
+    if (!is_empty(piece)) out.push_back(piece);
+    if (row.strict) add_unique(prefix.strict, row.h);
+    else add_unique(prefix.closed, row.h);
+    if (is_empty(prefix)) break;  // nothing of Q is left inside P's remaining rows
+  }
+  return out;
+}
+
+Polyhedron project_out_x(const LiftedSystem& s) {
+  const int nx = s.nx, np = s.np, n = nx + np;
+  struct Row {
+    VectorQ a;
+    Rational b;
+    bool strict;
+  };
+  std::vector<VectorQ> eq_a;
+  std::vector<Rational> eq_b;
+  for (int r = 0; r < s.A_eq.rows(); ++r) {
+    eq_a.push_back(s.A_eq.row(r).transpose());
+    eq_b.push_back(s.b_eq[r]);
+  }
+  std::vector<Row> in;
+  for (int r = 0; r < s.A_in.rows(); ++r) in.push_back({s.A_in.row(r).transpose(), s.b_in[r], s.strict_in[r]});
+
+  // Gaussian elimination of x through the equalities.
+  std::vector<bool> used(eq_a.size(), false);
+  std::vector<int> free_x;
+  for (int j = 0; j < nx; ++j) {
+    int pivot = -1;
+    for (std::size_t r = 0; r < eq_a.size() && pivot < 0; ++r)
+      if (!used[r] && eq_a[r][j] != 0) pivot = static_cast<int>(r);
+    if (pivot < 0) {
+      free_x.push_back(j);
+      continue;
+    }
+    used[pivot] = true;
+    const VectorQ pa = eq_a[pivot];
+    const Rational pb = eq_b[pivot], pj = pa[j];
+    for (std::size_t r = 0; r < eq_a.size(); ++r) {
+      if (static_cast<int>(r) == pivot || eq_a[r][j] == 0) continue;
+      const Rational f = eq_a[r][j] / pj;
+      eq_a[r] -= f * pa;
+      eq_b[r] -= f * pb;
+    }
+    for (auto& row : in) {
+      if (row.a[j] == 0) continue;
+      const Rational f = row.a[j] / pj;
+      row.a -= f * pa;
+      row.b -= f * pb;
+    }
+  }
+  // Fourier–Motzkin on the x without a pivot (they appear only in inequalities).
+  for (int j : free_x) {
+    std::vector<Row> pos, neg, next;
+    for (auto& row : in) {
+      if (row.a[j] > 0) pos.push_back(row);
+      else if (row.a[j] < 0) neg.push_back(row);
+      else next.push_back(row);
+    }
+    for (const auto& P : pos)
+      for (const auto& N : neg) {
+        // P.a·v >= P.b with P.a_j > 0 and N.a·v >= N.b with N.a_j < 0:
+        // (−N.a_j) P + P.a_j N eliminates v_j.
+        const Rational wp = -N.a[j], wn = P.a[j];
+        next.push_back({VectorQ(wp * P.a + wn * N.a), Rational(wp * P.b + wn * N.b), P.strict || N.strict});
+      }
+    in = std::move(next);
+  }
+  Polyhedron out;
+  out.dim = np;
+  auto p_part = [&](const VectorQ& a) { return VectorQ(a.tail(np)); };
+  for (std::size_t r = 0; r < eq_a.size(); ++r) {
+    if (used[r]) continue;  // defines an eliminated x
+    const VectorQ a = p_part(eq_a[r]);
+    add_unique(out.closed, normalized(a, eq_b[r]));
+    add_unique(out.closed, normalized(VectorQ(-a), Rational(-eq_b[r])));
+  }
+  for (const auto& row : in) {
+    const Halfspace h = normalized(p_part(row.a), row.b);
+    add_unique(row.strict ? out.strict : out.closed, h);
+  }
+  (void)n;
+  return out;
+}
+
+Magnitudes ray_magnitudes(const Polyhedron& P, const VectorQ& b0, const VectorQ& g) {
+  Magnitudes m;
+  m.empty = false;
+  m.lo = 0;
+  m.lo_closed = false;
+  auto apply = [&](const Halfspace& h, bool strict) {
+    const Rational alpha = h.a.dot(g), beta = h.c - h.a.dot(b0);  // τα >= β (or >)
+    if (alpha > 0) {
+      const Rational v = beta / alpha;
+      if (v > m.lo) {
+        m.lo = v;
+        m.lo_closed = !strict;
+      } else if (v == m.lo && strict) {
+        m.lo_closed = false;
+      }
+    } else if (alpha < 0) {
+      const Rational v = beta / alpha;
+      if (!m.hi || v < *m.hi) {
+        m.hi = v;
+        m.hi_closed = !strict;
+      } else if (v == *m.hi && strict) {
+        m.hi_closed = false;
+      }
+    } else if (strict ? beta >= 0 : beta > 0) {
+      m.empty = true;
+    }
+  };
+  for (const auto& h : P.closed) apply(h, false);
+  for (const auto& h : P.strict) apply(h, true);
+  if (m.empty) return Magnitudes{};
+  if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) return Magnitudes{};
+  return m;
+}
+
+}  // namespace fixel

@@ -1,0 +1,161 @@
+#include "fixel/guaranteed.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <random>
+
+#include "fixel/error.h"
+#include "fixel/internal/paper_reference.h"
+#include "fixel/lcp.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+Scene scene_file(const std::string& name) {
+  return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+}
+VectorQ v3(Rational a, Rational b, Rational c) {
+  VectorQ v(3);
+  v << a, b, c;
+  return v;
+}
+
+// Second method: every enumerated LCP outcome at p seats.
+bool every_outcome_seats(const Scene& scene, const VectorQ& p) {
+  for (const auto& o : enumerate_outcomes(scene, p))
+    if (!o.seated) return false;
+  return true;
+}
+
+TEST(GuaranteedSet, DesignSceneImpulseIsInSButNotGuaranteed) {
+  const Scene scene = scene_file("nonunique");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  const VectorQ p = v3(Rational(29157, 10540), Rational(-71119, 105400), Rational(-1169839, 263500));
+  EXPECT_TRUE(S.contains(p));
+  EXPECT_FALSE(G.contains(p, S));
+  EXPECT_FALSE(every_outcome_seats(scene, p));  // what `fixel solutions` reports
+  EXPECT_FALSE(G.non_seating.empty());
+}
+
+TEST(GuaranteedSet, DeepImpulsesOfTheDesignSceneAreGuaranteedAndEnumerationAgrees) {
+  const Scene scene = scene_file("nonunique");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  int guaranteed = 0;
+  for (const Rational& t : {Rational(1, 10), Rational(1), Rational(10), Rational(100)})
+    for (int w0 = 0; w0 <= 3; ++w0)
+      for (int w1 = 0; w1 + w0 <= 3; ++w1) {
+        const int w2 = 3 - w0 - w1;
+        VectorQ p = S.apex - t * (Rational(w0 + 1) * S.generators[0] + Rational(w1 + 1) * S.generators[1] +
+                                  Rational(w2 + 1) * S.generators[2]);
+        const bool in_g = G.contains(p, S);
+        EXPECT_EQ(in_g, every_outcome_seats(scene, p)) << "t " << to_string(t);
+        guaranteed += in_g;
+      }
+  EXPECT_GT(guaranteed, 0);
+}
+
+TEST(GuaranteedSet, Example2GuaranteedSetEqualsS) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  EXPECT_TRUE(G.non_seating.empty());
+  ASSERT_EQ(G.pieces.size(), 1u);
+  EXPECT_EQ(G.pieces[0].closed.size(), S.halfspaces.size());
+  EXPECT_EQ(lost_fraction(S, G), Rational(0));
+}
+
+// On seeded random scenes (μ from 0.05 to 2): guaranteed == contains &&
+// every enumerated outcome seats, exactly, for many random impulses; the
+// pieces represent the same set, disjointly.
+TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
+  std::mt19937_64 rng(83);
+  int scenes = 0, nonunique = 0, points = 0, lost_points = 0;
+  for (int attempt = 0; attempt < 200 && scenes < 24; ++attempt) {
+    Scene scene = testing::random_scene(rng, 3, 20);
+    for (auto& f : scene.fixels) f.mu = Rational(1, 20) + testing::random_rational(rng, 0, 2, 20) * Rational(39, 40);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    ++scenes;
+    const GuaranteedSet G = guaranteed_set(scene, S);
+    nonunique += G.non_seating.empty() ? 0 : 1;
+    for (int k = 0; k < 12; ++k) {
+      VectorQ p = S.apex;
+      for (const auto& g : S.generators) p -= testing::random_rational(rng, -1, 4, 5) * g;
+      const bool in_g = G.contains(p, S);
+      EXPECT_EQ(in_g, S.contains(p) && every_outcome_seats(scene, p)) << "scene " << scenes << " point " << k;
+      int pieces = 0;
+      for (const auto& q : G.pieces) pieces += q.contains(p) ? 1 : 0;
+      EXPECT_EQ(pieces, in_g ? 1 : 0);
+      ++points;
+      lost_points += S.contains(p) && !in_g;
+    }
+  }
+  EXPECT_EQ(scenes, 24);
+  EXPECT_GT(nonunique, 0);
+  EXPECT_GT(lost_points, 0);
+  std::cout << "[ info     ] " << nonunique << " of " << scenes << " random scenes have non-seating outcomes inside S; "
+            << lost_points << " of " << points << " sampled impulses are in S but not guaranteed\n";
+}
+
+TEST(GuaranteedSet, StickingScenesAgreeWithEnumeration) {
+  std::string text = internal::paper::kExample2Scene;
+  text.replace(text.find(R"("gap": "1/20")"), 13, R"("gap": "0")");
+  text.replace(text.find(R"("gap": "1/5")"), 12, R"("gap": "0")");
+  const Scene scene = parse_scene(text);
+  const SeatingSet S = seating_set(scene);
+  ASSERT_EQ(S.sliding[0], 0);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  std::mt19937_64 rng(89);
+  int in_s = 0;
+  for (int k = 0; k < 40; ++k) {
+    VectorQ p = S.apex;
+    for (const auto& g : S.generators) p -= testing::random_rational(rng, -1, 3, 5) * g;
+    // S itself against enumeration: p ∈ S iff some outcome seats.
+    bool any_seats = false;
+    for (const auto& o : enumerate_outcomes(scene, p)) any_seats = any_seats || o.seated;
+    EXPECT_EQ(S.contains(p), any_seats);
+    EXPECT_EQ(G.contains(p, S), S.contains(p) && every_outcome_seats(scene, p));
+    in_s += S.contains(p);
+  }
+  EXPECT_GT(in_s, 5);
+}
+
+TEST(SeatAndStay, IsSIntersectedWithTheWeakStabilityCone) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const SeatingSet S = seating_set(scene);
+  const auto cone = stability_cone(scene);
+  const ContactMatrices W = contact_matrices(scene);
+  // Every −(W_n,i ± μ W_t,i) is in the cone; W_n,0 (pushing away) is not.
+  for (int i = 0; i < 3; ++i)
+    for (int s : {1, -1}) {
+      const VectorQ w = -(W.Wn.col(i) + Rational(s, 10) * W.Wt.col(i));
+      for (const auto& h : cone) EXPECT_GE(h.a.dot(w), 0);
+    }
+  bool outside = false;
+  for (const auto& h : cone) outside = outside || h.a.dot(W.Wn.col(0)) < 0;
+  EXPECT_TRUE(outside);
+  const Polyhedron stay = seat_and_stay(scene, S);
+  std::mt19937_64 rng(97);
+  int both = 0;
+  for (int k = 0; k < 200; ++k) {
+    const VectorQ p = S.apex + v3(testing::random_rational(rng, -3, 1, 7), testing::random_rational(rng, -3, 1, 7),
+                                  testing::random_rational(rng, -3, 1, 7));
+    bool in_cone = true;
+    for (const auto& h : cone) in_cone = in_cone && h.contains(p);
+    EXPECT_EQ(stay.contains(p), S.contains(p) && in_cone);
+    both += stay.contains(p);
+  }
+  EXPECT_GT(both, 0);
+  EXPECT_TRUE(stay.contains(v3(-1, -1, -1)));  // the paper's impulse also keeps the part seated
+}
+
+}  // namespace
+}  // namespace fixel

@@ -1,0 +1,89 @@
+#include "fixel/polyhedron.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+VectorQ v2(Rational a, Rational b) {
+  VectorQ v(2);
+  v << a, b;
+  return v;
+}
+
+Polyhedron unit_square() {
+  Polyhedron P;
+  P.dim = 2;
+  P.closed = {{v2(1, 0), 0}, {v2(0, 1), 0}, {v2(-1, 0), -1}, {v2(0, -1), -1}};
+  return P;
+}
+
+TEST(Polyhedron, EmptinessHonoursStrictRows) {
+  Polyhedron P = unit_square();
+  EXPECT_FALSE(is_empty(P));
+  P.strict.push_back({v2(1, 0), 1});  // x > 1 with x <= 1
+  EXPECT_TRUE(is_empty(P));
+  Polyhedron Q = unit_square();
+  Q.closed.push_back({v2(1, 0), 1});  // x >= 1: the right edge
+  EXPECT_FALSE(is_empty(Q));
+}
+
+TEST(Polyhedron, SubtractGivesDisjointPiecesCoveringTheDifference) {
+  Polyhedron Q = unit_square();
+  Polyhedron P;
+  P.dim = 2;
+  P.closed = {{v2(1, 0), Rational(1, 2)}};
+  P.strict = {{v2(0, 1), Rational(1, 2)}};  // x >= 1/2, y > 1/2
+  const auto pieces = subtract(Q, P);
+  std::mt19937_64 rng(5);
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      const VectorQ p = v2(Rational(i, 8), Rational(j, 8));
+      int count = 0;
+      for (const auto& piece : pieces) count += piece.contains(p) ? 1 : 0;
+      EXPECT_EQ(count, Q.contains(p) && !P.contains(p) ? 1 : 0) << i << "," << j;
+    }
+}
+
+TEST(Polyhedron, ProjectionEliminatesEqualitiesAndFreeVariables) {
+  // {p : ∃x1, x2: x1 = p1 + p2, 0 <= x2 <= x1 − 1, x2 > p2 − 3} = {p1 + p2 >= 1, p1 + 2... }
+  LiftedSystem s;
+  s.nx = 2;
+  s.np = 2;
+  s.A_eq = MatrixQ(1, 4);
+  s.A_eq << 1, 0, -1, -1;
+  s.b_eq = VectorQ::Zero(1);
+  s.A_in = MatrixQ(3, 4);
+  s.A_in << 0, 1, 0, 0,   // x2 >= 0
+      1, -1, 0, 0,        // x1 − x2 >= 1
+      0, 1, 0, -1;        // x2 − p2 > −3
+  s.b_in = VectorQ(3);
+  s.b_in << 0, 1, -3;
+  s.strict_in = {false, false, true};
+  const Polyhedron P = project_out_x(s);
+  // Second method: for p on a grid decide ∃x2 directly: x2 ∈ [0, p1+p2−1] ∩ (p2−3, ∞).
+  for (int i = -8; i <= 8; ++i)
+    for (int j = -8; j <= 8; ++j) {
+      const Rational p1(i, 2), p2(j, 2);
+      const Rational hi = p1 + p2 - 1, lo = p2 - 3;
+      const bool exists = hi >= 0 && hi > lo;
+      EXPECT_EQ(P.contains(v2(p1, p2)), exists) << to_string(p1) << "," << to_string(p2);
+    }
+}
+
+TEST(Polyhedron, RayMagnitudesWithStrictRowsHaveOpenEnds) {
+  Polyhedron P = unit_square();
+  P.strict.push_back({v2(-1, 0), Rational(-1, 2)});  // x < 1/2
+  const Magnitudes T = ray_magnitudes(P, v2(0, 0), v2(1, 1));
+  EXPECT_FALSE(T.empty);
+  EXPECT_TRUE(T.contains(Rational(1, 4)));
+  EXPECT_FALSE(T.contains(Rational(1, 2)));
+  EXPECT_FALSE(T.hi_closed);
+}
+
+}  // namespace
+}  // namespace fixel
