@@ -45,7 +45,85 @@ std::string halfspace_text(const Halfspace& h) {
 
 }  // namespace
 
-std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse) {
+namespace {
+json halfspaces_json(const std::vector<Halfspace>& hs) {
+  json out = json::array();
+  for (const auto& h : hs) out.push_back({{"a", exact(h.a)}, {"c", to_string(h.c)}});
+  return out;
+}
+std::string polyhedron_text(const Polyhedron& P) {
+  std::string s;
+  for (const auto& h : P.closed) s += "      " + halfspace_text(h) + "\n";
+  for (const auto& h : P.strict) {
+    std::string t = halfspace_text(h);
+    t.replace(t.find(">="), 2, "> ");
+    s += "      " + t + "\n";
+  }
+  return s;
+}
+std::string modes_text(const std::vector<ContactMode>& modes) {
+  std::string s;
+  for (auto m : modes) s += (s.empty() ? "" : " ") + to_string(m);
+  return s;
+}
+json seat_extras_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
+                             const GuaranteedSet* G, bool stable) {
+  json doc = json::object();
+  if (G) {
+    json g;
+    g["non_seating"] = json::array();
+    for (const auto& n : G->non_seating) {
+      json modes = json::array();
+      for (auto m : n.modes) modes.push_back(to_string(m));
+      g["non_seating"].push_back({{"modes", modes},
+                                  {"open_fixel", n.open_fixel},
+                                  {"closed", halfspaces_json(n.impulses.closed)},
+                                  {"strict", halfspaces_json(n.impulses.strict)}});
+    }
+    g["pieces"] = json::array();
+    for (const auto& p : G->pieces)
+      g["pieces"].push_back({{"closed", halfspaces_json(p.closed)}, {"strict", halfspaces_json(p.strict)}});
+    g["lost_fraction"] = to_string(lost_fraction(S, *G));
+    doc["guaranteed_set"] = g;
+    if (impulse) doc["guaranteed"] = G->contains(*impulse, S);
+  }
+  if (stable) {
+    doc["stability_cone"] = halfspaces_json(stability_cone(scene));
+    const Polyhedron stay = seat_and_stay(scene, S);
+    doc["seat_and_stay"] = {{"halfspaces", halfspaces_json(stay.closed)}};
+    if (impulse) doc["seat_and_stay_contains"] = stay.contains(*impulse);
+  }
+  return doc;
+}
+
+std::string seat_extras_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
+                             const GuaranteedSet* G, bool stable) {
+  std::ostringstream out;
+  if (G) {
+    out << "Guaranteed set G (impulses whose every one-step outcome seats): " << G->pieces.size()
+        << " convex piece(s); " << G->non_seating.size() << " non-seating set(s) meet S\n";
+    for (const auto& n : G->non_seating)
+      out << "  non-seating: modes " << modes_text(n.modes) << ", fixel " << n.open_fixel << " stays open, where\n"
+          << polyhedron_text(n.impulses);
+    out << "  lost fraction of S (grid sample, docs/theory.md §9): " << to_string(lost_fraction(S, *G)) << "\n";
+    if (impulse)
+      out << "Impulse p = " << text(*impulse) << (G->contains(*impulse, S) ? " is GUARANTEED to seat the part.\n"
+                                                                           : " is NOT guaranteed to seat the part.\n");
+  }
+  if (stable) {
+    const Polyhedron stay = seat_and_stay(scene, S);
+    out << "Seat-and-stay set S ∩ h·C_stab:\n" << polyhedron_text(stay);
+    if (impulse)
+      out << "Impulse p = " << text(*impulse) << (stay.contains(*impulse) ? " seats the part and keeps it seated.\n"
+                                                                          : " is not in the seat-and-stay set.\n");
+  }
+  return out.str();
+}
+
+}  // namespace
+
+std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
+                      const GuaranteedSet* G, bool stable) {
   json doc;
   doc["scene"] = scene.name;
   doc["dof"] = S.dof;
@@ -66,10 +144,19 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const std::option
       doc["y_names"] = sys.y_names;
     }
   }
+  const json extras = seat_extras_json(scene, S, impulse, G, stable);  // items() must not outlive it
+  for (const auto& [key, value] : extras.items()) doc[key] = value;
   return doc.dump(2) + "\n";
 }
 
-std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse) {
+static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
+
+std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
+                      const GuaranteedSet* G, bool stable) {
+  return seat_basic_text(scene, S, impulse) + seat_extras_text(scene, S, impulse, G, stable);
+}
+
+static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse) {
   std::ostringstream out;
   out << "Seating set S of scene \"" << scene.name << "\" (dof " << S.dof << ", " << scene.num_contacts()
       << " fixels)\n";
@@ -97,7 +184,7 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const std::option
 }
 
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
-                                  const Rational& length) {
+                                  const Rational& length, const GuaranteedSet* G) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("--off", dir, "cannot be created: " + ec.message());
@@ -115,6 +202,21 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
                       "apex " + text(S.apex) + "; coordinates below are rounded to double for display"});
   if (!out) throw InputError("--off", path, "could not be written completely");
   std::vector<std::string> written = {path};
+  if (G) {
+    for (std::size_t k = 0; k < G->pieces.size(); ++k) {
+      const std::string piece_path = (std::filesystem::path(dir) / ("guaranteed_" + std::to_string(k) + ".off")).string();
+      std::ofstream piece_out(piece_path);
+      if (!piece_out) throw InputError("--off", piece_path, "cannot be written");
+      std::vector<Halfspace> rows = G->pieces[k].closed;
+      for (const auto& h : G->pieces[k].strict) rows.push_back(h);  // the closure
+      for (const auto& h : box.halfspaces()) rows.push_back(h);
+      write_polytope_off(piece_out, rows, S.dof,
+                         {"fixel: piece " + std::to_string(k) + " of the guaranteed set G of scene \"" + scene.name + "\"",
+                          "its closure (" + std::to_string(G->pieces[k].strict.size()) +
+                              " strict rows drawn as closed), clipped to the box " + box.describe()});
+      written.push_back(piece_path);
+    }
+  }
   if (!scene.body.boundary) return written;
 
   const Boundary& boundary = *scene.body.boundary;
@@ -280,6 +382,15 @@ std::string region_json(const Scene& scene, const Region& region, const std::str
                                 {"status", to_string(r.status)},
                                 {"half_line", r.half_line},
                                 {"magnitudes", magnitudes_json(r)}});
+    if (!r.magnitude_set.empty()) {
+      json set = json::array();
+      for (const auto& m : r.magnitude_set) {
+        RegionInterval one = r;
+        one.magnitudes = m;
+        set.push_back(magnitudes_json(one));
+      }
+      doc["intervals"].back()["magnitude_intervals"] = set;
+    }
   }
   doc["counts"] = counts;
   json lengths;

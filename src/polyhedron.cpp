@@ -30,6 +30,35 @@ void add_unique(std::vector<Halfspace>& rows, const Halfspace& h) {
   rows.push_back(h);
 }
 
+// Rows with the same (primitive) normal: only the tightest matters; at equal
+// offsets a strict row implies the closed one.
+void drop_parallel_redundancy(Polyhedron& P) {
+  auto tighter = [](const Halfspace& x, bool xs, const Halfspace& y, bool ys) {
+    return x.c > y.c || (x.c == y.c && xs && !ys);
+  };
+  struct Row {
+    Halfspace h;
+    bool strict;
+  };
+  std::vector<Row> rows, kept;
+  for (const auto& h : P.closed) rows.push_back({h, false});
+  for (const auto& h : P.strict) rows.push_back({h, true});
+  for (const auto& r : rows) {
+    bool replaced = false, dominated = false;
+    for (auto& k : kept) {
+      if (k.h.a != r.h.a || r.h.a.isZero()) continue;
+      if (tighter(r.h, r.strict, k.h, k.strict)) k = r;
+      else dominated = true;
+      replaced = true;
+      break;
+    }
+    if (!replaced && !dominated) kept.push_back(r);
+  }
+  P.closed.clear();
+  P.strict.clear();
+  for (const auto& k : kept) (k.strict ? P.strict : P.closed).push_back(k.h);
+}
+
 }  // namespace
 
 bool Polyhedron::contains(const VectorQ& p) const {
@@ -175,6 +204,7 @@ Polyhedron project_out_x(const LiftedSystem& s) {
     add_unique(row.strict ? out.strict : out.closed, h);
   }
   (void)n;
+  drop_parallel_redundancy(out);
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "fixel/error.h"
+#include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/lcp.h"
 
@@ -87,12 +88,90 @@ struct Context {
   ConeMethod method;
   Rational resolution;
   RegionStats stats;
+  const GuaranteedSet* G = nullptr;
 };
 
+bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens);
+
+// No ray of the cone (τ > 0) meets the convex piece Q: the set
+// {μ >= 0 : b0 + Σ μ_j g_j ∈ Q} is empty (exact LP with strict rows). When
+// b0 itself lies in Q (μ = 0) this cannot be certified this way.
+bool cone_misses_piece(Context& ctx, const std::vector<VectorQ>& gens, const Polyhedron& Q) {
+  if (Q.contains(ctx.b0)) return false;
+  ++ctx.stats.lp_tests;
+  const int n = static_cast<int>(gens.size());
+  Polyhedron lifted;
+  lifted.dim = n;
+  auto lift = [&](const Halfspace& h) {
+    VectorQ a(n);
+    for (int j = 0; j < n; ++j) a[j] = h.a.dot(gens[j]);
+    return Halfspace{a, h.c - h.a.dot(ctx.b0)};
+  };
+  for (const auto& h : Q.closed) lifted.closed.push_back(lift(h));
+  for (const auto& h : Q.strict) lifted.strict.push_back(lift(h));
+  for (int j = 0; j < n; ++j) lifted.closed.push_back({VectorQ::Unit(n, j), Rational(0)});
+  return is_empty(lifted);
+}
+
+// Classification of a cone (generators with force directions in
+// cone(d_first, d_last)) against the non-convex G.
+RegionStatus classify_against_g(Context& ctx, const std::vector<VectorQ>& gens, const Vec2& d_first,
+                                const Vec2& d_last, RegionInterval* out) {
+  for (const auto& piece : ctx.G->pieces) {
+    std::vector<Magnitudes> T;
+    bool all = true;
+    for (const auto& g : gens) {
+      T.push_back(ray_magnitudes(piece, ctx.b0, g));
+      all = all && !T.back().empty;
+    }
+    if (all) {  // the hit set of one convex piece is convex
+      if (out) {
+        out->magnitudes = common_magnitudes(gens, T, d_first, d_last);
+        out->magnitude_set = {out->magnitudes};
+        bool half = true;
+        for (const auto& t : T) half = half && t.half_line();
+        out->half_line = half;
+      }
+      return RegionStatus::kIn;
+    }
+  }
+  // G is the disjoint union of its pieces: the cone misses G iff it misses
+  // every piece.
+  for (const auto& piece : ctx.G->pieces)
+    if (!cone_misses_piece(ctx, gens, piece)) return RegionStatus::kPartial;
+  return RegionStatus::kOut;
+}
+
 // Exact point test from the extreme push directions at lever arm r.
-RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, const Vec2& d_last, Magnitudes* out) {
+RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
+                             std::vector<Magnitudes>* set = nullptr) {
   ++ctx.stats.point_tests;
   std::vector<VectorQ> gens = {contact_wrench(r, d_first, 3), contact_wrench(r, d_last, 3)};
+  if (ctx.G) {
+    if (cross(d_first, d_last) == 0) {  // one ray: exact union of intervals
+      const std::vector<Magnitudes> parts = ray_magnitudes(*ctx.G, ctx.S, ctx.b0, gens[0]);
+      if (set) {
+        // Report Euclidean |p| like every other magnitude: τ|d| with |d|
+        // irrational, so each end is rounded inward (a certified subset).
+        set->clear();
+        const Rational d2 = d_first.x * d_first.x + d_first.y * d_first.y;
+        for (const auto& t : parts) {
+          Magnitudes m = t;
+          m.lo = t.lo * internal::sqrt_upper(d2);
+          if (t.hi) m.hi = *t.hi * internal::sqrt_lower(d2);
+          if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) continue;
+          set->push_back(m);
+        }
+      }
+      if (out) *out = set && !set->empty() ? set->front() : Magnitudes{};
+      return parts.empty() ? RegionStatus::kOut : RegionStatus::kIn;
+    }
+    RegionInterval tmp;
+    const RegionStatus st = classify_against_g(ctx, gens, d_first, d_last, &tmp);
+    if (out) *out = tmp.magnitudes;
+    if (set) *set = tmp.magnitude_set;
+    return st;
+  }
   std::vector<Magnitudes> T;
   for (const auto& g : gens) {
     T.push_back(ray_magnitudes(ctx.S, ctx.b0, g));
@@ -126,7 +205,7 @@ bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens) {
 
 RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   ++ctx.stats.cone_tests;
-  RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}};
+  RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}};
   // The tight cone needs no hull (min/max over all control points is the
   // same); the paper cone's ⊥-angle test wants the polygon's vertices.
   const SegmentBounds bounds = segment_bounds(seg, ctx.method == ConeMethod::kPaper);
@@ -135,6 +214,15 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
     auto cone = segment_wrench_cone(bounds, ctx.scene.body.p_AoCm_A, f, ctx.mu, ctx.method, /*with_facets=*/false);
     if (!cone) return out;  // tangent or friction cone reaches π: split
     cones.push_back(std::move(*cone));
+  }
+  if (ctx.G) {
+    const auto& gens = cones.front().generators;  // frictionless: one family
+    Vec2 first, last;
+    std::vector<Vec2> dirs;
+    for (const auto& g : gens) dirs.push_back({g[0], g[1]});
+    if (!direction_extremes(dirs, first, last)) return out;
+    out.status = classify_against_g(ctx, gens, first, last, &out);
+    return out;
   }
   bool all_hit = true, all_half = true;
   std::vector<VectorQ> gens;
@@ -203,6 +291,10 @@ std::vector<RegionInterval> merge(const std::vector<RegionInterval>& in) {
       out.back().u1 = r.u1;
       out.back().half_line = out.back().half_line && r.half_line;
       out.back().magnitudes = intersect(out.back().magnitudes, r.magnitudes);
+      if (!out.back().magnitude_set.empty() && !r.magnitude_set.empty() && !out.back().magnitudes.empty)
+        out.back().magnitude_set = {out.back().magnitudes};  // certified pieces intersect to one interval
+      else
+        out.back().magnitude_set.clear();
       continue;
     }
     out.push_back(r);
@@ -210,7 +302,11 @@ std::vector<RegionInterval> merge(const std::vector<RegionInterval>& in) {
   return out;
 }
 
-void check_inputs(const Scene& scene, const Rational& mu) {
+void check_inputs(const Scene& scene, const Rational& mu, const GuaranteedSet* G = nullptr) {
+  if (G && mu != 0)
+    throw UnsupportedError("--pusher-mu", to_string(mu),
+                           "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
+                           "does not make every push direction between them hit G (use a frictionless pusher)");
   if (!scene.body.boundary) throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no boundary to push on");
   if (mu < 0) throw InputError("--pusher-mu", to_string(mu), "must be >= 0");
@@ -232,7 +328,7 @@ std::vector<Join> joins(const Boundary& b) {
 }
 
 RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>& js, int curve, const Rational& u,
-                       Magnitudes* mags) {
+                       Magnitudes* mags, std::vector<Magnitudes>* set = nullptr) {
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (piece.curve != curve) continue;
@@ -253,7 +349,7 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>&
     if (is_zero(t_in) || is_zero(t_out)) return RegionStatus::kPartial;  // undefined normal (cusp)
     Vec2 first, last;
     if (!push_extremes(t_in, t_out, ctx.mu, first, last)) return RegionStatus::kPartial;  // fan of π or more
-    return test_directions(ctx, sub(point, ctx.scene.body.p_AoCm_A), first, last, mags);
+    return test_directions(ctx, sub(point, ctx.scene.body.p_AoCm_A), first, last, mags, set);
   }
   throw InputError("u", to_string(u), "is outside curve " + std::to_string(curve) + "'s parameter range");
 }
@@ -312,17 +408,17 @@ Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ&
 Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(scene.pusher_mu);
-  check_inputs(scene, mu);
+  check_inputs(scene, mu, options.guaranteed);
   if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{scene, S, scene.background_impulse, mu, options.cone, options.resolution, RegionStats{}};
+  Context ctx{scene, S, scene.background_impulse, mu, options.cone, options.resolution, RegionStats{}, options.guaranteed};
   const std::vector<Join> js = joins(b);
   std::vector<RegionInterval> raw;
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (js[k].corner) {
-      RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}};
-      corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes);
+      RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}};
+      corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set);
       corner.half_line = corner.status == RegionStatus::kIn && corner.magnitudes.half_line();
       raw.push_back(corner);
     }
@@ -336,27 +432,28 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
 }
 
 RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& mu,
-                          Magnitudes* magnitudes) {
-  check_inputs(scene, mu);
-  Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
+                          Magnitudes* magnitudes, const GuaranteedSet* guaranteed) {
+  check_inputs(scene, mu, guaranteed);
+  Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}, guaranteed};
   return status_at(ctx, *scene.body.boundary, joins(*scene.body.boundary), curve, u, magnitudes);
 }
 
-Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve, std::optional<Rational> pusher_mu) {
+Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve, std::optional<Rational> pusher_mu,
+                     const GuaranteedSet* guaranteed) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(scene.pusher_mu);
-  check_inputs(scene, mu);
+  check_inputs(scene, mu, guaranteed);
   if (points_per_curve <= 0) throw InputError("--points", std::to_string(points_per_curve), "must be >= 1");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
+  Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}, guaranteed};
   const std::vector<Join> js = joins(b);
   Region region;
   for (std::size_t c = 0; c < b.curves.size(); ++c) {
     const Curve& curve = b.curves[c];
     for (int k = 0; k < points_per_curve; ++k) {
       const Rational u = curve.u_begin() + (curve.u_end() - curve.u_begin()) * Rational(k, points_per_curve);
-      RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}};
-      r.status = status_at(ctx, b, js, static_cast<int>(c), u, &r.magnitudes);
+      RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}, {}};
+      r.status = status_at(ctx, b, js, static_cast<int>(c), u, &r.magnitudes, &r.magnitude_set);
       r.half_line = r.status == RegionStatus::kIn && r.magnitudes.half_line();
       region.intervals.push_back(r);
     }

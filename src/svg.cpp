@@ -202,4 +202,63 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
   if (!out) throw InputError("--svg", path, "could not be written completely");
 }
 
+void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet& G,
+                          const Rational& theta, const std::optional<VectorQ>& impulse) {
+  if (S.dof != 3) throw InputError("--svg", path, "the S/G picture needs dof 3");
+  // The window: the apex and the tips apex + 2 r of every ray, in (px, py).
+  Rational x0 = S.apex[0], x1 = S.apex[0], y0 = S.apex[1], y1 = S.apex[1];
+  for (const auto& r : S.rays) {
+    const VectorQ tip = S.apex + 2 * r;
+    x0 = std::min(x0, Rational(tip[0])), x1 = std::max(x1, Rational(tip[0]));
+    y0 = std::min(y0, Rational(tip[1])), y1 = std::max(y1, Rational(tip[1]));
+  }
+  if (impulse) {
+    x0 = std::min(x0, Rational((*impulse)[0])), x1 = std::max(x1, Rational((*impulse)[0]));
+    y0 = std::min(y0, Rational((*impulse)[1])), y1 = std::max(y1, Rational((*impulse)[1]));
+  }
+  const Rational span = std::max(x1 - x0, y1 - y0) * Rational(6, 5) + Rational(1, 100);
+  const Rational cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  const int n = 120;
+  const double size = 480, left = 40, top = 70;
+  long in_g = 0, lost = 0;
+  std::ostringstream svg;
+  svg.precision(4);
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << size + 2 * left + 260 << "' height='" << size + top + 80
+      << "' font-family='sans-serif' font-size='13'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      VectorQ p(3);
+      p << cx - span / 2 + span * Rational(2 * i + 1, 2 * n), cy + span / 2 - span * Rational(2 * j + 1, 2 * n), theta;
+      const bool s = S.contains(p), g = s && G.contains(p, S);
+      if (!s) continue;
+      (g ? in_g : lost)++;
+      svg << "<rect x='" << left + i * size / n << "' y='" << top + j * size / n << "' width='" << size / n + 0.3
+          << "' height='" << size / n + 0.3 << "' fill='" << (g ? "#1a9850" : "#d73027") << "'/>\n";
+    }
+  auto mark = [&](const VectorQ& p, const char* label, const char* colour) {
+    const double x = left + to_double((p[0] - (cx - span / 2)) / span) * size;
+    const double y = top + to_double(((cy + span / 2) - p[1]) / span) * size;
+    svg << "<circle cx='" << x << "' cy='" << y << "' r='5' fill='none' stroke='" << colour
+        << "' stroke-width='2'/><text x='" << x + 8 << "' y='" << y - 6 << "' fill='" << colour << "'>" << label
+        << "</text>\n";
+  };
+  if (S.apex[2] == theta) mark(S.apex, "apex", "black");
+  if (impulse && (*impulse)[2] == theta) mark(*impulse, "p", "black");
+  svg << "<rect x='" << left << "' y='" << top << "' width='" << size << "' height='" << size
+      << "' fill='none' stroke='#999'/>\n<text x='" << left << "' y='24' font-size='16' font-weight='bold'>"
+      << "seating set S and guaranteed set G: " << scene.name << "</text>\n<text x='" << left << "' y='44'>slice p_theta = "
+      << to_string(theta) << ", p_x in [" << to_double(cx - span / 2) << ", " << to_double(cx + span / 2)
+      << "], p_y in [" << to_double(cy - span / 2) << ", " << to_double(cy + span / 2) << "] (N*s)</text>\n";
+  const double ly = top + size + 28;
+  svg << "<rect x='" << left << "' y='" << ly - 10 << "' width='14' height='10' fill='#1a9850'/><text x='" << left + 20
+      << "' y='" << ly << "'>in G: every outcome seats (" << in_g << " cells)</text>\n<rect x='" << left + 330 << "' y='"
+      << ly - 10 << "' width='14' height='10' fill='#d73027'/><text x='" << left + 350 << "' y='" << ly
+      << "'>in S, not in G (" << lost << " cells)</text>\n<text x='" << left << "' y='" << ly + 22
+      << "'>white: outside S. Each cell's centre is decided exactly; " << G.pieces.size() << " pieces, "
+      << G.non_seating.size() << " non-seating sets meet S.</text>\n</svg>\n";
+  std::ofstream out(path);
+  if (!out) throw InputError("--svg", path, "cannot be written");
+  out << svg.str();
+}
+
 }  // namespace fixel

@@ -41,6 +41,17 @@ expect 2 '--resolution: 0 must be > 0' -- "$fixel" region "$src/data/scenes/blob
 expect 2 '--pusher-mu: -1 must be >= 0' -- "$fixel" region "$src/data/scenes/blob.json" --pusher-mu -1
 expect 2 '--cone: diagonal not in {tight,paper}' -- "$fixel" region "$src/data/scenes/blob.json" --cone diagonal
 expect 2 '--points: 0 must be >= 1' -- "$fixel" sample "$src/data/scenes/blob.json" --points 0
+P=29157/10540,-71119/105400,-1169839/263500
+expect 0 '"guaranteed": false' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --impulse $P --json
+expect 0 '"lost_fraction": "5/14"' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --json
+expect 0 'is NOT guaranteed' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --impulse $P --svg "$tmp/g.svg"
+grep -q "<svg" "$tmp/g.svg" || { echo "FAIL: no S/G svg"; fail=1; }
+expect 0 '"seat_and_stay_contains": true' -- "$fixel" seat "$src/data/scenes/example2.json" --stable --impulse -1,-1,-1 --json
+expect 0 'guaranteed_0.off' -- "$fixel" dump "$src/data/scenes/nonunique.json" --guaranteed --off "$tmp/g"
+expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --json
+expect 0 '"magnitude_intervals"' -- "$fixel" sample "$src/data/scenes/nonunique_part.json" --guaranteed --points 8 --json
+expect 2 'with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
+expect 2 '--svg: ' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
 for cmd in seat dump verify simulate solutions region sample; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2

@@ -8,6 +8,7 @@
 #include "fixel/error.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
+#include "fixel/region.h"
 #include "test_scenes.h"
 
 namespace fixel {
@@ -155,6 +156,118 @@ TEST(SeatAndStay, IsSIntersectedWithTheWeakStabilityCone) {
   }
   EXPECT_GT(both, 0);
   EXPECT_TRUE(stay.contains(v3(-1, -1, -1)));  // the paper's impulse also keeps the part seated
+}
+
+}  // namespace
+}  // namespace fixel
+
+namespace fixel {
+namespace {
+
+TEST(GuaranteedRegion, IsInsideTheOrdinaryRegionAndSoundBySampling) {
+  const Scene scene = scene_file("nonunique_part");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 256);
+  opt.guaranteed = &G;
+  const Region against_g = compute_region(scene, S, opt);
+  int in = 0, out = 0, samples = 0;
+  for (const auto& r : against_g.intervals) {
+    if (r.status == RegionStatus::kPartial) continue;
+    (r.status == RegionStatus::kIn ? in : out)++;
+    for (int k = 0; k <= 40; ++k) {
+      const Rational u = r.u0 + (r.u1 - r.u0) * Rational(k, 40);
+      // Exact point test against G: one ray, T_G as a union of intervals.
+      EXPECT_EQ(point_status(scene, S, r.curve, u, 0, nullptr, &G), r.status) << to_string(u);
+      // G ⊆ S: a point whose ray meets G meets S.
+      if (r.status == RegionStatus::kIn) {
+        EXPECT_EQ(point_status(scene, S, r.curve, u, 0), RegionStatus::kIn);
+      }
+      ++samples;
+    }
+  }
+  EXPECT_GT(in, 0);
+  EXPECT_GT(out, 0);
+  EXPECT_GT(samples, 100);
+  // Against S the same pushes all start inside S (b0 is interior): IN everywhere.
+  const Region against_s = compute_region(scene, S, RegionOptions{});
+  for (const auto& r : against_s.intervals) EXPECT_EQ(r.status, RegionStatus::kIn);
+}
+
+TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
+  const Scene scene = scene_file("nonunique_part");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  int checked = 0, split = 0;
+  for (const auto& piece : scene.body.boundary->pieces)
+    for (int k = 0; k < 4; ++k) {
+      const Rational s(2 * k + 1, 8);
+      const Vec2 T = piece.derivative(s), x = piece.point(s);
+      const VectorQ g = contact_wrench({x.x - scene.body.p_AoCm_A.x, x.y - scene.body.p_AoCm_A.y}, {-T.y, T.x}, 3);
+      const std::vector<Magnitudes> parts = ray_magnitudes(G, S, scene.background_impulse, g);
+      split += parts.size() > 1;
+      // Second method: exact membership of b0 + τ g in G at many τ.
+      for (int j = 1; j <= 80; ++j) {
+        const Rational tau(j, 16);
+        bool in_union = false;
+        for (const auto& m : parts) in_union = in_union || m.contains(tau);
+        EXPECT_EQ(in_union, G.contains(VectorQ(scene.background_impulse + tau * g), S));
+        ++checked;
+      }
+      for (const auto& m : parts) {  // the ends are exact too
+        if (m.lo > 0) {
+          EXPECT_EQ(G.contains(VectorQ(scene.background_impulse + m.lo * g), S), m.lo_closed);
+        }
+        if (m.hi) {
+          EXPECT_EQ(G.contains(VectorQ(scene.background_impulse + *m.hi * g), S), m.hi_closed);
+        }
+      }
+    }
+  EXPECT_GT(checked, 3000);
+  std::cout << "[ info     ] " << split << " sampled rays meet G in more than one interval\n";
+}
+
+TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {
+  const Scene scene = scene_file("nonunique_part");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  const Region samples = sample_region(scene, S, 24, std::nullopt, &G);
+  int checked = 0;
+  for (const auto& r : samples.intervals) {
+    EXPECT_EQ(r.status == RegionStatus::kIn, !r.magnitude_set.empty());
+    const Rational u = r.u0;
+    const BezierPiece* piece = nullptr;
+    for (const auto& p : scene.body.boundary->pieces)
+      if (u >= p.u0 && u < p.u1) piece = &p;
+    ASSERT_NE(piece, nullptr);
+    const Vec2 T = piece->derivative(piece->local(u)), x = piece->point(piece->local(u));
+    const Vec2 n{-T.y, T.x};
+    const VectorQ g = contact_wrench({x.x - scene.body.p_AoCm_A.x, x.y - scene.body.p_AoCm_A.y}, n, 3);
+    const Rational n2 = n.x * n.x + n.y * n.y;
+    for (const auto& m : r.magnitude_set) {
+      const Rational mid = m.hi ? Rational((m.lo + *m.hi) / 2) : Rational(m.lo + 1);
+      // |p| = mid along n̂ is τ = mid / |n| ∈ [mid / L, mid / L']; both ends
+      // must lie in G along the ray (and in one of its intervals).
+      const Rational t0 = mid / internal::sqrt_upper(n2), t1 = mid / internal::sqrt_lower(n2);
+      bool same_interval = false;
+      for (const auto& t : ray_magnitudes(G, S, scene.background_impulse, g))
+        same_interval = same_interval || (t.contains(t0) && t.contains(t1));
+      EXPECT_TRUE(same_interval) << to_string(u);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 5);
+}
+
+TEST(GuaranteedRegion, FrictionalPusherIsAClearNotSupportedError) {
+  const Scene scene = scene_file("nonunique_part");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  RegionOptions opt;
+  opt.guaranteed = &G;
+  opt.pusher_mu = Rational(1, 5);
+  EXPECT_THROW(compute_region(scene, S, opt), UnsupportedError);
 }
 
 }  // namespace

@@ -110,3 +110,23 @@ blob32["body"]["boundary"] = [{"type": "bspline", "degree": 3, "knots": [str(k) 
 with open("data/scenes/blob32.json", "w") as f:
     json.dump(blob32, f, indent=1)
     f.write("\n")
+
+# nonunique_part: the DESIGN §3 nonuniqueness scene (m = 1, I = 1/2, centre
+# of mass at the origin, as given there) with a round outline: a closed
+# uniform cubic B-spline on 12 control points at radius 1.1.
+n = 12
+ring = [(F(round(1.1 * math.cos(2 * math.pi * k / n) * 1000), 1000), F(round(1.1 * math.sin(2 * math.pi * k / n) * 1000), 1000))
+        for k in range(n)]
+ring = ring + ring[:3]
+with open("data/scenes/nonunique.json") as f:
+    nonunique = json.load(f)
+nonunique["name"] = "nonunique_part"
+# The background impulse is the DESIGN's impulse p = apex − Σ g_i: interior
+# to S but not guaranteed, so every push starts inside S and the question is
+# which pushes also reach G.
+nonunique["background_impulse"] = ["29157/10540", "-71119/105400", "-1169839/263500"]
+nonunique["body"]["boundary"] = [{"type": "bspline", "degree": 3, "knots": [str(k) for k in range(len(ring) + 4)],
+                                  "control_points": [pt(*c) for c in ring]}]
+with open("data/scenes/nonunique_part.json", "w") as f:
+    json.dump(nonunique, f, indent=1)
+    f.write("\n")

@@ -31,6 +31,11 @@ struct GuaranteedSet {
   bool contains(const VectorQ& p_ext, const SeatingSet& S) const;
 };
 
+/// {τ > 0 : b0 + τ g ∈ G} exactly, as disjoint intervals in increasing order
+/// (T_S minus the T_N of every non-seating set).
+std::vector<Magnitudes> ray_magnitudes(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0,
+                                       const VectorQ& g);
+
 /// Builds G by exact projection of every contact mode with an open contact
 /// (docs/theory.md §9). Throws InputError on a scene without n_c == dof.
 GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S);

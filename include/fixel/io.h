@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "fixel/guaranteed.h"
 #include "fixel/outcomes.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
@@ -17,22 +18,29 @@ namespace fixel {
 
 /// `fixel seat --json`: {"scene", "dof", "sliding", "velocity_after",
 /// "tangential_velocity", "apex", "rays", "halfspaces": [{"a", "c"}]} and,
-/// with an impulse, "contains", "y" and "y_names" (eq. 27). Numbers are exact
-/// strings.
-std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
+/// with an impulse, "contains", "y" and "y_names" (eq. 27; sliding contacts
+/// only). With G: "guaranteed_set": {"non_seating": [{"modes",
+/// "open_fixel", "closed", "strict"}], "pieces": [{"closed", "strict"}],
+/// "lost_fraction"} and, with an impulse, "guaranteed". With `stable`:
+/// "stability_cone" and "seat_and_stay" (H-forms) and, with an impulse,
+/// "seat_and_stay_contains". Numbers are exact strings.
+std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
+                      const GuaranteedSet* G = nullptr, bool stable = false);
 
 /// The same content as a readable report.
-std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
+std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
+                      const GuaranteedSet* G = nullptr, bool stable = false);
 
 /// Writes into directory `dir` (created if needed): `seating_set.off` (S
-/// clipped to seating_dump_box(S, length)); with a boundary, `boundary.obj`
+/// clipped to seating_dump_box(S, length)); with G, `guaranteed_<k>.off` for
+/// each piece of G (its closure clipped to the same box); with a boundary, `boundary.obj`
 /// (the outline as a sampled polyline) and one
 /// `segment_<k>_<family>_<method>.off` per Bézier piece, edge family and cone
 /// method (the cone clipped to the box [−1, 1]³; pieces whose tangent cone
 /// is not pointed have no cone). Returns the written paths.
 /// Throws InputError if the directory cannot be created or written.
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
-                                  const Rational& length);
+                                  const Rational& length, const GuaranteedSet* G = nullptr);
 
 /// `fixel simulate --json`: {"seated", "steps": [{"q", "velocity", "gaps",
 /// "p_n", "p_f", "pivots"}]}.

@@ -15,6 +15,8 @@
 
 namespace fixel {
 
+struct GuaranteedSet;
+
 /// An interval of positive reals with optional infinite upper end.
 struct Magnitudes {
   bool empty = true;
@@ -55,6 +57,11 @@ struct RegionInterval {
   /// direction of the contact cone, as a certified rational inner bound;
   /// empty when no common magnitude was found.
   Magnitudes magnitudes;
+  /// With a guaranteed set (RegionOptions::guaranteed): for a point sample
+  /// the admissible Euclidean magnitudes |p| along its ray as disjoint
+  /// intervals (the exact union, each end rounded inward to a rational); for
+  /// an IN interval the certified magnitude range of one convex piece of G.
+  std::vector<Magnitudes> magnitude_set;
 };
 
 /// Counters of a region computation.
@@ -79,6 +86,9 @@ struct RegionOptions {
   ConeMethod cone = ConeMethod::kTight;
   std::optional<Rational> pusher_mu;        ///< Overrides the scene's pusher μ.
   bool merge = true;                        ///< Merge adjacent intervals with equal status.
+  /// Classify against the guaranteed set G instead of S (frictionless
+  /// pusher only; G must belong to the same scene and S).
+  const GuaranteedSet* guaranteed = nullptr;
 };
 
 /// The pushing region by recursive subdivision (DESIGN §4). Throws
@@ -90,11 +100,11 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
 /// u = u_begin + k (u_end − u_begin) / N, k = 0..N−1, each an interval
 /// [u, u] with status in or out (partial where the normal is undefined).
 Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve,
-                     std::optional<Rational> pusher_mu = std::nullopt);
+                     std::optional<Rational> pusher_mu = std::nullopt, const GuaranteedSet* guaranteed = nullptr);
 
 /// Exact point test at parameter u of curve k (a corner uses its whole fan of
 /// push directions). kPartial when the contact normal is undefined there.
 RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& pusher_mu,
-                          Magnitudes* magnitudes = nullptr);
+                          Magnitudes* magnitudes = nullptr, const GuaranteedSet* guaranteed = nullptr);
 
 }  // namespace fixel

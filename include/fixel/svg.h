@@ -4,6 +4,9 @@
 
 #include <string>
 
+#include <optional>
+
+#include "fixel/guaranteed.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
@@ -17,5 +20,12 @@ namespace fixel {
 /// cannot be written.
 void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
                       const std::string& method, const Rational& resolution, const Rational& pusher_mu);
+
+/// Draws the slice p_θ = theta of S and G (dof 3): impulses in G, in S but
+/// not in G, and outside S, each decided exactly on a display grid, with the
+/// apex and an optional impulse marked. Throws InputError if the file cannot
+/// be written or dof != 3.
+void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet& G,
+                          const Rational& theta, const std::optional<VectorQ>& impulse);
 
 }  // namespace fixel

@@ -29,11 +29,17 @@ int main(int argc, char** argv) {
   seat->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
   seat->add_flag("--json", json_out, "Print one JSON document on stdout");
   seat->add_option("--impulse", impulse_text, "Test an impulse: px,py[,ptheta] (exact numbers)");
+  bool guaranteed = false, stable = false;
+  std::string seat_svg;
+  seat->add_flag("--guaranteed", guaranteed, "Also compute G, the impulses whose every outcome seats");
+  seat->add_flag("--stable", stable, "Also give the seat-and-stay set S ∩ h·C_stab");
+  seat->add_option("--svg", seat_svg, "With --guaranteed: draw the slice p_theta = const of S and G");
 
   auto* dump = app.add_subcommand("dump", "Write S as an OFF file, clipped to a stated box");
   dump->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
   dump->add_option("--off", off_dir, "Output directory")->required();
   dump->add_option("--length", length_text, "Box holds apex + LENGTH * r for every ray r (default 1)");
+  dump->add_flag("--guaranteed", guaranteed, "Also write the pieces of the guaranteed set G");
 
   int steps = 1;
   auto* simulate = app.add_subcommand("simulate", "Time-step the part under an impulse with the exact LCP solver");
@@ -56,6 +62,7 @@ int main(int argc, char** argv) {
   region->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
   region->add_option("--svg", svg_path, "Also draw the region to this SVG file");
   region->add_flag("--json", json_out, "Print one JSON document on stdout");
+  region->add_flag("--guaranteed", guaranteed, "Classify against G instead of S (frictionless pusher only)");
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
@@ -63,6 +70,7 @@ int main(int argc, char** argv) {
   sample->add_option("--points", points, "Points per curve (default 64)");
   sample->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
   sample->add_flag("--json", json_out, "Print one JSON document on stdout");
+  sample->add_flag("--guaranteed", guaranteed, "Test against G instead of S (frictionless pusher only)");
 
   auto* verify = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
   verify->add_flag("--json", json_out, "Print one JSON document on stdout");
@@ -94,10 +102,19 @@ int main(int argc, char** argv) {
       return 0;
     }
     const fixel::SeatingSet S = fixel::seating_set(scene);
+    std::optional<fixel::GuaranteedSet> G;
+    if (guaranteed) G = fixel::guaranteed_set(scene, S);
+    const fixel::GuaranteedSet* g = G ? &*G : nullptr;
     if (*seat) {
       std::optional<fixel::VectorQ> impulse;
       if (!impulse_text.empty()) impulse = fixel::parse_impulse(impulse_text, scene.body.dof);
-      std::cout << (json_out ? fixel::seat_json(scene, S, impulse) : fixel::seat_text(scene, S, impulse));
+      if (!seat_svg.empty() && !g) throw fixel::InputError("--svg", seat_svg, "needs --guaranteed");
+      std::cout << (json_out ? fixel::seat_json(scene, S, impulse, g, stable)
+                             : fixel::seat_text(scene, S, impulse, g, stable));
+      if (!seat_svg.empty()) {
+        fixel::write_guaranteed_svg(seat_svg, scene, S, *g, impulse ? (*impulse)[2] : S.apex[2], impulse);
+        if (!json_out) std::cout << "wrote " << seat_svg << "\n";
+      }
       return 0;
     }
     if (*region || *sample) {
@@ -105,7 +122,7 @@ int main(int argc, char** argv) {
       if (!pusher_mu_text.empty()) mu = fixel::parse_rational(pusher_mu_text, "--pusher-mu");
       const fixel::Rational used_mu = mu.value_or(scene.pusher_mu);
       if (*sample) {
-        const auto r = fixel::sample_region(scene, S, points, mu);
+        const auto r = fixel::sample_region(scene, S, points, mu, g);
         std::cout << (json_out ? fixel::region_json(scene, r, "sample", std::nullopt, used_mu)
                                : fixel::region_text(scene, r, "sample", std::nullopt, used_mu));
         return 0;
@@ -114,18 +131,19 @@ int main(int argc, char** argv) {
       options.resolution = fixel::parse_rational(resolution_text, "--resolution");
       options.cone = cone_text == "paper" ? fixel::ConeMethod::kPaper : fixel::ConeMethod::kTight;
       options.pusher_mu = mu;
+      options.guaranteed = g;
       const auto r = fixel::compute_region(scene, S, options);
       std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, used_mu)
                              : fixel::region_text(scene, r, cone_text, options.resolution, used_mu));
       if (!svg_path.empty()) {
-        fixel::write_region_svg(svg_path, scene, S, r, cone_text, options.resolution, used_mu);
+        fixel::write_region_svg(svg_path, scene, S, r, cone_text + (g ? ", against G" : ""), options.resolution, used_mu);
         if (!json_out) std::cout << "wrote " << svg_path << "\n";
       }
       return 0;
     }
     if (*dump) {
       const fixel::Rational length = fixel::parse_rational(length_text, "--length");
-      for (const auto& path : fixel::dump_off(scene, S, off_dir, length)) std::cout << "wrote " << path << "\n";
+      for (const auto& path : fixel::dump_off(scene, S, off_dir, length, g)) std::cout << "wrote " << path << "\n";
       return 0;
     }
   } catch (const fixel::Error& e) {
