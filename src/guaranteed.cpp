@@ -124,8 +124,13 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S) {
   G.pieces = {s_poly};
   for (const auto& n : G.non_seating) {
     std::vector<Polyhedron> next;
-    for (const auto& piece : G.pieces)
+    for (const auto& piece : G.pieces) {
+      if (is_empty(piece.intersect(n.impulses))) {  // untouched: do not fragment it
+        next.push_back(piece);
+        continue;
+      }
       for (auto& rest : subtract(piece, n.impulses)) next.push_back(std::move(rest));
+    }
     G.pieces = std::move(next);
   }
   return G;
