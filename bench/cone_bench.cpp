@@ -25,7 +25,8 @@ const std::vector<BezierPiece>& segments() {
     while (out.size() < 256) {
       BezierPiece piece{0, Rational(0), Rational(1), {}};
       for (int i = 0; i < 4; ++i)
-        piece.control.push_back({fixel::testing::random_rational(rng, -2, 2, 9), fixel::testing::random_rational(rng, -2, 2, 9)});
+        piece.control.push_back(
+            {fixel::testing::random_rational(rng, -2, 2, 9), fixel::testing::random_rational(rng, -2, 2, 9)});
       const Rational a(static_cast<int>(out.size() % 4), 4);
       piece = piece.restrict_to(a, a + Rational(1, 4));
       if (fixel::segment_bounds(piece).pointed) out.push_back(piece);
@@ -65,7 +66,8 @@ void report_widths() {
     if (wt > 0) max_ratio = std::max(max_ratio, wp / wt);
     ++n;
   }
-  std::cout << "Cone width (solid angle, sr) over " << n << " random cubic segments of parameter width 1/4, frictionless:\n"
+  std::cout << "Cone width (solid angle, sr) over " << n
+            << " random cubic segments of parameter width 1/4, frictionless:\n"
             << "  tight mean " << tight_sum / n << ", paper mean " << paper_sum / n << ", paper/tight of the means "
             << paper_sum / tight_sum << ", largest per-segment ratio " << max_ratio << "\n";
 }

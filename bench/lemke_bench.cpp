@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <iostream>
 #include <random>
+#include <string>
 
 #include "../tests/test_scenes.h"
 #include "bench_util.h"
@@ -220,7 +220,8 @@ BENCHMARK(BM_SiconosLexicoLemke)->Repetitions(5)->ReportAggregatesOnly(true);
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  std::cout << "Seating LCPs of " << problems().size() << " random 3-fixel scenes (size 12); one solve per iteration.\n";
+  std::cout << "Seating LCPs of " << problems().size()
+            << " random 3-fixel scenes (size 12); one solve per iteration.\n";
   report_disagreements("double Lemke", double_lemke);
 #ifdef FIXEL_HAVE_SICONOS
   report_disagreements("Siconos lcp_lexicolemke", siconos_lemke);

@@ -59,8 +59,10 @@ BENCHMARK(BM_Subdivision)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 // Sampling at the same spacing as the resolution: range / (1/1024) points.
 void BM_Sampling(benchmark::State& state) {
   const Loaded& l = scene(static_cast<int>(state.range(0)));
-  const Rational range = l.scene.body.boundary->curves.front().u_end() - l.scene.body.boundary->curves.front().u_begin();
-  const int n = static_cast<int>(boost::multiprecision::numerator(range * 1024) / boost::multiprecision::denominator(range * 1024));
+  const Rational range =
+      l.scene.body.boundary->curves.front().u_end() - l.scene.body.boundary->curves.front().u_begin();
+  const int n = static_cast<int>(boost::multiprecision::numerator(range * 1024) /
+                                 boost::multiprecision::denominator(range * 1024));
   fixel::Region r;
   for (auto _ : state) r = fixel::sample_region(l.scene, l.S, n);
   state.counters["point_tests"] = static_cast<double>(r.stats.point_tests);

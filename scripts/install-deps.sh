@@ -4,6 +4,7 @@
 set -euo pipefail
 packages=(
   cmake g++ make
+  clang clang-format libclang-rt-14-dev
   libcgal-dev libgmp-dev libeigen3-dev libboost-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
 )

@@ -8,9 +8,7 @@ namespace fixel {
 
 namespace {
 
-Vec2 lerp(const Vec2& a, const Vec2& b, const Rational& t) {
-  return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-}
+Vec2 lerp(const Vec2& a, const Vec2& b, const Rational& t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
 Vec2 sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 std::string text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
@@ -110,8 +108,7 @@ void validate_curve(const Curve& c, const std::string& path) {
 // de Boor's recursion with argument t[r−1] at level r. With all arguments
 // equal it is the curve point; with (a^{p−i}, b^i) it is the i-th Bézier
 // point of the span [a, b] = [U[j], U[j+1]].
-Vec2 blossom(const std::vector<Rational>& U, const std::vector<Vec2>& P, int p, int j,
-             const std::vector<Rational>& t) {
+Vec2 blossom(const std::vector<Rational>& U, const std::vector<Vec2>& P, int p, int j, const std::vector<Rational>& t) {
   std::vector<Vec2> d(P.begin() + (j - p), P.begin() + j + 1);
   for (int r = 1; r <= p; ++r)
     for (int i = p; i >= r; --i) {
@@ -170,8 +167,8 @@ std::vector<BezierPiece> Curve::bezier_pieces(int curve_index) const {
   std::vector<BezierPiece> out;
   if (type == Type::kPolyline) {
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-      out.push_back({curve_index, Rational(static_cast<int>(i)), Rational(static_cast<int>(i + 1)),
-                     {points[i], points[i + 1]}});
+      out.push_back(
+          {curve_index, Rational(static_cast<int>(i)), Rational(static_cast<int>(i + 1)), {points[i], points[i + 1]}});
     return out;
   }
   const int p = degree, n = static_cast<int>(points.size());
@@ -192,8 +189,8 @@ std::vector<BezierPiece> Curve::bezier_pieces(int curve_index) const {
 Vec2 Curve::point(const Rational& u) const {
   for (const auto& piece : bezier_pieces(0))
     if (u >= piece.u0 && (u < piece.u1 || (u == piece.u1 && u == u_end()))) return piece.point(piece.local(u));
-  throw InputError("u", to_string(u), "is outside the curve's parameter range [" + to_string(u_begin()) + ", " +
-                                          to_string(u_end()) + "]");
+  throw InputError("u", to_string(u),
+                   "is outside the curve's parameter range [" + to_string(u_begin()) + ", " + to_string(u_end()) + "]");
 }
 
 Vec2 Curve::derivative(const Rational& u, int k) const {
@@ -205,8 +202,8 @@ Vec2 Curve::derivative(const Rational& u, int k) const {
       for (int i = 0; i < k; ++i) scale /= (piece.u1 - piece.u0);
       return {d.x * scale, d.y * scale};
     }
-  throw InputError("u", to_string(u), "is outside the curve's parameter range [" + to_string(u_begin()) + ", " +
-                                          to_string(u_end()) + "]");
+  throw InputError("u", to_string(u),
+                   "is outside the curve's parameter range [" + to_string(u_begin()) + ", " + to_string(u_end()) + "]");
 }
 
 Rational MassProperties::polar_moment_about(const Vec2& c) const {
@@ -233,8 +230,10 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces) {
   }
   MassProperties m;
   m.area = area2 / 2;
-  if (m.area != 0) m.centroid = {mx2 / 2 / m.area, my2 / 2 / m.area};
-  else m.centroid = {Rational(0), Rational(0)};
+  if (m.area != 0)
+    m.centroid = {mx2 / 2 / m.area, my2 / 2 / m.area};
+  else
+    m.centroid = {Rational(0), Rational(0)};
   m.polar_moment = j3 / 3;
   return m;
 }

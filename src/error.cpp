@@ -5,8 +5,7 @@
 namespace fixel {
 
 namespace {
-std::string compose(const std::string& field, const std::string& value,
-                    const std::string& reason) {
+std::string compose(const std::string& field, const std::string& value, const std::string& reason) {
   std::string out = field + ":";
   if (!value.empty()) out += " " + value;
   if (!reason.empty()) out += " " + reason;

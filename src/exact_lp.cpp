@@ -16,7 +16,7 @@ LpResult solve_lp(int n, const std::vector<LinearConstraint>& constraints, const
       if (row.a[j] != 0) lp.set_a(j, r, row.a[j]);
     lp.set_b(r, row.b);
     lp.set_r(r, row.rel == Relation::kLessEqual ? CGAL::SMALLER
-                                               : (row.rel == Relation::kEqual ? CGAL::EQUAL : CGAL::LARGER));
+                                                : (row.rel == Relation::kEqual ? CGAL::EQUAL : CGAL::LARGER));
   }
   for (int j = 0; j < c.size(); ++j)
     if (c[j] != 0) lp.set_c(j, c[j]);

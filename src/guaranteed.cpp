@@ -66,12 +66,14 @@ std::vector<Magnitudes> minus(const Magnitudes& A, const Magnitudes& B) {
   if (!left.empty) {
     // Clip to A's upper end.
     Magnitudes l = left;
-    if (A.hi && (*A.hi < *l.hi || (*A.hi == *l.hi && !A.hi_closed))) l = make_interval(A.lo, A.lo_closed, A.hi, A.hi_closed);
+    if (A.hi && (*A.hi < *l.hi || (*A.hi == *l.hi && !A.hi_closed)))
+      l = make_interval(A.lo, A.lo_closed, A.hi, A.hi_closed);
     if (!l.empty) out.push_back(l);
   }
   if (B.hi) {
     Magnitudes right = make_interval(*B.hi, !B.hi_closed, A.hi, A.hi_closed);
-    if (right.lo < A.lo || (right.lo == A.lo && !A.lo_closed)) right = make_interval(A.lo, A.lo_closed, A.hi, A.hi_closed);
+    if (right.lo < A.lo || (right.lo == A.lo && !A.lo_closed))
+      right = make_interval(A.lo, A.lo_closed, A.hi, A.hi_closed);
     if (!right.empty) out.push_back(right);
   }
   return out;

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "fixel/error.h"
 #include "fixel/curve.h"
+#include "fixel/error.h"
 #include "fixel/off_io.h"
 #include "fixel/wrench_cone.h"
 
@@ -67,7 +67,7 @@ std::string modes_text(const std::vector<ContactMode>& modes) {
   return s;
 }
 json seat_extras_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                             const GuaranteedSet* G, bool stable) {
+                      const GuaranteedSet* G, bool stable) {
   json doc = json::object();
   if (G) {
     json g;
@@ -107,15 +107,17 @@ std::string seat_extras_text(const Scene& scene, const SeatingSet& S, const std:
           << polyhedron_text(n.impulses);
     out << "  lost fraction of S (grid sample, docs/theory.md §9): " << to_string(lost_fraction(S, *G)) << "\n";
     if (impulse)
-      out << "Impulse p = " << text(*impulse) << (G->contains(*impulse, S) ? " is GUARANTEED to seat the part.\n"
-                                                                           : " is NOT guaranteed to seat the part.\n");
+      out << "Impulse p = " << text(*impulse)
+          << (G->contains(*impulse, S) ? " is GUARANTEED to seat the part.\n"
+                                       : " is NOT guaranteed to seat the part.\n");
   }
   if (stable) {
     const Polyhedron stay = seat_and_stay(scene, S);
     out << "Seat-and-stay set S ∩ h·C_stab:\n" << polyhedron_text(stay);
     if (impulse)
-      out << "Impulse p = " << text(*impulse) << (stay.contains(*impulse) ? " seats the part and keeps it seated.\n"
-                                                                          : " is not in the seat-and-stay set.\n");
+      out << "Impulse p = " << text(*impulse)
+          << (stay.contains(*impulse) ? " seats the part and keeps it seated.\n"
+                                      : " is not in the seat-and-stay set.\n");
   }
   return out.str();
 }
@@ -163,7 +165,10 @@ static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, cons
   out << "  seating velocity nu+ = " << text(S.nu_plus) << "\n";
   for (int i = 0; i < scene.num_contacts(); ++i)
     out << "  fixel " << i << ": v_t = " << to_string(S.tangential_velocity[i])
-        << (S.sliding[i] > 0 ? ", slides +t" : S.sliding[i] < 0 ? ", slides -t" : ", sticks") << "\n";
+        << (S.sliding[i] > 0   ? ", slides +t"
+            : S.sliding[i] < 0 ? ", slides -t"
+                               : ", sticks")
+        << "\n";
   for (std::size_t k = 0; k < S.generators.size(); ++k)
     out << "  generator g" << k << " (fixel " << S.generator_fixel[k] << ") = " << text(S.generators[k]) << "\n";
   out << "  S = apex - cone(g):  apex = " << text(S.apex) << "\n";
@@ -204,16 +209,18 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
   std::vector<std::string> written = {path};
   if (G) {
     for (std::size_t k = 0; k < G->pieces.size(); ++k) {
-      const std::string piece_path = (std::filesystem::path(dir) / ("guaranteed_" + std::to_string(k) + ".off")).string();
+      const std::string piece_path =
+          (std::filesystem::path(dir) / ("guaranteed_" + std::to_string(k) + ".off")).string();
       std::ofstream piece_out(piece_path);
       if (!piece_out) throw InputError("--off", piece_path, "cannot be written");
       std::vector<Halfspace> rows = G->pieces[k].closed;
       for (const auto& h : G->pieces[k].strict) rows.push_back(h);  // the closure
       for (const auto& h : box.halfspaces()) rows.push_back(h);
-      write_polytope_off(piece_out, rows, S.dof,
-                         {"fixel: piece " + std::to_string(k) + " of the guaranteed set G of scene \"" + scene.name + "\"",
-                          "its closure (" + std::to_string(G->pieces[k].strict.size()) +
-                              " strict rows drawn as closed), clipped to the box " + box.describe()});
+      write_polytope_off(
+          piece_out, rows, S.dof,
+          {"fixel: piece " + std::to_string(k) + " of the guaranteed set G of scene \"" + scene.name + "\"",
+           "its closure (" + std::to_string(G->pieces[k].strict.size()) +
+               " strict rows drawn as closed), clipped to the box " + box.describe()});
       written.push_back(piece_path);
     }
   }
@@ -252,20 +259,22 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
         std::vector<Halfspace> hs;
         for (const auto& a : cone->facets) hs.push_back({a, Rational(0)});
         for (const auto& h : cube.halfspaces()) hs.push_back(h);
-        const std::string name = "segment_" + std::to_string(k) + "_" +
-                                 (family == EdgeFamily::kNormal ? "normal" : (family == EdgeFamily::kMinus ? "minus" : "plus")) +
-                                 "_" + (method == ConeMethod::kTight ? "tight" : "paper") + ".off";
+        const std::string name =
+            "segment_" + std::to_string(k) + "_" +
+            (family == EdgeFamily::kNormal ? "normal" : (family == EdgeFamily::kMinus ? "minus" : "plus")) + "_" +
+            (method == ConeMethod::kTight ? "tight" : "paper") + ".off";
         const std::string cone_path = (std::filesystem::path(dir) / name).string();
         std::ofstream cone_out(cone_path);
         if (!cone_out) throw InputError("--off", cone_path, "cannot be written");
         std::string gens;
         for (const auto& g : cone->generators) gens += text(g) + " ";
-        write_polytope_off(cone_out, hs, 3,
-                           {"fixel: wrench cone of curve " + std::to_string(piece.curve) + ", u in [" + to_string(piece.u0) +
-                                ", " + to_string(piece.u1) + "], family " + to_string(family) + ", " +
-                                (method == ConeMethod::kTight ? "tight" : "paper") + " cone",
-                            "wrench space (fx, fy, moment about the centre of mass), clipped to the box " + cube.describe(),
-                            "generators " + gens});
+        write_polytope_off(
+            cone_out, hs, 3,
+            {"fixel: wrench cone of curve " + std::to_string(piece.curve) + ", u in [" + to_string(piece.u0) + ", " +
+                 to_string(piece.u1) + "], family " + to_string(family) + ", " +
+                 (method == ConeMethod::kTight ? "tight" : "paper") + " cone",
+             "wrench space (fx, fy, moment about the centre of mass), clipped to the box " + cube.describe(),
+             "generators " + gens});
         written.push_back(cone_path);
       }
   }
@@ -331,8 +340,8 @@ std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::v
 
 std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
   std::ostringstream out;
-  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " ("
-      << outcomes.size() << " distinct, by exact enumeration of contact modes)\n";
+  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " (" << outcomes.size()
+      << " distinct, by exact enumeration of contact modes)\n";
   int seating = 0;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {
     const auto& o = outcomes[k];
@@ -416,8 +425,10 @@ std::string region_text(const Scene& scene, const Region& region, const std::str
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");
     if (r.status == RegionStatus::kIn) {
       out << (r.half_line ? "  half-line" : "");
-      if (!r.magnitudes.empty) out << "  |p| in " << r.magnitudes.describe() << " N*s";
-      else out << "  no common magnitude";
+      if (!r.magnitudes.empty)
+        out << "  |p| in " << r.magnitudes.describe() << " N*s";
+      else
+        out << "  no common magnitude";
     }
     out << "\n";
   }

@@ -31,13 +31,13 @@ class ExactDomBuilder {
   bool end_array() { return close(); }
   bool key(json::string_t& k) {
     auto& keys = keys_.back();
-    if (!keys.insert(k).second)
-      throw ParseError(source_, "key \"" + k + "\"", "appears twice in one object");
+    if (!keys.insert(k).second) throw ParseError(source_, "key \"" + k + "\"", "appears twice in one object");
     pending_key_ = k;
     return true;
   }
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
-    throw ParseError(source_, "at byte " + std::to_string(position), std::string("is not valid JSON (") + ex.what() + ")");
+    throw ParseError(source_, "at byte " + std::to_string(position),
+                     std::string("is not valid JSON (") + ex.what() + ")");
   }
 
   json result() { return std::move(root_); }

@@ -17,7 +17,8 @@ class Tableau {
   Tableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())) {
     for (int i = 0; i < n_; ++i) {
       scale_ = boost::multiprecision::lcm(scale_, boost::multiprecision::denominator(b[i]));
-      for (int j = 0; j < n_; ++j) scale_ = boost::multiprecision::lcm(scale_, boost::multiprecision::denominator(B(i, j)));
+      for (int j = 0; j < n_; ++j)
+        scale_ = boost::multiprecision::lcm(scale_, boost::multiprecision::denominator(B(i, j)));
     }
     T_.assign(n_, std::vector<Integer>(2 * n_ + 2, Integer(0)));
     basis_.resize(n_);
@@ -88,8 +89,10 @@ class Tableau {
     for (int i = 0; i < n_; ++i) {
       const int v = basis_[i];
       const Rational value(T_[i][rhs()], D_);
-      if (v < n_) w[v] = value / Rational(scale_);
-      else if (v < 2 * n_) z[v - n_] = value;
+      if (v < n_)
+        w[v] = value / Rational(scale_);
+      else if (v < 2 * n_)
+        z[v - n_] = value;
     }
   }
 
@@ -107,9 +110,12 @@ class Tableau {
 
 std::string to_string(LemkeStatus status) {
   switch (status) {
-    case LemkeStatus::kSolved: return "solved";
-    case LemkeStatus::kRayTermination: return "ray termination";
-    case LemkeStatus::kPivotLimit: return "pivot limit";
+    case LemkeStatus::kSolved:
+      return "solved";
+    case LemkeStatus::kRayTermination:
+      return "ray termination";
+    case LemkeStatus::kPivotLimit:
+      return "pivot limit";
   }
   return "unknown";
 }

@@ -1,11 +1,11 @@
 #include "fixel/off_io.h"
 
+#include <CGAL/IO/OFF.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost_mp.h>
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/convex_hull_3.h>
-#include <CGAL/IO/OFF.h>
 
 #include <sstream>
 
@@ -124,7 +124,8 @@ std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& 
     }
     if (face.size() >= 3) faces.push_back(face);
   } else {
-    for (const auto& v : vertices) points.emplace_back(to_double(v[0]), to_double(v[1]), dim == 3 ? to_double(v[2]) : 0.0);
+    for (const auto& v : vertices)
+      points.emplace_back(to_double(v[0]), to_double(v[1]), dim == 3 ? to_double(v[2]) : 0.0);
   }
   std::ostringstream off;
   off.precision(17);

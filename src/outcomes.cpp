@@ -56,10 +56,14 @@ Outcome make_outcome(const Scene& scene, const ContactMatrices& W, const std::ve
 
 std::string to_string(ContactMode mode) {
   switch (mode) {
-    case ContactMode::kOpen: return "open";
-    case ContactMode::kSlidePlus: return "slide+";
-    case ContactMode::kSlideMinus: return "slide-";
-    case ContactMode::kStick: return "stick";
+    case ContactMode::kOpen:
+      return "open";
+    case ContactMode::kSlidePlus:
+      return "slide+";
+    case ContactMode::kSlideMinus:
+      return "slide-";
+    case ContactMode::kStick:
+      return "stick";
   }
   return "?";
 }
@@ -162,7 +166,8 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
           auto bounded = rows;
           VectorQ g = VectorQ::Zero(n);
           g.head(scene.body.dof) = W.Wn.col(i);
-          bounded.push_back({g, internal::Relation::kGreaterEqual, Rational(1) - scene.fixels[i].gap / scene.time_step});
+          bounded.push_back(
+              {g, internal::Relation::kGreaterEqual, Rational(1) - scene.fixels[i].gap / scene.time_step});
           y = internal::solve_lp(n, bounded).x;
         }
         if (y.size() == 0) continue;
@@ -198,8 +203,9 @@ Outcome outcome_from_lcp_solution(const Scene& scene, const VectorQ& p_ext, cons
   std::vector<ContactMode> modes(nc);
   for (int i = 0; i < nc; ++i) {
     const Rational vt = W.Wt.col(i).dot(nu);
-    modes[i] = p_n[i] == 0 ? ContactMode::kOpen
-                           : (vt > 0 ? ContactMode::kSlidePlus : (vt < 0 ? ContactMode::kSlideMinus : ContactMode::kStick));
+    modes[i] = p_n[i] == 0
+                   ? ContactMode::kOpen
+                   : (vt > 0 ? ContactMode::kSlidePlus : (vt < 0 ? ContactMode::kSlideMinus : ContactMode::kStick));
   }
   return make_outcome(scene, W, modes, x, true);
 }

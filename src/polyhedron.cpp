@@ -47,8 +47,10 @@ void drop_parallel_redundancy(Polyhedron& P) {
     bool replaced = false, dominated = false;
     for (auto& k : kept) {
       if (k.h.a != r.h.a || r.h.a.isZero()) continue;
-      if (tighter(r.h, r.strict, k.h, k.strict)) k = r;
-      else dominated = true;
+      if (tighter(r.h, r.strict, k.h, k.strict))
+        k = r;
+      else
+        dominated = true;
       replaced = true;
       break;
     }
@@ -120,11 +122,15 @@ std::vector<Polyhedron> subtract(const Polyhedron& Q, const Polyhedron& P) {
     Polyhedron piece = prefix;
     // Violating a·p >= c is a·p < c, i.e. (−a)·p > −c; violating a·p > c is (−a)·p >= −c.
     const Halfspace flipped{VectorQ(-row.h.a), Rational(-row.h.c)};
-    if (row.strict) add_unique(piece.closed, flipped);
-    else add_unique(piece.strict, flipped);
+    if (row.strict)
+      add_unique(piece.closed, flipped);
+    else
+      add_unique(piece.strict, flipped);
     if (!is_empty(piece)) out.push_back(piece);
-    if (row.strict) add_unique(prefix.strict, row.h);
-    else add_unique(prefix.closed, row.h);
+    if (row.strict)
+      add_unique(prefix.strict, row.h);
+    else
+      add_unique(prefix.closed, row.h);
     if (is_empty(prefix)) break;  // nothing of Q is left inside P's remaining rows
   }
   return out;
@@ -177,9 +183,12 @@ Polyhedron project_out_x(const LiftedSystem& s) {
   for (int j : free_x) {
     std::vector<Row> pos, neg, next;
     for (auto& row : in) {
-      if (row.a[j] > 0) pos.push_back(row);
-      else if (row.a[j] < 0) neg.push_back(row);
-      else next.push_back(row);
+      if (row.a[j] > 0)
+        pos.push_back(row);
+      else if (row.a[j] < 0)
+        neg.push_back(row);
+      else
+        next.push_back(row);
     }
     for (const auto& P : pos)
       for (const auto& N : neg) {

@@ -78,7 +78,8 @@ Rational parse_rational(const std::string& text, const std::string& field) {
       frac_part = mantissa.substr(dot + 1);
     }
     if ((int_part.empty() && frac_part.empty()) || (!int_part.empty() && !all_digits(int_part)) ||
-        (!frac_part.empty() && !all_digits(frac_part)) || (dot != std::string::npos && int_part.empty() && frac_part.empty()))
+        (!frac_part.empty() && !all_digits(frac_part)) ||
+        (dot != std::string::npos && int_part.empty() && frac_part.empty()))
       fail(text, field);
     value = Rational(decimal_integer(int_part + frac_part)) * pow10(exponent - static_cast<long>(frac_part.size()));
   }

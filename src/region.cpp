@@ -115,8 +115,8 @@ bool cone_misses_piece(Context& ctx, const std::vector<VectorQ>& gens, const Pol
 
 // Classification of a cone (generators with force directions in
 // cone(d_first, d_last)) against the non-convex G.
-RegionStatus classify_against_g(Context& ctx, const std::vector<VectorQ>& gens, const Vec2& d_first,
-                                const Vec2& d_last, RegionInterval* out) {
+RegionStatus classify_against_g(Context& ctx, const std::vector<VectorQ>& gens, const Vec2& d_first, const Vec2& d_last,
+                                RegionInterval* out) {
   for (const auto& piece : ctx.G->pieces) {
     std::vector<Magnitudes> T;
     bool all = true;
@@ -307,7 +307,8 @@ void check_inputs(const Scene& scene, const Rational& mu, const GuaranteedSet* G
     throw UnsupportedError("--pusher-mu", to_string(mu),
                            "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
                            "does not make every push direction between them hit G (use a frictionless pusher)");
-  if (!scene.body.boundary) throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
+  if (!scene.body.boundary)
+    throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no boundary to push on");
   if (mu < 0) throw InputError("--pusher-mu", to_string(mu), "must be >= 0");
 }
@@ -371,9 +372,12 @@ std::string Magnitudes::describe() const {
 
 std::string to_string(RegionStatus status) {
   switch (status) {
-    case RegionStatus::kIn: return "in";
-    case RegionStatus::kOut: return "out";
-    case RegionStatus::kPartial: return "partial";
+    case RegionStatus::kIn:
+      return "in";
+    case RegionStatus::kOut:
+      return "out";
+    case RegionStatus::kPartial:
+      return "partial";
   }
   return "?";
 }
@@ -411,7 +415,8 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
   check_inputs(scene, mu, options.guaranteed);
   if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{scene, S, scene.background_impulse, mu, options.cone, options.resolution, RegionStats{}, options.guaranteed};
+  Context ctx{
+      scene, S, scene.background_impulse, mu, options.cone, options.resolution, RegionStats{}, options.guaranteed};
   const std::vector<Join> js = joins(b);
   std::vector<RegionInterval> raw;
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {

@@ -23,9 +23,7 @@ std::string describe(const json& v) {
 }
 
 // Checks that `obj` is an object whose keys are all in `allowed`.
-std::string join(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 
 // `path` is empty for the document root, which `source` then names.
 void expect_object(const json& obj, const std::string& path, const std::set<std::string>& allowed,
@@ -50,9 +48,9 @@ Rational number(const json& v, const std::string& path) {
 VectorQ vector(const json& v, const std::string& path, int expected_length, const std::string& why) {
   if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of numbers");
   if (static_cast<int>(v.size()) != expected_length)
-    throw SceneError(path, describe(v),
-                     "has " + std::to_string(v.size()) + " entries but " + why + " needs " +
-                         std::to_string(expected_length));
+    throw SceneError(
+        path, describe(v),
+        "has " + std::to_string(v.size()) + " entries but " + why + " needs " + std::to_string(expected_length));
   VectorQ out(expected_length);
   for (int i = 0; i < expected_length; ++i) out[i] = number(v[i], path + "[" + std::to_string(i) + "]");
   return out;
@@ -172,8 +170,10 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
   } else {
     b.mass = b.boundary->mass.area;
   }
-  if (body.contains("center_of_mass")) b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
-  else b.p_AoCm_A = has_boundary ? b.boundary->mass.centroid : Vec2{Rational(0), Rational(0)};
+  if (body.contains("center_of_mass"))
+    b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
+  else
+    b.p_AoCm_A = has_boundary ? b.boundary->mass.centroid : Vec2{Rational(0), Rational(0)};
   if (b.dof == 3) {
     if (body.contains("inertia")) {
       b.inertia = number(body.at("inertia"), "body.inertia");
@@ -187,8 +187,9 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
   } else if (body.contains("inertia")) {
     throw SceneError("body.inertia", describe(body.at("inertia")), "is not allowed for a point mass (dof 2)");
   }
-  b.velocity = body.contains("velocity") ? vector(body.at("velocity"), "body.velocity", b.dof, "dof " + std::to_string(b.dof))
-                                         : VectorQ::Zero(b.dof);
+  b.velocity = body.contains("velocity")
+                   ? vector(body.at("velocity"), "body.velocity", b.dof, "dof " + std::to_string(b.dof))
+                   : VectorQ::Zero(b.dof);
 
   const json& fixels = require(root, "fixels", "");
   if (!fixels.is_array()) throw SceneError("fixels", describe(fixels), "must be an array");
@@ -209,9 +210,9 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
     scene.fixels.push_back(fx);
   }
   if (scene.num_contacts() != b.dof)
-    throw SceneError("fixels", std::to_string(scene.num_contacts()) + " fixels",
-                     "but dof is " + std::to_string(b.dof) +
-                         ": the seating analysis needs exactly dof fixels (n_c == dof)");
+    throw SceneError(
+        "fixels", std::to_string(scene.num_contacts()) + " fixels",
+        "but dof is " + std::to_string(b.dof) + ": the seating analysis needs exactly dof fixels (n_c == dof)");
 
   scene.pusher_mu = Rational(0);
   if (root.contains("pusher")) {
@@ -222,10 +223,10 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
       require_nonnegative(scene.pusher_mu, "pusher.mu");
     }
   }
-  scene.background_impulse = root.contains("background_impulse")
-                                 ? vector(root.at("background_impulse"), "background_impulse", b.dof,
-                                          "dof " + std::to_string(b.dof))
-                                 : VectorQ::Zero(b.dof);
+  scene.background_impulse =
+      root.contains("background_impulse")
+          ? vector(root.at("background_impulse"), "background_impulse", b.dof, "dof " + std::to_string(b.dof))
+          : VectorQ::Zero(b.dof);
 
   check_fixture_determines_motion(scene);
   return scene;
@@ -243,8 +244,9 @@ Scene load_scene(const std::string& path) {
 VectorQ parse_impulse(const std::string& text, int dof, const std::string& field) {
   const std::vector<Rational> values = parse_rational_list(text, field);
   if (static_cast<int>(values.size()) != dof)
-    throw InputError(field, "\"" + text + "\"",
-                     "has " + std::to_string(values.size()) + " components but the scene has dof " + std::to_string(dof));
+    throw InputError(
+        field, "\"" + text + "\"",
+        "has " + std::to_string(values.size()) + " components but the scene has dof " + std::to_string(dof));
   VectorQ p(dof);
   for (int i = 0; i < dof; ++i) p[i] = values[i];
   return p;

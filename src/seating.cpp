@@ -68,10 +68,10 @@ SeatingSystem seating_system(const Scene& scene, const SeatingSet& S) {
   // Which half of each friction pair survives depends on the sliding sign:
   // v_t > 0 means friction along −t, so (p_f)_2 and (ρ_f)_1 are kept.
   auto friction_index = [&](int i, bool minus_column) { return nc + 2 * i + (minus_column ? 1 : 0); };
-  for (int i = 0; i < nc; ++i) sys.kept.push_back(friction_index(i, S.sliding[i] < 0));  // ρ_f (w block)
-  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + i);                              // p_n
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(friction_index(i, S.sliding[i] < 0));      // ρ_f (w block)
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + i);                                    // p_n
   for (int i = 0; i < nc; ++i) sys.kept.push_back(n + friction_index(i, S.sliding[i] > 0));  // p_f
-  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + 3 * nc + i);                     // s
+  for (int i = 0; i < nc; ++i) sys.kept.push_back(n + 3 * nc + i);                           // s
 
   sys.K = MatrixQ(n, n);
   for (int k = 0; k < n; ++k) {

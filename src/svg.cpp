@@ -41,9 +41,12 @@ bool hits_display(const SeatingSet& S, const VectorQ& b0, double fx, double fy, 
   for (const auto& h : S.halfspaces) {
     const double a = d(h.a[0]) * fx + d(h.a[1]) * fy + d(h.a[2]) * m;
     const double b = d(h.c) - (d(h.a[0]) * d(b0[0]) + d(h.a[1]) * d(b0[1]) + d(h.a[2]) * d(b0[2]));
-    if (a > 1e-15) lo = std::max(lo, b / a);
-    else if (a < -1e-15) hi = std::min(hi, b / a);
-    else if (b > 0) return false;
+    if (a > 1e-15)
+      lo = std::max(lo, b / a);
+    else if (a < -1e-15)
+      hi = std::min(hi, b / a);
+    else if (b > 0)
+      return false;
   }
   return lo <= hi;
 }
@@ -79,11 +82,12 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
   svg << "<text x='" << kMargin << "' y='24' font-size='16' font-weight='bold'>fixel pushing region: " << scene.name
       << "</text>\n<text x='" << kMargin << "' y='44'>cone " << method << ", resolution " << to_string(resolution)
       << ", pusher mu " << to_string(pusher_mu) << ", intervals: " << counts[RegionStatus::kIn] << " in, "
-      << counts[RegionStatus::kPartial] << " partial, " << counts[RegionStatus::kOut] << " out; " << region.stats.cone_tests
-      << " cone tests</text>\n";
+      << counts[RegionStatus::kPartial] << " partial, " << counts[RegionStatus::kOut] << " out; "
+      << region.stats.cone_tests << " cone tests</text>\n";
   const double ly = kHeight + 60;
   const std::pair<RegionStatus, const char*> keys[] = {
-      {RegionStatus::kIn, "in: one push seats the part"}, {RegionStatus::kPartial, "partial (undecided at the resolution)"},
+      {RegionStatus::kIn, "in: one push seats the part"},
+      {RegionStatus::kPartial, "partial (undecided at the resolution)"},
       {RegionStatus::kOut, "out"}};
   double lx = kMargin;
   for (const auto& [status, label] : keys) {
@@ -107,7 +111,8 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
             << "' stroke='black' stroke-width='0.5'/>\n";
         continue;
       }
-      svg << "<polyline fill='none' stroke-width='6' stroke-linecap='round' stroke='" << colour(r.status) << "' points='";
+      svg << "<polyline fill='none' stroke-width='6' stroke-linecap='round' stroke='" << colour(r.status)
+          << "' points='";
       for (int k = 0; k <= 24; ++k) {
         const Vec2 p = piece.point(piece.local(a + (e - a) * Rational(k, 24)));
         svg << F.x(d(p.x)) << "," << F.y(d(p.y)) << " ";
@@ -136,8 +141,10 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
 
   // Right panel: wrench directions on the unit sphere.
   const double x0 = px(-180), y0 = py(90);
-  svg << "<text x='" << x0 << "' y='" << y0 - 8 << "'>unit wrench directions: longitude = push direction, latitude = "
-         "atan(moment / |force|)</text>\n<text x='" << x0 << "' y='" << py(-90) + 50
+  svg << "<text x='" << x0 << "' y='" << y0 - 8
+      << "'>unit wrench directions: longitude = push direction, latitude = "
+         "atan(moment / |force|)</text>\n<text x='"
+      << x0 << "' y='" << py(-90) + 50
       << "'>curve: frictionless boundary wrench by status; outlines: tight piece cones</text>\n";
   const int nlon = 120, nlat = 60;
   for (int i = 0; i < nlon; ++i)
@@ -246,13 +253,14 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
   if (impulse && (*impulse)[2] == theta) mark(*impulse, "p", "black");
   svg << "<rect x='" << left << "' y='" << top << "' width='" << size << "' height='" << size
       << "' fill='none' stroke='#999'/>\n<text x='" << left << "' y='24' font-size='16' font-weight='bold'>"
-      << "seating set S and guaranteed set G: " << scene.name << "</text>\n<text x='" << left << "' y='44'>slice p_theta = "
-      << to_string(theta) << ", p_x in [" << to_double(cx - span / 2) << ", " << to_double(cx + span / 2)
-      << "], p_y in [" << to_double(cy - span / 2) << ", " << to_double(cy + span / 2) << "] (N*s)</text>\n";
+      << "seating set S and guaranteed set G: " << scene.name << "</text>\n<text x='" << left
+      << "' y='44'>slice p_theta = " << to_string(theta) << ", p_x in [" << to_double(cx - span / 2) << ", "
+      << to_double(cx + span / 2) << "], p_y in [" << to_double(cy - span / 2) << ", " << to_double(cy + span / 2)
+      << "] (N*s)</text>\n";
   const double ly = top + size + 28;
   svg << "<rect x='" << left << "' y='" << ly - 10 << "' width='14' height='10' fill='#1a9850'/><text x='" << left + 20
-      << "' y='" << ly << "'>in G: every outcome seats (" << in_g << " cells)</text>\n<rect x='" << left + 330 << "' y='"
-      << ly - 10 << "' width='14' height='10' fill='#d73027'/><text x='" << left + 350 << "' y='" << ly
+      << "' y='" << ly << "'>in G: every outcome seats (" << in_g << " cells)</text>\n<rect x='" << left + 330
+      << "' y='" << ly - 10 << "' width='14' height='10' fill='#d73027'/><text x='" << left + 350 << "' y='" << ly
       << "'>in S, not in G (" << lost << " cells)</text>\n<text x='" << left << "' y='" << ly + 22
       << "'>white: outside S. Each cell's centre is decided exactly; " << G.pieces.size() << " pieces, "
       << G.non_seating.size() << " non-seating sets meet S.</text>\n</svg>\n";

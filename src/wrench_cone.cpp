@@ -88,7 +88,7 @@ WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Ve
 }
 
 std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de,
-                                 bool with_facets) {
+                                bool with_facets) {
   const Vec2 us = internal::unit_direction_outward(ds, true), ue = internal::unit_direction_outward(de, false);
   const Rational span = cross(us, ue);
   if (span < 0 || (span == 0 && dot(us, ue) < 0)) return std::nullopt;  // rounding reached π
@@ -173,10 +173,14 @@ Rational sqrt_lower(const Rational& x) {
 
 std::string to_string(EdgeFamily family) {
   switch (family) {
-    case EdgeFamily::kNormal: return "normal";
-    case EdgeFamily::kMinus: return "n-mu*t";
-    case EdgeFamily::kPlus: return "n+mu*t";
-    case EdgeFamily::kWholeCone: return "friction cone";
+    case EdgeFamily::kNormal:
+      return "normal";
+    case EdgeFamily::kMinus:
+      return "n-mu*t";
+    case EdgeFamily::kPlus:
+      return "n+mu*t";
+    case EdgeFamily::kWholeCone:
+      return "friction cone";
   }
   return "?";
 }
@@ -184,10 +188,13 @@ std::string to_string(EdgeFamily family) {
 Vec2 push_direction(const Vec2& tangent, EdgeFamily family, const Rational& mu) {
   const Vec2 n = rot90(tangent), t = rot90(n);
   switch (family) {
-    case EdgeFamily::kNormal: return n;
-    case EdgeFamily::kPlus: return {n.x + mu * t.x, n.y + mu * t.y};
+    case EdgeFamily::kNormal:
+      return n;
+    case EdgeFamily::kPlus:
+      return {n.x + mu * t.x, n.y + mu * t.y};
     case EdgeFamily::kMinus:
-    case EdgeFamily::kWholeCone: return {n.x - mu * t.x, n.y - mu * t.y};
+    case EdgeFamily::kWholeCone:
+      return {n.x - mu * t.x, n.y - mu * t.y};
   }
   return n;
 }

@@ -35,7 +35,7 @@ TEST(ConeFacets, FourRayPyramidHasFourFacetsAndRedundantRaysAreIgnored) {
   const auto f = cone_facet_normals(rays, 3);
   EXPECT_EQ(f.size(), 4u);
   EXPECT_TRUE(in_cone(f, v({0, 0, 1})));
-  EXPECT_TRUE(in_cone(f, v({1, 1, 1})));        // on an edge
+  EXPECT_TRUE(in_cone(f, v({1, 1, 1})));  // on an edge
   EXPECT_FALSE(in_cone(f, v({2, 0, 1})));
 }
 

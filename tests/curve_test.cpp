@@ -55,13 +55,15 @@ Vec2 cox_de_boor(const Curve& c, const Rational& u) {
 
 Curve random_bspline(std::mt19937_64& rng, int p, int n, bool clamped) {
   std::vector<Vec2> pts;
-  for (int i = 0; i < n; ++i) pts.push_back({testing::random_rational(rng, -3, 3, 7), testing::random_rational(rng, -3, 3, 7)});
+  for (int i = 0; i < n; ++i)
+    pts.push_back({testing::random_rational(rng, -3, 3, 7), testing::random_rational(rng, -3, 3, 7)});
   // Clamped: p + 1 equal end knots; interior knots may repeat (up to p times
   // here, increments are 0 with probability 1/7). Unclamped: strictly increasing.
   std::vector<Rational> knots;
   Rational u = 0;
   for (int i = 0; i < n + p + 1; ++i) {
-    if (clamped && i > p && i <= n) u += (i == n || i == p + 1 ? Rational(1, 3) : Rational(0)) + testing::random_rational(rng, 0, 2, 3);
+    if (clamped && i > p && i <= n)
+      u += (i == n || i == p + 1 ? Rational(1, 3) : Rational(0)) + testing::random_rational(rng, 0, 2, 3);
     if (!clamped && i > 0) u += Rational(1, 3) + testing::random_rational(rng, 0, 2, 3);
     knots.push_back(u);
   }
@@ -145,8 +147,10 @@ TEST(Curve, RejectsBadKnotsAndControlCounts) {
             "body.boundary[0].knots: 7 knots but 4 control points of degree 3 need 8 (n + degree + 1)");
   EXPECT_EQ(message(bspline(3, {0, 0, 0, 1, 0, 1, 1, 1}, pts)),
             "body.boundary[0].knots[4]: 0 is smaller than the previous knot 1: knots must be non-decreasing");
-  EXPECT_EQ(message(bspline(2, {0, 0, 0, 0, 1, 1, 1}, pts)), "body.boundary[0].knots: 0 has multiplicity 4 > degree + 1 = 3");
-  EXPECT_EQ(message(bspline(3, {0, 0, 0, 0}, {{0, 0}})), "body.boundary[0].control_points: 1 point(s) a degree-3 B-spline needs at least 4");
+  EXPECT_EQ(message(bspline(2, {0, 0, 0, 0, 1, 1, 1}, pts)),
+            "body.boundary[0].knots: 0 has multiplicity 4 > degree + 1 = 3");
+  EXPECT_EQ(message(bspline(3, {0, 0, 0, 0}, {{0, 0}})),
+            "body.boundary[0].control_points: 1 point(s) a degree-3 B-spline needs at least 4");
   EXPECT_EQ(message(polyline({{0, 0}, {0, 0}, {1, 1}, {0, 0}})),
             "body.boundary[0].points[1]: (0, 0) repeats the previous point: a zero-length edge has no normal");
 }
@@ -205,8 +209,8 @@ TEST(MassProperties, DegreeOneBSplineEqualsThePolygonAndSubdivisionChangesNothin
 TEST(MassProperties, ParabolicSegmentIsTwoThirdsOfItsControlTriangle) {
   // Archimedes: the region between a quadratic Bézier arc and its chord.
   const Vec2 P0{0, 0}, P1{2, 4}, P2{5, 1};
-  const Boundary b = make_boundary(
-      {bspline(2, {0, 0, 0, 1, 1, 1}, {P2, P1, P0}), polyline({P0, P2})});  // counter-clockwise
+  const Boundary b =
+      make_boundary({bspline(2, {0, 0, 0, 1, 1, 1}, {P2, P1, P0}), polyline({P0, P2})});  // counter-clockwise
   const Rational triangle = ((P1.x - P0.x) * (P2.y - P0.y) - (P1.y - P0.y) * (P2.x - P0.x)) / 2;
   EXPECT_EQ(b.mass.area, Rational(2, 3) * boost::multiprecision::abs(triangle));
 }

@@ -116,9 +116,7 @@ TEST(Lemke, PivotLimitIsAStatusNotASolution) {
   EXPECT_EQ(r.z.size(), 0);
 }
 
-TEST(Lemke, RejectsMismatchedSizes) {
-  EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError);
-}
+TEST(Lemke, RejectsMismatchedSizes) { EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError); }
 
 // Lemke's theorem: for positive semidefinite B (copositive-plus), the
 // lexicographic method ends with a solution exactly when one exists. Random
@@ -177,10 +175,10 @@ TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
 TEST(IsSolution, RejectsEachViolatedCondition) {
   const MatrixQ B = mat({{1}});
   EXPECT_TRUE(is_solution(B, vec({-1}), vec({0}), vec({1})));
-  EXPECT_FALSE(is_solution(B, vec({-1}), vec({1}), vec({1})));    // w ≠ Bz + b
-  EXPECT_FALSE(is_solution(B, vec({-1}), vec({-1}), vec({0})));   // w < 0
-  EXPECT_FALSE(is_solution(B, vec({1}), vec({0}), vec({-1})));    // z < 0
-  EXPECT_FALSE(is_solution(B, vec({1}), vec({2}), vec({1})));     // wᵀz ≠ 0
+  EXPECT_FALSE(is_solution(B, vec({-1}), vec({1}), vec({1})));   // w ≠ Bz + b
+  EXPECT_FALSE(is_solution(B, vec({-1}), vec({-1}), vec({0})));  // w < 0
+  EXPECT_FALSE(is_solution(B, vec({1}), vec({0}), vec({-1})));   // z < 0
+  EXPECT_FALSE(is_solution(B, vec({1}), vec({2}), vec({1})));    // wᵀz ≠ 0
 }
 
 }  // namespace

@@ -29,9 +29,9 @@ TEST(PolytopeVertices, UnitCubeHasEightVertices) {
 
 TEST(PolytopeVertices, CubeCutByADiagonalPlaneKeepsACorner) {
   auto hs = Box{v3(0, 0, 0), v3(1, 1, 1)}.halfspaces();
-  hs.push_back({v3(-1, -1, -1), Rational(-1)});  // x + y + z <= 1
+  hs.push_back({v3(-1, -1, -1), Rational(-1)});    // x + y + z <= 1
   EXPECT_EQ(polytope_vertices(hs, 3).size(), 4u);  // the corner simplex
-  hs.push_back({v3(1, 1, 1), Rational(2)});       // and x + y + z >= 2: empty
+  hs.push_back({v3(1, 1, 1), Rational(2)});        // and x + y + z >= 2: empty
   EXPECT_TRUE(polytope_vertices(hs, 3).empty());
 }
 

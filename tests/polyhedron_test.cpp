@@ -58,9 +58,9 @@ TEST(Polyhedron, ProjectionEliminatesEqualitiesAndFreeVariables) {
   s.A_eq << 1, 0, -1, -1;
   s.b_eq = VectorQ::Zero(1);
   s.A_in = MatrixQ(3, 4);
-  s.A_in << 0, 1, 0, 0,   // x2 >= 0
-      1, -1, 0, 0,        // x1 − x2 >= 1
-      0, 1, 0, -1;        // x2 − p2 > −3
+  s.A_in << 0, 1, 0, 0,  // x2 >= 0
+      1, -1, 0, 0,       // x1 − x2 >= 1
+      0, 1, 0, -1;       // x2 − p2 > −3
   s.b_in = VectorQ(3);
   s.b_in << 0, 1, -3;
   s.strict_in = {false, false, true};

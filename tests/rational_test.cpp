@@ -33,19 +33,18 @@ TEST(ParseRational, AcceptsExponents) {
   EXPECT_EQ(parse_rational("1e-3"), Rational(1, 1000));
   EXPECT_EQ(parse_rational("2.5E2"), Rational(250));
   EXPECT_EQ(parse_rational("-1.25e+1"), Rational(-25, 2));
-  EXPECT_EQ(parse_rational("1e-30"), Rational(Integer(1),
-                                              boost::multiprecision::pow(Integer(10), 30)));
+  EXPECT_EQ(parse_rational("1e-30"), Rational(Integer(1), boost::multiprecision::pow(Integer(10), 30)));
 }
 
 TEST(ParseRational, ReadsDigitsBeyondDoublePrecisionExactly) {
   // 0.1000000000000000000001 is not a double; the difference must survive.
   EXPECT_NE(parse_rational("0.1000000000000000000001"), Rational(1, 10));
-  EXPECT_EQ(parse_rational("0.1000000000000000000001") - Rational(1, 10),
-            parse_rational("1e-22"));
+  EXPECT_EQ(parse_rational("0.1000000000000000000001") - Rational(1, 10), parse_rational("1e-22"));
 }
 
 TEST(ParseRational, RejectsMalformedTextNamingTheField) {
-  for (const char* bad : {"", "abc", "1/0", "1/-2", "--1", "1e", "1.2.3", " 1", "1 ", "0x10", "nan", "inf", ".", "e5", "1/2/3"}) {
+  for (const char* bad :
+       {"", "abc", "1/0", "1/-2", "--1", "1e", "1.2.3", " 1", "1 ", "0x10", "nan", "inf", ".", "e5", "1/2/3"}) {
     try {
       parse_rational(bad, "fixels[0].mu");
       ADD_FAILURE() << "accepted \"" << bad << "\"";

@@ -130,7 +130,8 @@ TEST(Region, CertifiedMagnitudesSeatEveryPushDirection) {
       for (const auto& piece : scene.body.boundary->pieces) {
         if (piece.curve != r.curve || piece.u1 <= r.u0 || piece.u0 >= r.u1) continue;
         for (int k = 0; k <= 8; ++k) {
-          const Rational u = std::max(piece.u0, r.u0) + (std::min(piece.u1, r.u1) - std::max(piece.u0, r.u0)) * Rational(k, 8);
+          const Rational u =
+              std::max(piece.u0, r.u0) + (std::min(piece.u1, r.u1) - std::max(piece.u0, r.u0)) * Rational(k, 8);
           const Vec2 T = piece.derivative(piece.local(u)), p = piece.point(piece.local(u));
           const Vec2 n{-T.y, T.x};
           const Rational L = internal::sqrt_upper(n.x * n.x + n.y * n.y);
@@ -283,7 +284,8 @@ TEST(Region, NonZeroBackgroundImpulseShiftsTheRegion) {
   const Region shifted = compute_region(scene, S, RegionOptions{});
   Rational in_base = 0, in_shifted = 0;
   for (const auto& r : base.intervals) in_base += r.status == RegionStatus::kIn ? Rational(r.u1 - r.u0) : Rational(0);
-  for (const auto& r : shifted.intervals) in_shifted += r.status == RegionStatus::kIn ? Rational(r.u1 - r.u0) : Rational(0);
+  for (const auto& r : shifted.intervals)
+    in_shifted += r.status == RegionStatus::kIn ? Rational(r.u1 - r.u0) : Rational(0);
   EXPECT_NE(in_base, in_shifted);
   // Sound under b0 too.
   for (const auto& r : shifted.intervals)
@@ -309,7 +311,8 @@ TEST(Region, FrictionalPusherWithOneEdgeInAndOneOutIsOutNotPartial) {
   EXPECT_EQ(edge->status, RegionStatus::kOut);
   // The single-cone bound of the whole friction cone is neither IN nor OUT.
   const BezierPiece& piece = scene.body.boundary->pieces[2];
-  const auto whole = segment_wrench_cone(piece, scene.body.p_AoCm_A, EdgeFamily::kWholeCone, Rational(7, 10), ConeMethod::kTight);
+  const auto whole =
+      segment_wrench_cone(piece, scene.body.p_AoCm_A, EdgeFamily::kWholeCone, Rational(7, 10), ConeMethod::kTight);
   ASSERT_TRUE(whole);
   int hit = 0;
   for (const auto& g : whole->generators) hit += ray_magnitudes(S, scene.background_impulse, g).empty ? 0 : 1;

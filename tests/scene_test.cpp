@@ -61,7 +61,8 @@ TEST(Scene, ReadsJsonNumbersFromTheirDecimalText) {
   // 0.1 as a JSON number must be 1/10, not the double nearest to it.
   const Scene s = parse_scene(example2_with(R"("gap": "1/10")", R"("gap": 0.1)"));
   EXPECT_EQ(s.fixels[0].gap, Rational(1, 10));
-  const Scene t = parse_scene(example2_with(R"("mu": "1/10", "gap": "1/10")", R"("mu": 1e-1, "gap": 0.10000000000000000000001)"));
+  const Scene t =
+      parse_scene(example2_with(R"("mu": "1/10", "gap": "1/10")", R"("mu": 1e-1, "gap": 0.10000000000000000000001)"));
   EXPECT_EQ(t.fixels[0].mu, Rational(1, 10));
   EXPECT_EQ(t.fixels[0].gap - Rational(1, 10), parse_rational("1e-23"));
 }
@@ -99,9 +100,10 @@ TEST(Scene, RejectsUnknownFields) {
 }
 
 TEST(Scene, RejectsNonUnitNormal) {
-  expect_error<SceneError>(example2_with(R"("normal": ["0", "1"], "mu": "1/10", "gap": "1/20")",
-                                         R"("normal": ["3/5", "3/5"], "mu": "1/10", "gap": "1/20")"),
-                           "fixels[1].normal: (3/5, 3/5) is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
+  expect_error<SceneError>(
+      example2_with(R"("normal": ["0", "1"], "mu": "1/10", "gap": "1/20")",
+                    R"("normal": ["3/5", "3/5"], "mu": "1/10", "gap": "1/20")"),
+      "fixels[1].normal: (3/5, 3/5) is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
   // A normal that is unit only to double precision is still rejected.
   EXPECT_THROW(parse_scene(example2_with(R"("normal": ["1", "0"])", R"("normal": ["0.6000000000000000001", "0.8"])")),
                SceneError);
@@ -123,7 +125,8 @@ TEST(Scene, RejectsNonPositiveMassInertiaAndTimeStep) {
 TEST(Scene, RejectsBadNumbersNamingThePath) {
   expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": "heavy")"),
                            "body.mass: \"heavy\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
-  expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": true)"), "body.mass: true is not an exact number");
+  expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": true)"),
+                           "body.mass: true is not an exact number");
 }
 
 TEST(Scene, RejectsDofOutsideTwoAndThree) {
@@ -137,8 +140,9 @@ TEST(Scene, RejectsVectorsWhoseLengthDoesNotMatchDof) {
   expect_error<SceneError>(e1, "body.velocity: [\"0\",\"0\",\"0\"] has 3 entries but dof 2 needs 2");
   expect_error<SceneError>(example2_with(R"("name": "example2",)", R"("name": "x", "background_impulse": ["1", "2"],)"),
                            "background_impulse: [\"1\",\"2\"] has 2 entries but dof 3 needs 3");
-  expect_error<SceneError>(example2_with(R"("point": ["-1", "0"])", R"("point": ["-1", "0", "0"])"),
-                           "fixels[0].point: [\"-1\",\"0\",\"0\"] has 3 entries but a planar point or direction needs 2");
+  expect_error<SceneError>(
+      example2_with(R"("point": ["-1", "0"])", R"("point": ["-1", "0", "0"])"),
+      "fixels[0].point: [\"-1\",\"0\",\"0\"] has 3 entries but a planar point or direction needs 2");
 }
 
 TEST(Scene, RejectsInertiaForAPointMass) {
@@ -150,7 +154,8 @@ TEST(Scene, RejectsInertiaForAPointMass) {
 TEST(Scene, RejectsFixelCountDifferentFromDof) {
   const std::string two_fixels = example2_with(
       R"(,
-    {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"})", "");
+    {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"})",
+      "");
   expect_error<SceneError>(two_fixels,
                            "fixels: 2 fixels but dof is 3: the seating analysis needs exactly dof fixels (n_c == dof)");
 }
@@ -159,8 +164,8 @@ TEST(Scene, RejectsSingularFixtureNamingTheDependentFixel) {
   // Fixel 2 at (0, 3) with normal (0, 1) has wrench (0, 1, 0), the same as
   // fixel 1's; sliding it along x to (5, -1) gives moment 5 and independence.
   const std::string independent = example2_with(R"("point": ["1", "-1"])", R"("point": ["5", "-1"])");
-  const std::string dependent = example2_with(R"("point": ["1", "-1"], "normal": ["0", "1"])",
-                                              R"("point": ["0", "3"], "normal": ["0", "1"])");
+  const std::string dependent =
+      example2_with(R"("point": ["1", "-1"], "normal": ["0", "1"])", R"("point": ["0", "3"], "normal": ["0", "1"])");
   EXPECT_NO_THROW(parse_scene(independent));
   expect_error<SceneError>(dependent,
                            "fixels[2]: (0, 3) makes W_n singular: its normal wrench is a combination of the earlier "
@@ -172,9 +177,9 @@ TEST(Scene, RejectsABoundaryThatIsNotAList) {
                            "body.boundary: {} must be an array of curves");
   expect_error<SceneError>(example2_with(R"("inertia": "1", )", R"("boundary": [{"type": "circle"}], )"),
                            "body.boundary[0].type: \"circle\" must be \"polyline\" or \"bspline\"");
-  expect_error<ParseError>(example2_with(R"("inertia": "1", )",
-                                         R"("boundary": [{"type": "polyline", "points": [["0", "x"]]}], )"),
-                           "body.boundary[0].points[0][1]: \"x\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
+  expect_error<ParseError>(
+      example2_with(R"("inertia": "1", )", R"("boundary": [{"type": "polyline", "points": [["0", "x"]]}], )"),
+      "body.boundary[0].points[0][1]: \"x\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
 }
 
 TEST(Scene, ParsesImpulsesAgainstDof) {
@@ -188,9 +193,7 @@ TEST(Scene, ParsesImpulsesAgainstDof) {
   EXPECT_THROW(parse_impulse("1,x,2", 3), ParseError);
 }
 
-TEST(Scene, ReportsUnreadableFile) {
-  EXPECT_THROW(load_scene("/nonexistent/scene.json"), InputError);
-}
+TEST(Scene, ReportsUnreadableFile) { EXPECT_THROW(load_scene("/nonexistent/scene.json"), InputError); }
 
 }  // namespace
 }  // namespace fixel

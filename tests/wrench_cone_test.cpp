@@ -36,7 +36,8 @@ TEST(WrenchCone, HoldsEveryContactWrenchOfRandomSegments) {
   for (int trial = 0; trial < 300; ++trial) {
     BezierPiece piece = random_piece(rng, 1 + trial % 3 + (trial % 5 == 0 ? 2 : 0));
     // Sub-segments of random pieces, as subdivision produces them.
-    const Rational a = testing::random_rational(rng, 0, 1, 8), b = a + Rational(1, 8) + testing::random_rational(rng, 0, 1, 16) / 2;
+    const Rational a = testing::random_rational(rng, 0, 1, 8),
+                   b = a + Rational(1, 8) + testing::random_rational(rng, 0, 1, 16) / 2;
     if (b < 1) piece = piece.restrict_to(a, b);
     const Vec2 com{testing::random_rational(rng, -1, 1, 5), testing::random_rational(rng, -1, 1, 5)};
     const Rational mu = Rational(trial % 4, 5);
@@ -54,7 +55,8 @@ TEST(WrenchCone, HoldsEveryContactWrenchOfRandomSegments) {
           if (family == EdgeFamily::kWholeCone) {
             const Rational lambda = mu * testing::random_rational(rng, -1, 1, 13);
             const Vec2 n = push_direction(T, EdgeFamily::kNormal, mu), t{-n.y, n.x};
-            dirs = {push_direction(T, EdgeFamily::kMinus, mu), push_direction(T, EdgeFamily::kPlus, mu),
+            dirs = {push_direction(T, EdgeFamily::kMinus, mu),
+                    push_direction(T, EdgeFamily::kPlus, mu),
                     {n.x + lambda * t.x, n.y + lambda * t.y}};
           } else {
             dirs = {push_direction(T, family, mu)};
@@ -151,7 +153,8 @@ TEST(WrenchCone, RepeatedControlPointsAreFine) {
   const auto cone = segment_wrench_cone(piece, {0, 0}, EdgeFamily::kNormal, 0, ConeMethod::kTight);
   ASSERT_TRUE(cone);
   for (int k = 1; k <= 8; ++k)  // the tangent vanishes only at s = 0
-    EXPECT_TRUE(cone->contains(exact_wrench(piece, Rational(k, 8), {0, 0}, push_direction(piece.derivative(Rational(k, 8)), EdgeFamily::kNormal, 0))));
+    EXPECT_TRUE(cone->contains(exact_wrench(piece, Rational(k, 8), {0, 0},
+                                            push_direction(piece.derivative(Rational(k, 8)), EdgeFamily::kNormal, 0))));
 }
 
 TEST(WrenchCone, CuspAndFullTurnSegmentsNeedSplitting) {
@@ -166,8 +169,7 @@ TEST(WrenchCone, StraightCubicHasAZeroWidthDirectionCone) {
   const BezierPiece line{0, Rational(0), Rational(1), {{0, 0}, {1, 0}, {2, 0}, {4, 0}}};
   const auto cone = segment_wrench_cone(line, {1, 1}, EdgeFamily::kNormal, 0, ConeMethod::kTight);
   ASSERT_TRUE(cone);
-  for (int k = 0; k <= 8; ++k)
-    EXPECT_TRUE(cone->contains(exact_wrench(line, Rational(k, 8), {1, 1}, {0, 1})));
+  for (int k = 0; k <= 8; ++k) EXPECT_TRUE(cone->contains(exact_wrench(line, Rational(k, 8), {1, 1}, {0, 1})));
   VectorQ off(3);
   off << Rational(1, 1000), 1, 0;  // a direction not normal to the line
   EXPECT_FALSE(cone->contains(off));

@@ -15,9 +15,9 @@ namespace fixel {
 /// A polynomial piece of the boundary in Bézier form. Local parameter
 /// s ∈ [0, 1] maps to the curve parameter u = u0 + s (u1 − u0).
 struct BezierPiece {
-  int curve = 0;               ///< Index of the curve in the boundary list.
-  Rational u0, u1;             ///< Curve-parameter range covered, u0 < u1.
-  std::vector<Vec2> control;   ///< degree + 1 control points, frame A.
+  int curve = 0;              ///< Index of the curve in the boundary list.
+  Rational u0, u1;            ///< Curve-parameter range covered, u0 < u1.
+  std::vector<Vec2> control;  ///< degree + 1 control points, frame A.
 
   int degree() const { return static_cast<int>(control.size()) - 1; }
   /// Point at local parameter s (de Casteljau, exact).
@@ -39,9 +39,9 @@ struct BezierPiece {
 struct Curve {
   enum class Type { kPolyline, kBSpline };
   Type type = Type::kPolyline;
-  int degree = 1;                ///< 1 for a polyline.
-  std::vector<Vec2> points;      ///< Polyline vertices or B-spline control points.
-  std::vector<Rational> knots;   ///< B-spline knots (n + degree + 1), empty for a polyline.
+  int degree = 1;               ///< 1 for a polyline.
+  std::vector<Vec2> points;     ///< Polyline vertices or B-spline control points.
+  std::vector<Rational> knots;  ///< B-spline knots (n + degree + 1), empty for a polyline.
 
   /// Parameter range: [0, k] for a polyline of k + 1 points, [knots[p], knots[n]] for a B-spline.
   Rational u_begin() const;
@@ -58,9 +58,9 @@ struct Curve {
 
 /// Area, centroid and second moment of the enclosed region (Green's theorem).
 struct MassProperties {
-  Rational area;            ///< Enclosed area (> 0 for a valid loop).
-  Vec2 centroid;            ///< Area centroid, frame A.
-  Rational polar_moment;    ///< ∬ |p|² dA about the origin of frame A.
+  Rational area;          ///< Enclosed area (> 0 for a valid loop).
+  Vec2 centroid;          ///< Area centroid, frame A.
+  Rational polar_moment;  ///< ∬ |p|² dA about the origin of frame A.
   /// ∬ |p − c|² dA about the point c.
   Rational polar_moment_about(const Vec2& c) const;
 };

@@ -12,8 +12,7 @@ namespace fixel {
 
 /// GMP rational without expression templates (so that Eigen and CGAL can use
 /// it as a plain scalar). Every decision in fixel is made in this type.
-using Rational = boost::multiprecision::number<boost::multiprecision::gmp_rational,
-                                               boost::multiprecision::et_off>;
+using Rational = boost::multiprecision::number<boost::multiprecision::gmp_rational, boost::multiprecision::et_off>;
 /// The matching GMP integer (numerators, denominators).
 using Integer = boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
 
@@ -27,8 +26,7 @@ using MatrixQ = Eigen::Matrix<Rational, Eigen::Dynamic, Eigen::Dynamic>;
 Rational parse_rational(const std::string& text, const std::string& field = "number");
 
 /// Parses a comma-separated list of exact numbers, e.g. "-1,-1,-1".
-std::vector<Rational> parse_rational_list(const std::string& text,
-                                          const std::string& field = "numbers");
+std::vector<Rational> parse_rational_list(const std::string& text, const std::string& field = "numbers");
 
 /// Exact text: "p/q" in lowest terms, or "p" when the denominator is 1.
 std::string to_string(const Rational& value);

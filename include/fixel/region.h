@@ -20,9 +20,9 @@ struct GuaranteedSet;
 /// An interval of positive reals with optional infinite upper end.
 struct Magnitudes {
   bool empty = true;
-  Rational lo;                  ///< Lower end (>= 0).
+  Rational lo;  ///< Lower end (>= 0).
   bool lo_closed = false;
-  std::optional<Rational> hi;   ///< Upper end; std::nullopt means +∞.
+  std::optional<Rational> hi;  ///< Upper end; std::nullopt means +∞.
   bool hi_closed = false;
   /// Unbounded above (and not empty).
   bool half_line() const { return !empty && !hi.has_value(); }
@@ -66,12 +66,12 @@ struct RegionInterval {
 
 /// Counters of a region computation.
 struct RegionStats {
-  long cone_tests = 0;     ///< Segment classifications (one per segment visited).
-  long lp_tests = 0;       ///< Exact LPs for the OUT test.
-  long point_tests = 0;    ///< Point tests (corners, samples).
-  int depth = 0;           ///< Deepest subdivision level (0 = whole Bézier piece).
-  Rational partial_length; ///< Total parameter length left PARTIAL.
-  double seconds = 0;      ///< Wall time (display only).
+  long cone_tests = 0;      ///< Segment classifications (one per segment visited).
+  long lp_tests = 0;        ///< Exact LPs for the OUT test.
+  long point_tests = 0;     ///< Point tests (corners, samples).
+  int depth = 0;            ///< Deepest subdivision level (0 = whole Bézier piece).
+  Rational partial_length;  ///< Total parameter length left PARTIAL.
+  double seconds = 0;       ///< Wall time (display only).
 };
 
 /// The region: intervals that tile every curve's parameter range, in order.
@@ -84,8 +84,8 @@ struct Region {
 struct RegionOptions {
   Rational resolution = Rational(1, 1024);  ///< Stop splitting at this parameter width (curve units).
   ConeMethod cone = ConeMethod::kTight;
-  std::optional<Rational> pusher_mu;        ///< Overrides the scene's pusher μ.
-  bool merge = true;                        ///< Merge adjacent intervals with equal status.
+  std::optional<Rational> pusher_mu;  ///< Overrides the scene's pusher μ.
+  bool merge = true;                  ///< Merge adjacent intervals with equal status.
   /// Classify against the guaranteed set G instead of S (frictionless
   /// pusher only; G must belong to the same scene and S).
   const GuaranteedSet* guaranteed = nullptr;
@@ -104,7 +104,8 @@ Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_cur
 
 /// Exact point test at parameter u of curve k (a corner uses its whole fan of
 /// push directions). kPartial when the contact normal is undefined there.
-RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& pusher_mu,
-                          Magnitudes* magnitudes = nullptr, const GuaranteedSet* guaranteed = nullptr);
+RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u,
+                          const Rational& pusher_mu, Magnitudes* magnitudes = nullptr,
+                          const GuaranteedSet* guaranteed = nullptr);
 
 }  // namespace fixel

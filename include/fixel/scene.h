@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fixel/error.h"
 #include "fixel/rational.h"
 
 namespace fixel {
@@ -25,30 +26,30 @@ struct Vec2 {
 /// (x, y) for a point mass (dof 2).
 struct Body {
   int dof = 3;
-  Rational mass;                 ///< m > 0.
-  Rational inertia;              ///< I > 0 about the centre of mass (dof 3 only; 0 for dof 2).
-  VectorQ velocity;              ///< ν^ℓ, length dof (m/s, rad/s).
-  Vec2 p_AoCm_A;                 ///< Centre of mass in frame A.
+  Rational mass;     ///< m > 0.
+  Rational inertia;  ///< I > 0 about the centre of mass (dof 3 only; 0 for dof 2).
+  VectorQ velocity;  ///< ν^ℓ, length dof (m/s, rad/s).
+  Vec2 p_AoCm_A;     ///< Centre of mass in frame A.
   /// The part's outline (one closed counter-clockwise loop), if given.
   std::shared_ptr<const Boundary> boundary;
 };
 
 /// One fixture point ("fixel").
 struct Fixel {
-  Vec2 p_AoF_A;   ///< Contact point in frame A.
-  Vec2 n_A;       ///< Inward unit normal (into the part), exactly x²+y² == 1.
-  Rational mu;    ///< Coulomb friction μ ≥ 0.
-  Rational gap;   ///< Gap ψ ≥ 0 at the current configuration.
+  Vec2 p_AoF_A;  ///< Contact point in frame A.
+  Vec2 n_A;      ///< Inward unit normal (into the part), exactly x²+y² == 1.
+  Rational mu;   ///< Coulomb friction μ ≥ 0.
+  Rational gap;  ///< Gap ψ ≥ 0 at the current configuration.
 };
 
 /// A whole scene file.
 struct Scene {
   std::string name;
-  Rational time_step;            ///< h > 0.
+  Rational time_step;  ///< h > 0.
   Body body;
   std::vector<Fixel> fixels;
-  Rational pusher_mu;            ///< Pusher friction μ_p ≥ 0 (default 0).
-  VectorQ background_impulse;    ///< b₀, length dof (default 0).
+  Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0).
+  VectorQ background_impulse;  ///< b₀, length dof (default 0).
 
   /// Number of contacts n_c.
   int num_contacts() const { return static_cast<int>(fixels.size()); }

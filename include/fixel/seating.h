@@ -25,8 +25,8 @@ struct SeatingSet {
   /// g_i = W_n,i − σ_i μ_i W_t,i for a sliding fixel; W_n,i ± μ_i W_t,i
   /// (two generators, one if μ_i = 0) for a sticking one.
   std::vector<VectorQ> generators;
-  std::vector<int> generator_fixel;  ///< The fixel of each generator.
-  std::vector<VectorQ> rays;        ///< −g_i, the rays of S.
+  std::vector<int> generator_fixel;   ///< The fixel of each generator.
+  std::vector<VectorQ> rays;          ///< −g_i, the rays of S.
   std::vector<Halfspace> halfspaces;  ///< S = ∩ halfspaces (exact facets).
 
   /// Exact membership from the H-form; boundary points are members.
@@ -41,11 +41,11 @@ SeatingSet seating_set(const Scene& scene);
 /// y lists, in the paper's order, the kept ρ_f entries, p_n, the kept p_f
 /// entries and s (4 n_c values).
 struct SeatingSystem {
-  MatrixQ K;       ///< 4 n_c × 4 n_c, columns of [I −B] kept.
-  MatrixQ K_inv;   ///< Exact inverse of K.
-  MatrixQ P;       ///< As in eq. (19).
-  VectorQ a;       ///< As in eq. (19).
-  std::vector<int> kept;            ///< Indices into (w, z) (0 .. 8 n_c − 1) of y's entries.
+  MatrixQ K;                         ///< 4 n_c × 4 n_c, columns of [I −B] kept.
+  MatrixQ K_inv;                     ///< Exact inverse of K.
+  MatrixQ P;                         ///< As in eq. (19).
+  VectorQ a;                         ///< As in eq. (19).
+  std::vector<int> kept;             ///< Indices into (w, z) (0 .. 8 n_c − 1) of y's entries.
   std::vector<std::string> y_names;  ///< e.g. "rho_f[0]+", "p_n[2]".
 
   /// y = K⁻¹ (P p + a); p ∈ S ⇔ y ≥ 0 (eq. 27).

@@ -31,10 +31,10 @@ Vec2 push_direction(const Vec2& tangent, EdgeFamily family, const Rational& mu);
 
 /// What a segment's control polygon tells about it.
 struct SegmentBounds {
-  std::vector<Vec2> hull;   ///< Convex hull of the control points (CGAL, exact), counter-clockwise.
-  std::vector<Vec2> legs;   ///< The non-zero hodograph legs P_{k+1} − P_k.
-  bool pointed = false;     ///< The legs span a cone of angle < π.
-  Vec2 t_start, t_end;      ///< Extreme legs: every leg is in cone(t_start, t_end). Set when pointed.
+  std::vector<Vec2> hull;  ///< Convex hull of the control points (CGAL, exact), counter-clockwise.
+  std::vector<Vec2> legs;  ///< The non-zero hodograph legs P_{k+1} − P_k.
+  bool pointed = false;    ///< The legs span a cone of angle < π.
+  Vec2 t_start, t_end;     ///< Extreme legs: every leg is in cone(t_start, t_end). Set when pointed.
 };
 
 /// Bounds of a Bézier segment. Throws SceneError if every leg is zero.

@@ -136,7 +136,8 @@ int main(int argc, char** argv) {
       std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, used_mu)
                              : fixel::region_text(scene, r, cone_text, options.resolution, used_mu));
       if (!svg_path.empty()) {
-        fixel::write_region_svg(svg_path, scene, S, r, cone_text + (g ? ", against G" : ""), options.resolution, used_mu);
+        fixel::write_region_svg(svg_path, scene, S, r, cone_text + (g ? ", against G" : ""), options.resolution,
+                                used_mu);
         if (!json_out) std::cout << "wrote " << svg_path << "\n";
       }
       return 0;

@@ -20,8 +20,8 @@ enum class LpStatus { kOptimal, kInfeasible, kUnbounded };
 
 struct LpResult {
   LpStatus status = LpStatus::kInfeasible;
-  VectorQ x;         // an optimal (or, for a feasibility problem, feasible) point
-  Rational value;    // objective value at x
+  VectorQ x;       // an optimal (or, for a feasibility problem, feasible) point
+  Rational value;  // objective value at x
 };
 
 // Minimises c·x over free variables x ∈ R^n subject to the constraints.

@@ -47,12 +47,21 @@ inline constexpr std::array<std::array<const char*, 12>, 12> kExample2B = {{
 
 // The paper's printed P and a of Example 2.
 inline constexpr std::array<std::array<const char*, 3>, 12> kExample2P = {{
-    {"1", "0", "0"}, {"0", "1", "0"}, {"0", "1", "1"}, {"0", "1", "-1"},
-    {"0", "-1", "1"}, {"-1", "0", "-1"}, {"1", "0", "1"}, {"-1", "0", "-1"},
-    {"1", "0", "1"}, {"0", "0", "0"}, {"0", "0", "0"}, {"0", "0", "0"},
+    {"1", "0", "0"},
+    {"0", "1", "0"},
+    {"0", "1", "1"},
+    {"0", "1", "-1"},
+    {"0", "-1", "1"},
+    {"-1", "0", "-1"},
+    {"1", "0", "1"},
+    {"-1", "0", "-1"},
+    {"1", "0", "1"},
+    {"0", "0", "0"},
+    {"0", "0", "0"},
+    {"0", "0", "0"},
 }};
-inline constexpr std::array<const char*, 12> kExample2a = {
-    "1/10", "1/20", "1/5", "0", "0", "0", "0", "0", "0", "0", "0", "0"};
+inline constexpr std::array<const char*, 12> kExample2a = {"1/10", "1/20", "1/5", "0", "0", "0",
+                                                           "0",    "0",    "0",   "0", "0", "0"};
 
 // The paper's s^{ℓ+1} = v_t^{ℓ+1} = (0.10, 0.25, 0.25).
 inline constexpr std::array<const char*, 3> kExample2SlideSpeed = {"1/10", "1/4", "1/4"};
@@ -60,10 +69,12 @@ inline constexpr std::array<const char*, 3> kExample2SlideSpeed = {"1/10", "1/4"
 // Eq. (27) at p = (−1, −1, −1): the paper's printed 4-decimal table and the
 // exact values.
 inline constexpr std::array<const char*, 3> kExample2Impulse = {"-1", "-1", "-1"};
-inline constexpr std::array<const char*, 12> kExample2LinearPrinted = {
-    "0.0000", "0.0000", "0.0000", "0.8911", "0.2871", "0.8020", "0.0891", "0.0287", "0.0802", "0.0000", "0.0000", "0.0000"};
-inline constexpr std::array<const char*, 12> kExample2ThresholdPrinted = {
-    "-0.2000", "-0.5000", "-0.5000", "0.0941", "-0.0752", "0.1347", "0.0094", "-0.0075", "0.0135", "-0.1000", "-0.2500", "-0.2500"};
+inline constexpr std::array<const char*, 12> kExample2LinearPrinted = {"0.0000", "0.0000", "0.0000", "0.8911",
+                                                                       "0.2871", "0.8020", "0.0891", "0.0287",
+                                                                       "0.0802", "0.0000", "0.0000", "0.0000"};
+inline constexpr std::array<const char*, 12> kExample2ThresholdPrinted = {"-0.2000", "-0.5000", "-0.5000", "0.0941",
+                                                                          "-0.0752", "0.1347",  "0.0094",  "-0.0075",
+                                                                          "0.0135",  "-0.1000", "-0.2500", "-0.2500"};
 inline constexpr std::array<const char*, 12> kExample2LinearExact = {
     "0", "0", "0", "90/101", "29/101", "81/101", "9/101", "29/1010", "81/1010", "0", "0", "0"};
 inline constexpr std::array<const char*, 12> kExample2ThresholdExact = {

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Install-and-consume round trip: install the built tree to a temporary
+# prefix, build examples/consumer against it with find_package(fixel), run it.
+set -euo pipefail
+build="$1"; src="$2"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+cmake --install "$build" --prefix "$tmp/prefix" > /dev/null
+# Installed headers must not mention the build or source tree.
+if grep -rl -e "$src" -e "$build" "$tmp/prefix/include" > /dev/null 2>&1; then
+  echo "FAIL: installed headers mention the build tree"; exit 1
+fi
+cmake -S "$src/examples/consumer" -B "$tmp/consumer" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$tmp/consumer" -j 2 > /dev/null
+out=$("$tmp/consumer/consumer")
+echo "$out"
+grep -q "impulse (-1, -1, -1) is in S" <<<"$out"
+grep -q "right edge: " <<<"$out"
+test -x "$tmp/prefix/bin/fixel"
