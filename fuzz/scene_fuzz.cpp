@@ -7,22 +7,11 @@
 #include <iostream>
 #include <string>
 
-#include "fixel/error.h"
-#include "fixel/region.h"
-#include "fixel/scene.h"
-#include "fixel/seating.h"
+#include "pipeline.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const fixel::Scene scene = fixel::parse_scene(text, "fuzz");
-    const fixel::SeatingSet S = fixel::seating_set(scene);
-    for (const auto& h : S.halfspaces) (void)h.contains(S.apex);
-    if (scene.body.boundary) {
-      fixel::RegionOptions options;
-      options.resolution = fixel::Rational(1, 8);  // bounded work per input
-      (void)fixel::compute_region(scene, S, options);
-    }
+    fixel::fuzz::run_pipeline(std::string(reinterpret_cast<const char*>(data), size));
   } catch (const fixel::Error&) {
     // Bad input, reported with field and value: fine.
   } catch (const std::exception& e) {

@@ -54,6 +54,11 @@ class ExactDomBuilder {
     return true;
   }
   bool open(json container) {
+    // Scenes nest at most 5 levels; a deeper document would make the DOM's
+    // recursive copy and destruction overflow the stack.
+    if (stack_.size() >= kMaxDepth)
+      throw ParseError(source_, "depth " + std::to_string(stack_.size() + 1),
+                       "nests deeper than " + std::to_string(kMaxDepth) + " levels");
     json* slot;
     if (stack_.empty()) {
       root_ = std::move(container);
@@ -74,6 +79,7 @@ class ExactDomBuilder {
     return true;
   }
 
+  static constexpr std::size_t kMaxDepth = 64;
   std::string source_;
   json root_;
   std::vector<json*> stack_;
@@ -85,7 +91,7 @@ class ExactDomBuilder {
 
 nlohmann::json parse_json_exact(const std::string& text, const std::string& source) {
   ExactDomBuilder builder(source);
-  // Depth is bounded by the input size; nlohmann's SAX parser is iterative.
+  // nlohmann's SAX parser keeps its own stack; the builder bounds the depth.
   json::sax_parse(text, &builder, json::input_format_t::json, true, false);
   return builder.result();
 }

@@ -78,6 +78,24 @@ TEST(Scene, RejectsMalformedJson) {
   EXPECT_THROW(parse_scene("[1, 2]"), SceneError);
 }
 
+TEST(Scene, RejectsDeeplyNestedJsonInsteadOfOverflowingTheStack) {
+  // Found by hand after fuzzing (the fuzzer's 4 KB inputs cannot nest this
+  // deep): 200000 nested arrays used to crash in the DOM's destructor.
+  const std::string deep = std::string(200000, '[') + std::string(200000, ']');
+  try {
+    parse_scene(deep, "deep.json");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "deep.json: depth 65 nests deeper than 64 levels");
+  }
+  const std::string objects = [] {
+    std::string s;
+    for (int i = 0; i < 100000; ++i) s += "{\"a\":";
+    return s + "1" + std::string(100000, '}');
+  }();
+  EXPECT_THROW(parse_scene(objects, "deep.json"), ParseError);
+}
+
 TEST(Scene, RejectsDuplicateKeys) {
   expect_error<ParseError>(example2_with(R"("name": "example2")", R"("name": "a", "name": "b")"),
                            "scene.json: key \"name\" appears twice in one object");
