@@ -8,10 +8,6 @@
 #include "bench_util.h"
 #include "fixel/guaranteed.h"
 
-#ifndef FIXEL_SOURCE_DIR
-#define FIXEL_SOURCE_DIR "."
-#endif
-
 namespace {
 
 struct Case {

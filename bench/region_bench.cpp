@@ -11,10 +11,6 @@
 #include "fixel/lcp.h"
 #include "fixel/region.h"
 
-#ifndef FIXEL_SOURCE_DIR
-#define FIXEL_SOURCE_DIR "."
-#endif
-
 namespace {
 
 using fixel::Rational;

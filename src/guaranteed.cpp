@@ -113,9 +113,7 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S) {
   long total = 1;
   for (int i = 0; i < nc; ++i) total *= 4;
   for (long code = 0; code < total; ++code) {
-    std::vector<ContactMode> modes(nc);
-    long c = code;
-    for (int i = 0; i < nc; ++i, c /= 4) modes[i] = static_cast<ContactMode>(c % 4);
+    const std::vector<ContactMode> modes = contact_modes(code, nc);
     for (int i = 0; i < nc; ++i) {
       if (modes[i] != ContactMode::kOpen) continue;
       Polyhedron N = non_seating_impulses(scene, modes, i);

@@ -54,6 +54,12 @@ Outcome make_outcome(const Scene& scene, const ContactMatrices& W, const std::ve
 
 }  // namespace
 
+std::vector<ContactMode> contact_modes(long code, int num_contacts) {
+  std::vector<ContactMode> modes(num_contacts);
+  for (int i = 0; i < num_contacts; ++i, code /= 4) modes[i] = static_cast<ContactMode>(code % 4);
+  return modes;
+}
+
 std::string to_string(ContactMode mode) {
   switch (mode) {
     case ContactMode::kOpen:
@@ -130,9 +136,7 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
   long total = 1;
   for (int i = 0; i < nc; ++i) total *= 4;
   for (long code = 0; code < total; ++code) {
-    std::vector<ContactMode> modes(nc);
-    long c = code;
-    for (int i = 0; i < nc; ++i, c /= 4) modes[i] = static_cast<ContactMode>(c % 4);
+    const std::vector<ContactMode> modes = contact_modes(code, nc);
     const ModeSystem sys = mode_system(scene, modes, p_ext);
 
     VectorQ x;

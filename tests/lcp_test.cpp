@@ -8,31 +8,22 @@
 namespace fixel {
 namespace {
 
-MatrixQ matrix(std::initializer_list<std::initializer_list<int>> rows) {
-  MatrixQ m(static_cast<int>(rows.size()), static_cast<int>(rows.begin()->size()));
-  int r = 0;
-  for (const auto& row : rows) {
-    int c = 0;
-    for (int v : row) m(r, c++) = v;
-    ++r;
-  }
-  return m;
-}
+using testing::mat;
 
 TEST(Lcp, Example1MatricesMatchThePaper) {
   const ContactMatrices W = contact_matrices(parse_scene(internal::paper::kExample1Scene));
-  EXPECT_EQ(W.M, matrix({{1, 0}, {0, 1}}));
-  EXPECT_EQ(W.Wn, matrix({{1, 0}, {0, 1}}));
-  EXPECT_EQ(W.Wf, matrix({{0, 0, -1, 1}, {1, -1, 0, 0}}));  // printed in §3.1
-  EXPECT_EQ(MatrixQ(W.E.transpose()), matrix({{1, 1, 0, 0}, {0, 0, 1, 1}}));
+  EXPECT_EQ(W.M, mat({{1, 0}, {0, 1}}));
+  EXPECT_EQ(W.Wn, mat({{1, 0}, {0, 1}}));
+  EXPECT_EQ(W.Wf, mat({{0, 0, -1, 1}, {1, -1, 0, 0}}));  // printed in §3.1
+  EXPECT_EQ(MatrixQ(W.E.transpose()), mat({{1, 1, 0, 0}, {0, 0, 1, 1}}));
   EXPECT_EQ(W.U(0, 0), Rational(1, 5));
   EXPECT_EQ(W.U(1, 1), Rational(1, 10));
 }
 
 TEST(Lcp, Example2MatricesMatchThePaper) {
   const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
-  EXPECT_EQ(lcp.W.Wn, matrix({{1, 0, 0}, {0, 1, 1}, {0, 0, 1}}));
-  EXPECT_EQ(lcp.W.Wf, matrix({{0, 0, -1, 1, -1, 1}, {1, -1, 0, 0, 0, 0}, {-1, 1, -1, 1, -1, 1}}));
+  EXPECT_EQ(lcp.W.Wn, mat({{1, 0, 0}, {0, 1, 1}, {0, 0, 1}}));
+  EXPECT_EQ(lcp.W.Wf, mat({{0, 0, -1, 1, -1, 1}, {1, -1, 0, 0, 0, 0}, {-1, 1, -1, 1, -1, 1}}));
   for (int r = 0; r < 12; ++r) {
     for (int c = 0; c < 12; ++c)
       EXPECT_EQ(lcp.B(r, c), parse_rational(internal::paper::kExample2B[r][c])) << "B(" << r + 1 << "," << c + 1 << ")";

@@ -15,22 +15,8 @@
 namespace fixel {
 namespace {
 
-MatrixQ mat(std::initializer_list<std::initializer_list<int>> rows) {
-  MatrixQ m(static_cast<int>(rows.size()), static_cast<int>(rows.begin()->size()));
-  int r = 0;
-  for (const auto& row : rows) {
-    int c = 0;
-    for (int v : row) m(r, c++) = v;
-    ++r;
-  }
-  return m;
-}
-VectorQ vec(std::initializer_list<Rational> xs) {
-  VectorQ v(static_cast<int>(xs.size()));
-  int k = 0;
-  for (const auto& x : xs) v[k++] = x;
-  return v;
-}
+using testing::mat;
+using testing::vec;
 
 // Second method: every solution with a nonsingular principal block B_SS,
 // found by trying all 2^n complementary bases.

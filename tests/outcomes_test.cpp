@@ -12,12 +12,7 @@
 namespace fixel {
 namespace {
 
-VectorQ vec(std::initializer_list<Rational> xs) {
-  VectorQ v(static_cast<int>(xs.size()));
-  int k = 0;
-  for (const auto& x : xs) v[k++] = x;
-  return v;
-}
+using testing::vec;
 
 // Rebuilds an LCP solution z = (p_n, p_f, s) from an outcome and checks it
 // with the independent checker: the outcome really solves the step LCP.

@@ -11,15 +11,8 @@
 namespace fixel {
 namespace {
 
-Scene scene_file(const std::string& name) {
-  return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
-}
-
-VectorQ v3(Rational a, Rational b, Rational c) {
-  VectorQ v(3);
-  v << a, b, c;
-  return v;
-}
+using testing::scene_file;
+using testing::v3;
 
 // Status of the interval holding (curve, u); corner points (zero-length
 // intervals) take precedence over the intervals they bound.

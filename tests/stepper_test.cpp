@@ -6,16 +6,12 @@
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
 #include "fixel/seating.h"
+#include "test_scenes.h"
 
 namespace fixel {
 namespace {
 
-VectorQ vec(std::initializer_list<Rational> xs) {
-  VectorQ v(static_cast<int>(xs.size()));
-  int k = 0;
-  for (const auto& x : xs) v[k++] = x;
-  return v;
-}
+using testing::vec;
 
 TEST(Simulate, PaperExample2ImpulseSeatsInOneStep) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);

@@ -2,10 +2,35 @@
 // Seeded random scenes with exact unit normals, shared by the tests.
 
 #include <random>
+#include <string>
 
 #include "fixel/scene.h"
 
 namespace fixel::testing {
+
+// An exact vector or matrix from literals.
+inline VectorQ vec(std::initializer_list<Rational> xs) {
+  VectorQ v(static_cast<int>(xs.size()));
+  int k = 0;
+  for (const auto& x : xs) v[k++] = x;
+  return v;
+}
+inline MatrixQ mat(std::initializer_list<std::initializer_list<int>> rows) {
+  MatrixQ m(static_cast<int>(rows.size()), static_cast<int>(rows.begin()->size()));
+  int r = 0;
+  for (const auto& row : rows) {
+    int c = 0;
+    for (int v : row) m(r, c++) = v;
+    ++r;
+  }
+  return m;
+}
+inline VectorQ v3(Rational a, Rational b, Rational c) { return vec({a, b, c}); }
+
+// A bundled scene from data/scenes/ by name.
+inline Scene scene_file(const std::string& name) {
+  return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+}
 
 // A rational in [lo, hi] with denominator `den`.
 inline Rational random_rational(std::mt19937_64& rng, int lo, int hi, int den) {

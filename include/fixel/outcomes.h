@@ -40,6 +40,10 @@ struct ModeSystem {
   VectorQ b_in;
 };
 
+/// The contact modes numbered `code` ∈ [0, 4^n_c): digit i in base 4 is
+/// fixel i's mode (open, slide+, slide−, stick).
+std::vector<ContactMode> contact_modes(long code, int num_contacts);
+
 /// The outcomes of `modes` (one per fixel) under external impulse p_ext:
 /// Newton's law, and per fixel: open (p = 0, gap ≥ 0), sliding ±t (gap 0,
 /// p_n ≥ 0, p_t = ∓μ p_n, ±v_t ≥ 0) or sticking (gap 0, v_t = 0,
