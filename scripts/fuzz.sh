@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-60}"
-cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DFIXEL_FUZZ=ON \
+cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1" -DCMAKE_CXX_COMPILER=clang++ -DFIXEL_FUZZ=ON \
   -DFIXEL_BUILD_TESTS=OFF -DFIXEL_BUILD_BENCHMARKS=OFF -DFIXEL_BUILD_CLI=OFF > /dev/null
 cmake --build build-fuzz -j "$(nproc)" --target scene_fuzz > /dev/null
 mkdir -p build-fuzz/corpus build-fuzz/crashes
