@@ -59,9 +59,19 @@ bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
 
 namespace {
 
+// floor(x · 2^20) / 2^20 for a finite double |x| <= 2 (callers pass
+// normalised values only, so the cast cannot overflow).
 Rational to_dyadic_floor(double x) {
   const double scale = 1048576.0;  // 2^20
+  if (!(std::abs(x) <= 2)) x = 0;  // also catches NaN
   return Rational(static_cast<long long>(std::floor(x * scale)), 1048576);
+}
+
+// v scaled by an exact positive factor so that its largest entry is ±1:
+// the same direction, and safe to convert to double.
+Vec2 normalised(const Vec2& v) {
+  const Rational m = std::max(boost::multiprecision::abs(v.x), boost::multiprecision::abs(v.y));
+  return m == 0 ? v : Vec2{v.x / m, v.y / m};
 }
 
 // Facets are optional: region classification only needs the generators.
@@ -122,9 +132,10 @@ std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec
 
 namespace internal {
 
-Vec2 unit_direction_outward(const Vec2& d, bool cw) {
+Vec2 unit_direction_outward(const Vec2& d_raw, bool cw) {
   // u(t) = ((1 − t²), 2t) / (1 + t²) covers angles (−π, π) with t = tan(θ/2);
   // directions near π use −u(t) with θ − π instead.
+  const Vec2 d = normalised(d_raw);
   const double theta = std::atan2(to_double(d.y), to_double(d.x));
   const bool flip = std::abs(theta) > M_PI / 2;
   const double half = (flip ? (theta > 0 ? theta - M_PI : theta + M_PI) : theta) / 2;
@@ -141,14 +152,9 @@ Vec2 unit_direction_outward(const Vec2& d, bool cw) {
   throw Error("unit_direction_outward: no rational direction found (internal error)");
 }
 
-Rational sqrt_upper(const Rational& x) {
-  Rational q = to_dyadic_floor(std::sqrt(to_double(x))) + Rational(1, 1048576);
-  while (q * q < x) q += Rational(1, 1048576) + q / 1048576;
-  return q;
-}
-
-Rational cos_half_angle_lower(const Vec2& a, const Vec2& b) {
+Rational cos_half_angle_lower(const Vec2& a_raw, const Vec2& b_raw) {
   // cos(Δ/2) >= c  ⇔  cos Δ >= k = 2c² − 1  ⇔  P >= k √Q with P = a·b, Q = |a|²|b|².
+  const Vec2 a = normalised(a_raw), b = normalised(b_raw);  // same angle, doubles in range
   const Rational P = dot(a, b), Q = dot(a, a) * dot(b, b);
   const double cos_delta = to_double(P) / std::sqrt(to_double(Q));
   Rational c = to_dyadic_floor(std::sqrt(std::max(0.0, (1 + cos_delta) / 2)));
@@ -162,11 +168,30 @@ Rational cos_half_angle_lower(const Vec2& a, const Vec2& b) {
   return Rational(0);
 }
 
+namespace {
+// floor(√(x · 4^20)) for x = p/q >= 0, as isqrt(p · q · 4^20) / q: exact.
+Integer scaled_isqrt(const Rational& x, bool& exact) {
+  const Integer p = boost::multiprecision::numerator(x), q = boost::multiprecision::denominator(x);
+  const Integer n = p * q * (Integer(1) << 40);
+  const Integer r = boost::multiprecision::sqrt(n);
+  exact = r * r == n;
+  return r;
+}
+}  // namespace
+
+// √x = √(p q 4^20) / (q 2^20): integer square roots, no doubles, relative
+// precision about 2^-20 / q.
+Rational sqrt_upper(const Rational& x) {
+  if (x <= 0) return Rational(0);
+  bool exact = false;
+  const Integer r = scaled_isqrt(x, exact);
+  return Rational(exact ? r : Integer(r + 1), boost::multiprecision::denominator(x) * (Integer(1) << 20));
+}
+
 Rational sqrt_lower(const Rational& x) {
-  Rational q = to_dyadic_floor(std::sqrt(to_double(x)));
-  if (q < 0) q = 0;
-  while (q * q > x) q -= Rational(1, 1048576) + q / 1048576;
-  return q < 0 ? Rational(0) : q;
+  if (x <= 0) return Rational(0);
+  bool exact = false;
+  return Rational(scaled_isqrt(x, exact), boost::multiprecision::denominator(x) * (Integer(1) << 20));
 }
 
 }  // namespace internal

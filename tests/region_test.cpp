@@ -329,3 +329,43 @@ TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
 
 }  // namespace
 }  // namespace fixel
+
+namespace fixel {
+namespace {
+
+// Coordinates far outside double's comfortable range must not reach a
+// double-to-integer cast (undefined behaviour) or stall a rounding loop: the
+// same part scaled by 10^200 and 10^-200 gives the same region.
+TEST(Region, ExtremeCoordinateScalesGiveTheSameRegion) {
+  const Scene base = testing::scene_file("polygon");
+  const Region reference = compute_region(base, seating_set(base), RegionOptions{});
+  for (const char* factor : {"1e200", "1e-200"}) {
+    const Rational k = parse_rational(factor);
+    Scene scaled = base;
+    std::vector<Curve> curves = base.body.boundary->curves;
+    for (auto& c : curves)
+      for (auto& p : c.points) p = {p.x * k, p.y * k};
+    scaled.body.boundary = std::make_shared<const Boundary>(make_boundary(curves));
+    scaled.body.p_AoCm_A = {base.body.p_AoCm_A.x * k, base.body.p_AoCm_A.y * k};
+    scaled.body.inertia = base.body.inertia * k * k;  // I scales with length²
+    for (auto& f : scaled.fixels) {
+      f.p_AoF_A = {f.p_AoF_A.x * k, f.p_AoF_A.y * k};
+      f.gap *= k;
+    }
+    const SeatingSet S = seating_set(scaled);
+    for (auto method : {ConeMethod::kTight, ConeMethod::kPaper}) {
+      RegionOptions opt;
+      opt.cone = method;
+      const Region region = compute_region(scaled, S, opt);
+      ASSERT_EQ(region.intervals.size(), reference.intervals.size()) << factor;
+      for (std::size_t i = 0; i < region.intervals.size(); ++i) {
+        if (method == ConeMethod::kPaper) break;  // the paper cone's rounding is scale-dependent
+        EXPECT_EQ(region.intervals[i].status, reference.intervals[i].status) << factor;
+        EXPECT_EQ(region.intervals[i].u1, reference.intervals[i].u1) << factor;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fixel
