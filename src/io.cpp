@@ -411,13 +411,15 @@ std::string region_json(const Scene& scene, const Region& region, const std::str
                   {"depth", region.stats.depth},
                   {"partial_length", to_string(region.stats.partial_length)},
                   {"seconds", region.stats.seconds}};
+  if (region.push != "step") doc["push"] = region.push;
   return doc.dump(2) + "\n";
 }
 
 std::string region_text(const Scene& scene, const Region& region, const std::string& method,
                         const std::optional<Rational>& resolution, const Rational& pusher_mu) {
   std::ostringstream out;
-  out << "Pushing region of scene \"" << scene.name << "\" (" << method;
+  const bool sustained = region.push == "sustained";
+  out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "") << method;
   if (resolution) out << ", resolution " << to_string(*resolution);
   out << ", pusher mu " << to_string(pusher_mu) << ")\n";
   for (const auto& r : region.intervals) {
@@ -425,7 +427,9 @@ std::string region_text(const Scene& scene, const Region& region, const std::str
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");
     if (r.status == RegionStatus::kIn) {
       out << (r.half_line ? "  half-line" : "");
-      if (!r.magnitudes.empty)
+      if (sustained)
+        out << "  any magnitude (sustained push: seats and stays)";
+      else if (!r.magnitudes.empty)
         out << "  |p| in " << r.magnitudes.describe() << " N*s";
       else
         out << "  no common magnitude";

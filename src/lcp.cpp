@@ -1,5 +1,7 @@
 #include "fixel/lcp.h"
 
+#include "fixel/error.h"
+
 namespace fixel {
 
 VectorQ contact_wrench(const Vec2& r_A, const Vec2& d_A, int dof) {
@@ -19,6 +21,14 @@ MatrixQ normal_wrench_matrix(const Scene& scene) {
 
 ContactMatrices contact_matrices(const Scene& scene) {
   const int dof = scene.body.dof, nc = scene.num_contacts();
+  // The one-step model is not monotone in μ: an interval has no single
+  // robust answer there (docs/theory.md §10), only in the sustained set.
+  for (int i = 0; i < nc; ++i)
+    if (scene.fixels[i].mu != scene.fixels[i].mu_hi)
+      throw UnsupportedError("fixels[" + std::to_string(i) + "].mu",
+                             "[" + to_string(scene.fixels[i].mu) + ", " + to_string(scene.fixels[i].mu_hi) + "]",
+                             "is an interval: only the sustained-push analysis (seat --sustained, region --push "
+                             "sustained) accepts friction intervals; the one-step model needs one value");
   ContactMatrices W;
   W.M = MatrixQ::Zero(dof, dof);
   W.M(0, 0) = scene.body.mass;

@@ -6,6 +6,7 @@
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/lcp.h"
+#include "fixel/region_target.h"
 
 namespace fixel {
 
@@ -80,76 +81,108 @@ Magnitudes common_magnitudes(const std::vector<VectorQ>& gens, const std::vector
   return m;
 }
 
-struct Context {
-  const Scene& scene;
-  const SeatingSet& S;
-  const VectorQ& b0;
-  Rational mu;
-  ConeMethod method;
-  Rational resolution;
-  RegionStats stats;
-  const GuaranteedSet* G = nullptr;
+bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<VectorQ>& gens, const Polyhedron& Q);
+
+// The one-step seating set S (paper §4): convex, so a cone reaches it iff
+// every generator does.
+class SeatingTarget final : public RegionTarget {
+ public:
+  SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0) {}
+  const char* push_model() const override { return "step"; }
+
+  bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
+                     RegionInterval* detail) override {
+    std::vector<Magnitudes> T;
+    bool all_half = true;
+    for (const auto& g : gens) {
+      T.push_back(ray_magnitudes(S_, b0_, g));
+      if (T.back().empty) return false;
+      all_half = all_half && T.back().half_line();
+    }
+    if (detail) {
+      detail->half_line = all_half;
+      detail->magnitudes = d_first ? common_magnitudes(gens, T, *d_first, *d_last) : Magnitudes{};
+    }
+    return true;
+  }
+
+  // The cone misses S − b0 except at 0: the LP max Σμ_j s.t. b0 + Σ μ_j g_j
+  // ∈ S, μ >= 0 is infeasible or has optimum 0. (No cap on Σμ: S is not a
+  // cone from b0, so a cap would also cap the push magnitude.)
+  bool misses(const std::vector<VectorQ>& gens) override {
+    bool some_miss = false;
+    for (const auto& g : gens) some_miss = some_miss || ray_magnitudes(S_, b0_, g).empty;
+    if (!some_miss) return false;
+    if (stats) ++stats->lp_tests;
+    const int n = static_cast<int>(gens.size());
+    std::vector<internal::LinearConstraint> rows;
+    for (const auto& h : S_.halfspaces) {
+      VectorQ a(n);
+      for (int j = 0; j < n; ++j) a[j] = h.a.dot(gens[j]);
+      rows.push_back({a, internal::Relation::kGreaterEqual, h.c - h.a.dot(b0_)});
+    }
+    for (int j = 0; j < n; ++j) rows.push_back({VectorQ::Unit(n, j), internal::Relation::kGreaterEqual, Rational(0)});
+    const internal::LpResult lp = internal::solve_lp(n, rows, VectorQ(-VectorQ::Ones(n)));
+    if (lp.status == internal::LpStatus::kInfeasible) return true;
+    if (lp.status == internal::LpStatus::kUnbounded) return false;
+    return lp.value == 0;
+  }
+
+ private:
+  const SeatingSet& S_;
+  VectorQ b0_;
 };
 
-bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens);
+// The guaranteed set G: a disjoint union of convex pieces.
+class GuaranteedTarget final : public RegionTarget {
+ public:
+  GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {}
+  const char* push_model() const override { return "step"; }
 
-// No ray of the cone (τ > 0) meets the convex piece Q: the set
-// {μ >= 0 : b0 + Σ μ_j g_j ∈ Q} is empty (exact LP with strict rows). When
-// b0 itself lies in Q (μ = 0) this cannot be certified this way.
-bool cone_misses_piece(Context& ctx, const std::vector<VectorQ>& gens, const Polyhedron& Q) {
-  if (Q.contains(ctx.b0)) return false;
-  ++ctx.stats.lp_tests;
-  const int n = static_cast<int>(gens.size());
-  Polyhedron lifted;
-  lifted.dim = n;
-  auto lift = [&](const Halfspace& h) {
-    VectorQ a(n);
-    for (int j = 0; j < n; ++j) a[j] = h.a.dot(gens[j]);
-    return Halfspace{a, h.c - h.a.dot(ctx.b0)};
-  };
-  for (const auto& h : Q.closed) lifted.closed.push_back(lift(h));
-  for (const auto& h : Q.strict) lifted.strict.push_back(lift(h));
-  for (int j = 0; j < n; ++j) lifted.closed.push_back({VectorQ::Unit(n, j), Rational(0)});
-  return is_empty(lifted);
-}
+  void check_pusher(const Rational& mu) const override {
+    if (mu != 0)
+      throw UnsupportedError("--pusher-mu", to_string(mu),
+                             "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
+                             "does not make every push direction between them hit G (use a frictionless pusher)");
+  }
 
-// Classification of a cone (generators with force directions in
-// cone(d_first, d_last)) against the non-convex G.
-RegionStatus classify_against_g(Context& ctx, const std::vector<VectorQ>& gens, const Vec2& d_first, const Vec2& d_last,
-                                RegionInterval* out) {
-  for (const auto& piece : ctx.G->pieces) {
-    std::vector<Magnitudes> T;
-    bool all = true;
-    for (const auto& g : gens) {
-      T.push_back(ray_magnitudes(piece, ctx.b0, g));
-      all = all && !T.back().empty;
-    }
-    if (all) {  // the hit set of one convex piece is convex
-      if (out) {
-        out->magnitudes = common_magnitudes(gens, T, d_first, d_last);
-        out->magnitude_set = {out->magnitudes};
+  // The hit set of one convex piece is convex: IN when one piece holds
+  // every generator's ray.
+  bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
+                     RegionInterval* detail) override {
+    if (!d_first) return false;
+    for (const auto& piece : G_.pieces) {
+      std::vector<Magnitudes> T;
+      bool all = true;
+      for (const auto& g : gens) {
+        T.push_back(ray_magnitudes(piece, b0_, g));
+        all = all && !T.back().empty;
+      }
+      if (!all) continue;
+      if (detail) {
+        detail->magnitudes = common_magnitudes(gens, T, *d_first, *d_last);
+        detail->magnitude_set = {detail->magnitudes};
         bool half = true;
         for (const auto& t : T) half = half && t.half_line();
-        out->half_line = half;
+        detail->half_line = half;
       }
-      return RegionStatus::kIn;
+      return true;
     }
+    return false;
   }
+
   // G is the disjoint union of its pieces: the cone misses G iff it misses
   // every piece.
-  for (const auto& piece : ctx.G->pieces)
-    if (!cone_misses_piece(ctx, gens, piece)) return RegionStatus::kPartial;
-  return RegionStatus::kOut;
-}
+  bool misses(const std::vector<VectorQ>& gens) override {
+    for (const auto& piece : G_.pieces)
+      if (!cone_misses_piece(b0_, stats, gens, piece)) return false;
+    return true;
+  }
 
-// Exact point test from the extreme push directions at lever arm r.
-RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
-                             std::vector<Magnitudes>* set = nullptr) {
-  ++ctx.stats.point_tests;
-  std::vector<VectorQ> gens = {contact_wrench(r, d_first, 3), contact_wrench(r, d_last, 3)};
-  if (ctx.G) {
+  RegionStatus test_point(const std::vector<VectorQ>& gens, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
+                          std::vector<Magnitudes>* set) override {
     if (cross(d_first, d_last) == 0) {  // one ray: exact union of intervals
-      const std::vector<Magnitudes> parts = ray_magnitudes(*ctx.G, ctx.S, ctx.b0, gens[0]);
+      const std::vector<Magnitudes> parts = ray_magnitudes(G_, S_, b0_, gens[0]);
       if (set) {
         // Report Euclidean |p| like every other magnitude: τ|d| with |d|
         // irrational, so each end is rounded inward (a certified subset).
@@ -167,42 +200,59 @@ RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, c
       return parts.empty() ? RegionStatus::kOut : RegionStatus::kIn;
     }
     RegionInterval tmp;
-    const RegionStatus st = classify_against_g(ctx, gens, d_first, d_last, &tmp);
+    RegionStatus st = RegionStatus::kIn;
+    if (!contains_cone(gens, &d_first, &d_last, &tmp)) st = misses(gens) ? RegionStatus::kOut : RegionStatus::kPartial;
     if (out) *out = tmp.magnitudes;
     if (set) *set = tmp.magnitude_set;
     return st;
   }
-  std::vector<Magnitudes> T;
-  for (const auto& g : gens) {
-    T.push_back(ray_magnitudes(ctx.S, ctx.b0, g));
-    if (T.back().empty) {
-      if (out) *out = Magnitudes{};
-      return RegionStatus::kOut;
-    }
-  }
-  if (out) *out = common_magnitudes(gens, T, d_first, d_last);
-  return RegionStatus::kIn;
-}
 
-// The cone misses S − b0 except at 0: the LP max Σμ_j s.t. b0 + Σ μ_j g_j
-// ∈ S, μ >= 0 is infeasible or has optimum 0. (No cap on Σμ: S is not a
-// cone from b0, so a cap would also cap the push magnitude.)
-bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens) {
-  ++ctx.stats.lp_tests;
+ private:
+  const GuaranteedSet& G_;
+  const SeatingSet& S_;
+  VectorQ b0_;
+};
+
+struct Context {
+  const Scene& scene;
+  RegionTarget& target;
+  Rational mu;
+  ConeMethod method;
+  Rational resolution;
+  RegionStats stats;
+};
+
+// No ray of the cone (τ > 0) meets the convex piece Q: the set
+// {μ >= 0 : b0 + Σ μ_j g_j ∈ Q} is empty (exact LP with strict rows). When
+// b0 itself lies in Q (μ = 0) this cannot be certified this way.
+bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<VectorQ>& gens, const Polyhedron& Q) {
+  if (Q.contains(b0)) return false;
+  if (stats) ++stats->lp_tests;
   const int n = static_cast<int>(gens.size());
-  std::vector<internal::LinearConstraint> rows;
-  for (const auto& h : ctx.S.halfspaces) {
+  Polyhedron lifted;
+  lifted.dim = n;
+  auto lift = [&](const Halfspace& h) {
     VectorQ a(n);
     for (int j = 0; j < n; ++j) a[j] = h.a.dot(gens[j]);
-    rows.push_back({a, internal::Relation::kGreaterEqual, h.c - h.a.dot(ctx.b0)});
-  }
-  for (int j = 0; j < n; ++j) rows.push_back({VectorQ::Unit(n, j), internal::Relation::kGreaterEqual, Rational(0)});
-  const internal::LpResult lp = internal::solve_lp(n, rows, VectorQ(-VectorQ::Ones(n)));
-  if (lp.status == internal::LpStatus::kInfeasible) return true;
-  if (lp.status == internal::LpStatus::kUnbounded) return false;
-  return lp.value == 0;
+    return Halfspace{a, h.c - h.a.dot(b0)};
+  };
+  for (const auto& h : Q.closed) lifted.closed.push_back(lift(h));
+  for (const auto& h : Q.strict) lifted.strict.push_back(lift(h));
+  for (int j = 0; j < n; ++j) lifted.closed.push_back({VectorQ::Unit(n, j), Rational(0)});
+  return is_empty(lifted);
 }
 
+// Exact point test from the extreme push directions at lever arm r.
+RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
+                             std::vector<Magnitudes>* set = nullptr) {
+  ++ctx.stats.point_tests;
+  const std::vector<VectorQ> gens = {contact_wrench(r, d_first, 3), contact_wrench(r, d_last, 3)};
+  return ctx.target.test_point(gens, d_first, d_last, out, set);
+}
+
+// Segment test: IN when the cone of every family's wrenches reaches the
+// target, OUT when one family's cone misses it (that edge direction then
+// misses at every point), else PARTIAL.
 RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   ++ctx.stats.cone_tests;
   RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}};
@@ -215,41 +265,21 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
     if (!cone) return out;  // tangent or friction cone reaches π: split
     cones.push_back(std::move(*cone));
   }
-  if (ctx.G) {
-    const auto& gens = cones.front().generators;  // frictionless: one family
-    Vec2 first, last;
-    std::vector<Vec2> dirs;
-    for (const auto& g : gens) dirs.push_back({g[0], g[1]});
-    if (!direction_extremes(dirs, first, last)) return out;
-    out.status = classify_against_g(ctx, gens, first, last, &out);
-    return out;
-  }
-  bool all_hit = true, all_half = true;
   std::vector<VectorQ> gens;
-  std::vector<Magnitudes> T;
-  std::vector<bool> family_misses_somewhere;
-  for (const auto& cone : cones) {
-    bool misses = false;
+  std::vector<Vec2> dirs;
+  for (const auto& cone : cones)
     for (const auto& g : cone.generators) {
       gens.push_back(g);
-      T.push_back(ray_magnitudes(ctx.S, ctx.b0, g));
-      misses = misses || T.back().empty;
-      all_half = all_half && T.back().half_line();
+      dirs.push_back({g[0], g[1]});
     }
-    all_hit = all_hit && !misses;
-    family_misses_somewhere.push_back(misses);
-  }
-  if (all_hit) {
+  Vec2 first, last;
+  const bool pointed = direction_extremes(dirs, first, last);
+  if (ctx.target.contains_cone(gens, pointed ? &first : nullptr, pointed ? &last : nullptr, &out)) {
     out.status = RegionStatus::kIn;
-    out.half_line = all_half;
-    Vec2 first, last;
-    std::vector<Vec2> dirs;
-    for (const auto& g : gens) dirs.push_back({g[0], g[1]});
-    if (direction_extremes(dirs, first, last)) out.magnitudes = common_magnitudes(gens, T, first, last);
     return out;
   }
-  for (std::size_t f = 0; f < cones.size(); ++f)
-    if (family_misses_somewhere[f] && cone_misses(ctx, cones[f].generators)) {
+  for (const auto& cone : cones)
+    if (ctx.target.misses(cone.generators)) {
       out.status = RegionStatus::kOut;
       return out;
     }
@@ -302,11 +332,8 @@ std::vector<RegionInterval> merge(const std::vector<RegionInterval>& in) {
   return out;
 }
 
-void check_inputs(const Scene& scene, const Rational& mu, const GuaranteedSet* G = nullptr) {
-  if (G && mu != 0)
-    throw UnsupportedError("--pusher-mu", to_string(mu),
-                           "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
-                           "does not make every push direction between them hit G (use a frictionless pusher)");
+void check_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {
+  target.check_pusher(mu);
   if (!scene.body.boundary)
     throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no boundary to push on");
@@ -409,14 +436,41 @@ Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ&
   return m;
 }
 
-Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options) {
+std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0) {
+  return std::make_unique<SeatingTarget>(S, b0);
+}
+
+std::unique_ptr<RegionTarget> guaranteed_target(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) {
+  return std::make_unique<GuaranteedTarget>(G, S, b0);
+}
+
+namespace {
+
+std::unique_ptr<RegionTarget> step_target(const Scene& scene, const SeatingSet& S, const GuaranteedSet* G) {
+  if (G) return guaranteed_target(*G, S, scene.background_impulse);
+  return seating_target(S, scene.background_impulse);
+}
+
+// A push is judged at the upper end of the pusher's friction interval: the
+// set of push directions grows with μ_p, so the region shrinks
+// (docs/theory.md §10).
+Rational default_pusher_mu(const Scene& scene, const RegionTarget&) { return scene.pusher_mu_hi; }
+
+bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
+  if (r.status != RegionStatus::kIn) return false;
+  return std::string(target.push_model()) == "sustained" || r.magnitudes.half_line();
+}
+
+}  // namespace
+
+Region compute_region(const Scene& scene, RegionTarget& target, const RegionOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const Rational mu = options.pusher_mu.value_or(scene.pusher_mu);
-  check_inputs(scene, mu, options.guaranteed);
+  const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
+  check_inputs(scene, mu, target);
   if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{
-      scene, S, scene.background_impulse, mu, options.cone, options.resolution, RegionStats{}, options.guaranteed};
+  Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}};
+  target.stats = &ctx.stats;
   const std::vector<Join> js = joins(b);
   std::vector<RegionInterval> raw;
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {
@@ -424,33 +478,51 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
     if (js[k].corner) {
       RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}};
       corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set);
-      corner.half_line = corner.status == RegionStatus::kIn && corner.magnitudes.half_line();
+      corner.half_line = in_half_line(target, corner);
       raw.push_back(corner);
     }
     subdivide(ctx, piece, 0, raw);
   }
+  target.stats = nullptr;
   Region region;
   region.intervals = options.merge ? merge(raw) : raw;
   region.stats = ctx.stats;
+  region.push = target.push_model();
+  region.cone = options.cone;
+  region.resolution = options.resolution;
+  region.pusher_mu = mu;
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
 }
 
-RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& mu,
-                          Magnitudes* magnitudes, const GuaranteedSet* guaranteed) {
-  check_inputs(scene, mu, guaranteed);
-  Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}, guaranteed};
+Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options) {
+  const auto target = step_target(scene, S, options.guaranteed);
+  return compute_region(scene, *target, options);
+}
+
+RegionStatus point_status(const Scene& scene, RegionTarget& target, int curve, const Rational& u, const Rational& mu,
+                          Magnitudes* magnitudes) {
+  check_inputs(scene, mu, target);
+  Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
+  target.stats = nullptr;
   return status_at(ctx, *scene.body.boundary, joins(*scene.body.boundary), curve, u, magnitudes);
 }
 
-Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve, std::optional<Rational> pusher_mu,
-                     const GuaranteedSet* guaranteed) {
+RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& mu,
+                          Magnitudes* magnitudes, const GuaranteedSet* guaranteed) {
+  const auto target = step_target(scene, S, guaranteed);
+  return point_status(scene, *target, curve, u, mu, magnitudes);
+}
+
+Region sample_region(const Scene& scene, RegionTarget& target, int points_per_curve,
+                     std::optional<Rational> pusher_mu) {
   const auto start = std::chrono::steady_clock::now();
-  const Rational mu = pusher_mu.value_or(scene.pusher_mu);
-  check_inputs(scene, mu, guaranteed);
+  const Rational mu = pusher_mu.value_or(default_pusher_mu(scene, target));
+  check_inputs(scene, mu, target);
   if (points_per_curve <= 0) throw InputError("--points", std::to_string(points_per_curve), "must be >= 1");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}, guaranteed};
+  Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
+  target.stats = &ctx.stats;
   const std::vector<Join> js = joins(b);
   Region region;
   for (std::size_t c = 0; c < b.curves.size(); ++c) {
@@ -459,13 +531,22 @@ Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_cur
       const Rational u = curve.u_begin() + (curve.u_end() - curve.u_begin()) * Rational(k, points_per_curve);
       RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}, {}};
       r.status = status_at(ctx, b, js, static_cast<int>(c), u, &r.magnitudes, &r.magnitude_set);
-      r.half_line = r.status == RegionStatus::kIn && r.magnitudes.half_line();
+      r.half_line = in_half_line(target, r);
       region.intervals.push_back(r);
     }
   }
+  target.stats = nullptr;
   region.stats = ctx.stats;
+  region.push = target.push_model();
+  region.pusher_mu = mu;
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
+}
+
+Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve, std::optional<Rational> pusher_mu,
+                     const GuaranteedSet* guaranteed) {
+  const auto target = step_target(scene, S, guaranteed);
+  return sample_region(scene, *target, points_per_curve, pusher_mu);
 }
 
 }  // namespace fixel

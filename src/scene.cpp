@@ -111,6 +111,21 @@ Boundary parse_boundary(const json& v) {
   return make_boundary(std::move(curves), path);
 }
 
+// A friction coefficient "mu" or an interval ["lo", "hi"] (0 <= lo <= hi).
+void parse_friction(const json& v, const std::string& path, Rational& lo, Rational& hi) {
+  if (v.is_array()) {
+    const VectorQ range = vector(v, path, 2, "a friction interval [lo, hi]");
+    lo = range[0];
+    hi = range[1];
+    require_nonnegative(lo, path + "[0]");
+    if (hi < lo) throw SceneError(path, "[" + to_string(lo) + ", " + to_string(hi) + "]", "has lo > hi");
+    return;
+  }
+  lo = number(v, path);
+  require_nonnegative(lo, path);
+  hi = lo;
+}
+
 int parse_dof(const json& v) {
   if (!v.is_string()) throw SceneError("body.dof", describe(v), "must be 2 or 3");
   const std::string s = v.get<std::string>();
@@ -203,8 +218,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
     if (fx.n_A.x * fx.n_A.x + fx.n_A.y * fx.n_A.y != 1)
       throw SceneError(path + ".normal", pair_text(fx.n_A),
                        "is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
-    fx.mu = number(require(f, "mu", path), path + ".mu");
-    require_nonnegative(fx.mu, path + ".mu");
+    parse_friction(require(f, "mu", path), path + ".mu", fx.mu, fx.mu_hi);
     fx.gap = number(require(f, "gap", path), path + ".gap");
     require_nonnegative(fx.gap, path + ".gap");
     scene.fixels.push_back(fx);
@@ -215,12 +229,12 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
         "but dof is " + std::to_string(b.dof) + ": the seating analysis needs exactly dof fixels (n_c == dof)");
 
   scene.pusher_mu = Rational(0);
+  scene.pusher_mu_hi = Rational(0);
   if (root.contains("pusher")) {
     const json& pusher = root.at("pusher");
     expect_object(pusher, "pusher", {"mu"});
     if (pusher.contains("mu")) {
-      scene.pusher_mu = number(pusher.at("mu"), "pusher.mu");
-      require_nonnegative(scene.pusher_mu, "pusher.mu");
+      parse_friction(pusher.at("mu"), "pusher.mu", scene.pusher_mu, scene.pusher_mu_hi);
     }
   }
   scene.background_impulse =

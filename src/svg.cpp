@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -51,10 +52,18 @@ bool hits_display(const SeatingSet& S, const VectorQ& b0, double fx, double fy, 
   return lo <= hi;
 }
 
-}  // namespace
+// What differs between the pictures of the push models.
+struct Picture {
+  const char* in_label;
+  const char* shade_caption;
+  // 0: not shaded, 1: reaches the target, 2: held by a jam cone (display grid).
+  std::function<int(double, double, double)> shade;
+  std::optional<std::array<double, 3>> ghost;  // seated pose (x, y, θ) to draw as a ghost outline
+  const char* push_caption = nullptr;
+};
 
-void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
-                      const std::string& method, const Rational& resolution, const Rational& pusher_mu) {
+void draw_region(const std::string& path, const Scene& scene, const Region& region, const std::string& method,
+                 const Rational& resolution, const Rational& pusher_mu, const Picture& pic) {
   const Boundary& b = *scene.body.boundary;
   // Fit the outline and the fixels.
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
@@ -84,9 +93,10 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
       << ", pusher mu " << to_string(pusher_mu) << ", intervals: " << counts[RegionStatus::kIn] << " in, "
       << counts[RegionStatus::kPartial] << " partial, " << counts[RegionStatus::kOut] << " out; "
       << region.stats.cone_tests << " cone tests</text>\n";
+  if (pic.push_caption) svg << "<text x='" << kMargin << "' y='62'>" << pic.push_caption << "</text>\n";
   const double ly = kHeight + 60;
   const std::pair<RegionStatus, const char*> keys[] = {
-      {RegionStatus::kIn, "in: one push seats the part"},
+      {RegionStatus::kIn, pic.in_label},
       {RegionStatus::kPartial, "partial (undecided at the resolution)"},
       {RegionStatus::kOut, "out"}};
   double lx = kMargin;
@@ -136,6 +146,22 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
         << "</text>\n";
   }
   const double cx = d(scene.body.p_AoCm_A.x), cy = d(scene.body.p_AoCm_A.y);
+  if (pic.ghost) {  // the part at its seated pose: rotate about the centre of mass, then translate
+    const auto [gx, gy, th] = *pic.ghost;
+    svg << "<polyline fill='none' stroke='#756bb1' stroke-dasharray='6,4' stroke-width='1.5' points='";
+    for (const auto& piece : b.pieces)
+      for (int k = 0; k <= 16; ++k) {
+        const Vec2 p = piece.point(Rational(k, 16));
+        const double rx = d(p.x) - cx, ry = d(p.y) - cy;
+        svg << F.x(cx + gx + std::cos(th) * rx - std::sin(th) * ry) << ","
+            << F.y(cy + gy + std::sin(th) * rx + std::cos(th) * ry) << " ";
+      }
+    svg << "'/>\n";
+    for (const auto& f : scene.fixels) {  // where the fixels really are: f = p − ψ n
+      const double fx = d(f.p_AoF_A.x - f.gap * f.n_A.x), fy = d(f.p_AoF_A.y - f.gap * f.n_A.y);
+      svg << "<circle cx='" << F.x(fx) << "' cy='" << F.y(fy) << "' r='3' fill='#756bb1'/>\n";
+    }
+  }
   svg << "<path d='M" << F.x(cx) - 7 << "," << F.y(cy) << " h14 M" << F.x(cx) << "," << F.y(cy) - 7
       << " v14' stroke='black' stroke-width='2'/>\n";
 
@@ -152,13 +178,15 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
       const double lon = -180 + (i + 0.5) * 360.0 / nlon, lat = -90 + (j + 0.5) * 180.0 / nlat;
       const double fx = std::cos(lat * M_PI / 180) * std::cos(lon * M_PI / 180),
                    fy = std::cos(lat * M_PI / 180) * std::sin(lon * M_PI / 180), m = std::sin(lat * M_PI / 180);
-      if (hits_display(S, scene.background_impulse, fx, fy, m))
+      const int shade = pic.shade(fx, fy, m);
+      if (shade)
         svg << "<rect x='" << px(lon - 180.0 / nlon) << "' y='" << py(lat + 90.0 / nlat) << "' width='"
-            << kPanel / nlon + 0.3 << "' height='" << (py(-90) - py(90)) / nlat + 0.3 << "' fill='#c6dbef'/>\n";
+            << kPanel / nlon + 0.3 << "' height='" << (py(-90) - py(90)) / nlat + 0.3 << "' fill='"
+            << (shade == 1 ? "#c6dbef" : "#fdd0a2") << "'/>\n";
     }
   svg << "<rect x='" << x0 << "' y='" << y0 << "' width='" << kPanel << "' height='" << py(-90) - py(90)
-      << "' fill='none' stroke='#999'/>\n<text x='" << x0 + 4 << "' y='" << py(-90) + 16
-      << "' fill='#3182bd'>shaded: directions whose ray meets S (b0 + tau w in S, display grid)</text>\n";
+      << "' fill='none' stroke='#999'/>\n<text x='" << x0 + 4 << "' y='" << py(-90) + 16 << "' fill='#3182bd'>"
+      << pic.shade_caption << "</text>\n";
   // Boundary wrench curve (frictionless normal), coloured by status.
   for (const auto& r : region.intervals)
     for (const auto& piece : b.pieces) {
@@ -207,6 +235,52 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
   if (!out) throw InputError("--svg", path, "cannot be written");
   out << svg.str();
   if (!out) throw InputError("--svg", path, "could not be written completely");
+}
+
+}  // namespace
+
+void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
+                      const std::string& method, const Rational& resolution, const Rational& pusher_mu) {
+  Picture pic;
+  pic.in_label = "in: one push seats the part";
+  pic.shade_caption = "shaded: directions whose ray meets S (b0 + tau w in S, display grid)";
+  pic.shade = [&](double fx, double fy, double m) {
+    return hits_display(S, scene.background_impulse, fx, fy, m) ? 1 : 0;
+  };
+  draw_region(path, scene, region, method, resolution, pusher_mu, pic);
+}
+
+void write_sustained_region_svg(const std::string& path, const Scene& scene, const SustainedSet& J,
+                                const Region& region, const std::string& method, const Rational& resolution,
+                                const Rational& pusher_mu) {
+  // Body-frame wrench w_B → world frame at q* (display only).
+  const double th = J.pose.approx[2], c = std::cos(th), s = std::sin(th);
+  auto rows = [](const std::vector<std::array<QuadraticIrrational, 3>>& v) {
+    std::vector<std::array<double, 3>> out;
+    for (const auto& a : v) out.push_back({a[0].approx(), a[1].approx(), a[2].approx()});
+    return out;
+  };
+  const auto K = rows(J.cone.strict);
+  std::vector<std::vector<std::array<double, 3>>> jams;
+  for (const auto& jam : J.jam_cones) jams.push_back(rows(jam.cone.closed));
+  Picture pic;
+  pic.in_label = "in: sustained push seats and stays (J)";
+  pic.shade_caption =
+      "shaded blue: wrench directions in J; orange: driven into the seat but a pair of fixels can hold it";
+  pic.push_caption = "push model: sustained (a held wrench, judged at the seated pose q*; dashed: the part at q*)";
+  pic.ghost = J.pose.approx;
+  pic.shade = [=](double fx, double fy, double m) {
+    const double wx = c * fx - s * fy, wy = s * fx + c * fy;
+    for (const auto& a : K)
+      if (a[0] * wx + a[1] * wy + a[2] * m <= 0) return 0;
+    for (const auto& jam : jams) {
+      bool in = true;
+      for (const auto& a : jam) in = in && a[0] * wx + a[1] * wy + a[2] * m >= 0;
+      if (in) return 2;
+    }
+    return 1;
+  };
+  draw_region(path, scene, region, method, resolution, pusher_mu, pic);
 }
 
 void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet& G,

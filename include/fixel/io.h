@@ -12,6 +12,7 @@
 #include "fixel/scene.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
+#include "fixel/sustained.h"
 #include "fixel/verify.h"
 
 namespace fixel {
@@ -63,6 +64,17 @@ std::string region_json(const Scene& scene, const Region& region, const std::str
 /// The same as a readable report.
 std::string region_text(const Scene& scene, const Region& region, const std::string& method,
                         const std::optional<Rational>& resolution, const Rational& pusher_mu);
+
+/// `fixel seat --sustained --json`: {"scene", "seated_pose": {"exact",
+/// "approx", "algebraic", "enclosure", "theta_abs", "at_scene_pose",
+/// "contacts"}, "sustained": {"cone", "jam_cones", "pieces", "empty",
+/// "empty_reason"?, "strongly_stable", "mu"}} and, with a wrench, "wrench",
+/// "contains" and "why_not" (docs/formats.md).
+std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench);
+/// The same as a readable report.
+std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench);
+/// The "seated_pose" object of sustained_json, as compact JSON text.
+std::string seated_pose_json(const SeatedPose& q);
 
 /// `fixel verify` output: one line per check, then a summary line.
 std::string verification_text(const std::vector<VerificationCheck>& checks);

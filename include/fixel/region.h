@@ -16,6 +16,7 @@
 namespace fixel {
 
 struct GuaranteedSet;
+class RegionTarget;
 
 /// An interval of positive reals with optional infinite upper end.
 struct Magnitudes {
@@ -74,10 +75,15 @@ struct RegionStats {
   double seconds = 0;       ///< Wall time (display only).
 };
 
-/// The region: intervals that tile every curve's parameter range, in order.
+/// The region: intervals that tile every curve's parameter range, in order,
+/// and how it was computed.
 struct Region {
   std::vector<RegionInterval> intervals;
   RegionStats stats;
+  std::string push = "step";             ///< Push model of the target: "step" (S, G) or "sustained" (J).
+  ConeMethod cone = ConeMethod::kTight;  ///< Segment cone used.
+  std::optional<Rational> resolution;    ///< Parameter width at which splitting stopped (none for samples).
+  Rational pusher_mu;                    ///< Pusher friction used.
 };
 
 /// Options of compute_region.
@@ -101,6 +107,19 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
 /// [u, u] with status in or out (partial where the normal is undefined).
 Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve,
                      std::optional<Rational> pusher_mu = std::nullopt, const GuaranteedSet* guaranteed = nullptr);
+
+/// The region against any target (S, G, J: see region_target.h); the
+/// algorithm is the same for every target. The pusher μ defaults to the
+/// scene's (its upper end for a sustained-push target).
+Region compute_region(const Scene& scene, RegionTarget& target, const RegionOptions& options);
+
+/// The sampling baseline against any target.
+Region sample_region(const Scene& scene, RegionTarget& target, int points_per_curve,
+                     std::optional<Rational> pusher_mu = std::nullopt);
+
+/// Exact point test against any target.
+RegionStatus point_status(const Scene& scene, RegionTarget& target, int curve, const Rational& u,
+                          const Rational& pusher_mu, Magnitudes* magnitudes = nullptr);
 
 /// Exact point test at parameter u of curve k (a corner uses its whole fan of
 /// push directions). kPartial when the contact normal is undefined there.

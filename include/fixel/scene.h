@@ -36,10 +36,11 @@ struct Body {
 
 /// One fixture point ("fixel").
 struct Fixel {
-  Vec2 p_AoF_A;  ///< Contact point in frame A.
-  Vec2 n_A;      ///< Inward unit normal (into the part), exactly x²+y² == 1.
-  Rational mu;   ///< Coulomb friction μ ≥ 0.
-  Rational gap;  ///< Gap ψ ≥ 0 at the current configuration.
+  Vec2 p_AoF_A;    ///< Contact point in frame A.
+  Vec2 n_A;        ///< Inward unit normal (into the part), exactly x²+y² == 1.
+  Rational mu;     ///< Coulomb friction μ ≥ 0 (the lower end of an interval).
+  Rational mu_hi;  ///< Upper end of the friction interval (== mu for a single value).
+  Rational gap;    ///< Gap ψ ≥ 0 at the current configuration.
 };
 
 /// A whole scene file.
@@ -48,7 +49,8 @@ struct Scene {
   Rational time_step;  ///< h > 0.
   Body body;
   std::vector<Fixel> fixels;
-  Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0).
+  Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0; the lower end of an interval).
+  Rational pusher_mu_hi;       ///< Upper end of the pusher friction interval (== pusher_mu for one value).
   VectorQ background_impulse;  ///< b₀, length dof (default 0).
 
   /// Number of contacts n_c.

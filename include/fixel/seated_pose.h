@@ -39,13 +39,24 @@ struct SeatedPose {
   /// the boundary (rounded for display when not rational).
   std::vector<int> contact_curve;
   std::vector<double> contact_u;
+  /// For each fixel: its contact point g_i on the boundary at q*, in the
+  /// part's body frame B (frame A at the scene pose), exact in Q(√d).
+  std::vector<std::array<QuadraticIrrational, 2>> p_BoG_B;
+  /// For each fixel: the boundary's inward normal at g_i, frame B, of any
+  /// positive length (rational: an edge normal, or the fixel's own normal
+  /// when q* = 0).
+  std::vector<Vec2> n_B;
   /// True when every gap is zero (q* = 0 exactly).
   bool at_scene_pose = false;
 };
 
-/// Solves for q*. Throws SceneError when no seated pose exists (a fixel
-/// cannot touch the boundary) or when it is not unique, and SceneError if
-/// the scene has no boundary.
+/// Solves for q*, exactly. Every fixel must lie on a polyline edge of the
+/// boundary, unless every gap is zero (then q* = 0 and each contact keeps the
+/// fixel's own point and normal). Throws SceneError when the scene has no
+/// boundary or dof != 3, when a fixel is not on the boundary, when no seated
+/// pose exists (a fixel cannot touch its edge) or when it is not unique, and
+/// UnsupportedError for a fixel on a curved piece with open gaps (the
+/// certified enclosure for curved contacts is not implemented).
 SeatedPose seated_pose(const Scene& scene);
 
 }  // namespace fixel

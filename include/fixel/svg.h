@@ -10,6 +10,7 @@
 #include "fixel/region.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
+#include "fixel/sustained.h"
 
 namespace fixel {
 
@@ -20,6 +21,14 @@ namespace fixel {
 /// cannot be written.
 void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
                       const std::string& method, const Rational& resolution, const Rational& pusher_mu);
+
+/// The same picture for the sustained-push region against J: the seated
+/// pose as a ghost outline beside the scene pose, and the wrench panel
+/// shaded by J and by the jam cones. Throws InputError if the file cannot be
+/// written.
+void write_sustained_region_svg(const std::string& path, const Scene& scene, const SustainedSet& J,
+                                const Region& region, const std::string& method, const Rational& resolution,
+                                const Rational& pusher_mu);
 
 /// Draws the slice p_θ = theta of S and G (dof 3): impulses in G, in S but
 /// not in G, and outside S, each decided exactly on a display grid, with the

@@ -5,8 +5,10 @@
 
 #include "fixel/error.h"
 #include "fixel/io.h"
+#include "fixel/region_target.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
+#include "fixel/sustained.h"
 #include "fixel/svg.h"
 #include "fixel/verify.h"
 
@@ -14,6 +16,16 @@ namespace {
 
 // Exit codes: 0 success, 1 a verification failed, 2 bad input or usage.
 constexpr int kExitBadInput = 2;
+
+// A pusher μ, or an interval "lo,hi": the region shrinks as the pusher's μ
+// grows (docs/theory.md §10), so an interval is judged at its upper end.
+fixel::Rational parse_pusher_mu(const std::string& text) {
+  const auto mu = fixel::parse_rational_list(text, "--pusher-mu");
+  if (mu.size() > 2) throw fixel::InputError("--pusher-mu", text, "must be M or lo,hi");
+  if (mu.size() == 2 && mu[1] < mu[0]) throw fixel::InputError("--pusher-mu", text, "has lo > hi");
+  if (mu[0] < 0) throw fixel::InputError("--pusher-mu", text, "must be >= 0");
+  return mu.back();
+}
 
 }  // namespace
 
@@ -34,6 +46,11 @@ int main(int argc, char** argv) {
   seat->add_flag("--guaranteed", guaranteed, "Also compute G, the impulses whose every outcome seats");
   seat->add_flag("--stable", stable, "Also give the seat-and-stay set S ∩ h·C_stab");
   seat->add_option("--svg", seat_svg, "With --guaranteed: draw the slice p_theta = const of S and G");
+  bool sustained = false;
+  std::string wrench_text;
+  seat->add_flag("--sustained", sustained,
+                 "The sustained-push wrench set J at the seated pose q* instead of S (past the paper)");
+  seat->add_option("--wrench", wrench_text, "With --sustained: test a world-frame wrench wx,wy,wm (exact numbers)");
 
   auto* dump = app.add_subcommand("dump", "Write S as an OFF file, clipped to a stated box");
   dump->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
@@ -53,22 +70,28 @@ int main(int argc, char** argv) {
   solutions->add_option("--impulse", impulse_text, "External impulse: px,py[,ptheta]")->required();
   solutions->add_flag("--json", json_out, "Print one JSON document on stdout");
 
-  std::string resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path;
+  std::string resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path, push_text = "step";
   auto* region = app.add_subcommand("region", "The pushing region by exact recursive subdivision (paper §5)");
   region->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
   region->add_option("--resolution", resolution_text, "Stop splitting at this curve-parameter width (default 1/1024)");
   region->add_option("--cone", cone_text, "Segment cone: tight (default) or paper")
       ->check(CLI::IsMember({"tight", "paper"}));
-  region->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
+  region->add_option("--pusher-mu", pusher_mu_text,
+                     "Pusher friction M, or an interval lo,hi (judged at hi); overrides the scene's pusher.mu");
   region->add_option("--svg", svg_path, "Also draw the region to this SVG file");
   region->add_flag("--json", json_out, "Print one JSON document on stdout");
   region->add_flag("--guaranteed", guaranteed, "Classify against G instead of S (frictionless pusher only)");
+  region
+      ->add_option("--push", push_text,
+                   "Push model: step (default; one impulse, the set S) or sustained (a held wrench, the set J)")
+      ->check(CLI::IsMember({"step", "sustained"}));
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
   sample->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
   sample->add_option("--points", points, "Points per curve (default 64)");
-  sample->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
+  sample->add_option("--pusher-mu", pusher_mu_text,
+                     "Pusher friction M, or an interval lo,hi (judged at hi); overrides the scene's pusher.mu");
   sample->add_flag("--json", json_out, "Print one JSON document on stdout");
   sample->add_flag("--guaranteed", guaranteed, "Test against G instead of S (frictionless pusher only)");
 
@@ -101,6 +124,34 @@ int main(int argc, char** argv) {
       std::cout << (json_out ? fixel::outcomes_json(scene, p, outcomes) : fixel::outcomes_text(scene, p, outcomes));
       return 0;
     }
+    if (*seat && sustained) {
+      if (guaranteed || stable || !seat_svg.empty() || !impulse_text.empty())
+        throw fixel::InputError("--sustained", "",
+                                "cannot be combined with --guaranteed, --stable, --svg or --impulse");
+      std::optional<fixel::VectorQ> wrench;
+      if (!wrench_text.empty()) wrench = fixel::parse_impulse(wrench_text, 3, "--wrench");
+      const fixel::SustainedSet J = fixel::sustained_set(scene);
+      std::cout << (json_out ? fixel::sustained_json(scene, J, wrench) : fixel::sustained_text(scene, J, wrench));
+      return 0;
+    }
+    if (!wrench_text.empty()) throw fixel::InputError("--wrench", wrench_text, "needs --sustained");
+    if (*region && push_text == "sustained") {
+      if (guaranteed) throw fixel::InputError("--guaranteed", "", "cannot be combined with --push sustained");
+      fixel::RegionOptions options;
+      options.resolution = fixel::parse_rational(resolution_text, "--resolution");
+      options.cone = cone_text == "paper" ? fixel::ConeMethod::kPaper : fixel::ConeMethod::kTight;
+      if (!pusher_mu_text.empty()) options.pusher_mu = parse_pusher_mu(pusher_mu_text);
+      const fixel::SustainedSet J = fixel::sustained_set(scene);
+      const auto target = fixel::sustained_target(J);
+      const auto r = fixel::compute_region(scene, *target, options);
+      std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, r.pusher_mu)
+                             : fixel::region_text(scene, r, cone_text, options.resolution, r.pusher_mu));
+      if (!svg_path.empty()) {
+        fixel::write_sustained_region_svg(svg_path, scene, J, r, cone_text, options.resolution, r.pusher_mu);
+        if (!json_out) std::cout << "wrote " << svg_path << "\n";
+      }
+      return 0;
+    }
     const fixel::SeatingSet S = fixel::seating_set(scene);
     std::optional<fixel::GuaranteedSet> G;
     if (guaranteed) G = fixel::guaranteed_set(scene, S);
@@ -119,8 +170,8 @@ int main(int argc, char** argv) {
     }
     if (*region || *sample) {
       std::optional<fixel::Rational> mu;
-      if (!pusher_mu_text.empty()) mu = fixel::parse_rational(pusher_mu_text, "--pusher-mu");
-      const fixel::Rational used_mu = mu.value_or(scene.pusher_mu);
+      if (!pusher_mu_text.empty()) mu = parse_pusher_mu(pusher_mu_text);
+      const fixel::Rational used_mu = mu.value_or(scene.pusher_mu_hi);
       if (*sample) {
         const auto r = fixel::sample_region(scene, S, points, mu, g);
         std::cout << (json_out ? fixel::region_json(scene, r, "sample", std::nullopt, used_mu)

@@ -1,0 +1,70 @@
+#pragma once
+/// @file
+/// The target set a push must reach (S, G, J, or any set that can answer
+/// the questions below): one interface, so that the region algorithm does
+/// not branch on which set it classifies against. The model is CGAL's traits
+/// parameter: the algorithm asks the target three exact questions.
+
+#include <memory>
+#include <vector>
+
+#include "fixel/rational.h"
+#include "fixel/region.h"
+#include "fixel/scene.h"
+
+namespace fixel {
+
+struct GuaranteedSet;
+struct SeatingSet;
+struct SustainedSet;
+
+/// A target of the pushing region. Wrenches and generators are in frame A
+/// (f_x, f_y, moment about the centre of mass); every answer is exact.
+class RegionTarget {
+ public:
+  virtual ~RegionTarget() = default;
+
+  /// Which push model the target answers for ("step", "sustained").
+  virtual const char* push_model() const = 0;
+
+  /// Every ray of cone(gens) (generators with force parts in
+  /// cone(d_first, d_last)) reaches the target. On success `detail` may get
+  /// the certified magnitudes and the half_line flag.
+  /// `d_first`, `d_last` are null when the force parts span π or more.
+  virtual bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
+                             RegionInterval* detail) = 0;
+
+  /// No ray of cone(gens) reaches the target.
+  virtual bool misses(const std::vector<VectorQ>& gens) = 0;
+
+  /// Point test at one boundary point: the push wrenches form cone(gens) of
+  /// one or two generators (parallel d_first, d_last: a single ray). The
+  /// default is contains_cone; targets with richer answers override it.
+  virtual RegionStatus test_point(const std::vector<VectorQ>& gens, const Vec2& d_first, const Vec2& d_last,
+                                  Magnitudes* out, std::vector<Magnitudes>* set) {
+    RegionInterval detail;
+    const bool in = contains_cone(gens, &d_first, &d_last, &detail);
+    if (out) *out = in ? detail.magnitudes : Magnitudes{};
+    (void)set;
+    return in ? RegionStatus::kIn : RegionStatus::kOut;
+  }
+
+  /// Throws if the target cannot answer for a pusher with friction `mu`.
+  virtual void check_pusher(const Rational& mu) const { (void)mu; }
+
+  /// Counters of the run (set by the region code before use; may be null).
+  RegionStats* stats = nullptr;
+};
+
+/// The one-step seating set S of the paper, with background impulse b0:
+/// a ray τ g reaches S when b0 + τ g ∈ S for some τ > 0.
+std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0);
+
+/// The guaranteed set G (frictionless pusher only), with background b0.
+std::unique_ptr<RegionTarget> guaranteed_target(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0);
+
+/// The sustained-push set J (docs/theory.md §10): a wrench direction reaches
+/// J when it lies in J (any magnitude). Keeps a reference to J's data.
+std::unique_ptr<RegionTarget> sustained_target(const SustainedSet& J);
+
+}  // namespace fixel

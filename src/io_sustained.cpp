@@ -1,0 +1,143 @@
+// Reports of the sustained-push set J: the JSON contract and readable text.
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "fixel/io.h"
+
+namespace fixel {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// |θ*| below which Box2D seated every J wrench tried (docs/physics.md).
+constexpr double kValidatedRotation = 0.2;
+
+json exact3(const std::array<QuadraticIrrational, 3>& v) {
+  return json::array({v[0].text(), v[1].text(), v[2].text()});
+}
+
+json approx3(const std::array<QuadraticIrrational, 3>& v) {
+  return json::array({v[0].approx(), v[1].approx(), v[2].approx()});
+}
+
+json cone_json(const AlgebraicCone& c) {
+  json rays = json::array(), rays_approx = json::array(), hs = json::array();
+  for (const auto& r : c.rays) {
+    rays.push_back(exact3(r));
+    rays_approx.push_back(approx3(r));
+  }
+  for (const auto& a : c.closed) hs.push_back({{"a", exact3(a)}, {"c", "0"}, {"strict", false}});
+  for (const auto& a : c.strict) hs.push_back({{"a", exact3(a)}, {"c", "0"}, {"strict", true}});
+  return {{"rays", rays}, {"rays_approx", rays_approx}, {"halfspaces", hs}};
+}
+
+std::string fixed(double v, int digits = 6) {
+  std::ostringstream s;
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench) {
+  json doc;
+  doc["scene"] = scene.name;
+  doc["seated_pose"] = json::parse(seated_pose_json(J.pose));
+  json sustained;
+  sustained["cone"] = cone_json(J.cone);
+  json jams = json::array();
+  for (const auto& jam : J.jam_cones) {
+    json j = cone_json(jam.cone);
+    j["fixels"] = json::array({jam.fixels[0], jam.fixels[1]});
+    jams.push_back(j);
+  }
+  sustained["jam_cones"] = jams;
+  json pieces = json::array();
+  for (const auto& p : J.pieces) pieces.push_back(cone_json(p));
+  sustained["pieces"] = pieces;
+  sustained["empty"] = J.empty;
+  if (J.empty) sustained["empty_reason"] = J.empty_reason;
+  sustained["strongly_stable"] = J.strongly_stable;
+  json mu = json::array();
+  for (const auto& m : J.mu) mu.push_back(to_string(m));
+  sustained["mu"] = mu;
+  doc["sustained"] = sustained;
+  if (wrench) {
+    json w = json::array();
+    for (int k = 0; k < wrench->size(); ++k) w.push_back(to_string((*wrench)[k]));
+    doc["wrench"] = w;
+    doc["contains"] = J.contains(*wrench);
+    if (!doc["contains"].get<bool>()) doc["why_not"] = J.why_not(*wrench);
+  }
+  return doc.dump(2) + "\n";
+}
+
+std::string seated_pose_json(const SeatedPose& q) {
+  json pose;
+  const bool rational_zero_rotation = q.exact && (*q.exact)[0].b == 0 && (*q.exact)[1].b == 0 && (*q.exact)[2].b == 0 &&
+                                      (*q.exact)[3].b == 0 && (*q.exact)[3].a == 0 && (*q.exact)[2].a == 1;
+  pose["exact"] = rational_zero_rotation ? json::array({to_string((*q.exact)[0].a), to_string((*q.exact)[1].a), "0"})
+                                         : json(nullptr);
+  pose["approx"] = json::array({q.approx[0], q.approx[1], q.approx[2]});
+  if (q.exact)
+    pose["algebraic"] = {{"x", (*q.exact)[0].text()},
+                         {"y", (*q.exact)[1].text()},
+                         {"cos", (*q.exact)[2].text()},
+                         {"sin", (*q.exact)[3].text()}};
+  pose["enclosure"] = json::array();
+  for (const auto& e : q.enclosure) pose["enclosure"].push_back(json::array({e[0], e[1]}));
+  pose["theta_abs"] = std::abs(q.approx[2]);
+  pose["at_scene_pose"] = q.at_scene_pose;
+  json contacts = json::array();
+  for (std::size_t i = 0; i < q.p_BoG_B.size(); ++i)
+    contacts.push_back({{"fixel", i},
+                        {"curve", q.contact_curve[i]},
+                        {"u_approx", q.contact_u[i]},
+                        {"point_B", json::array({q.p_BoG_B[i][0].text(), q.p_BoG_B[i][1].text()})},
+                        {"normal_B", json::array({to_string(q.n_B[i].x), to_string(q.n_B[i].y)})}});
+  pose["contacts"] = contacts;
+  return pose.dump();
+}
+
+std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench) {
+  std::ostringstream out;
+  const SeatedPose& q = J.pose;
+  out << "Sustained push on scene \"" << scene.name << "\": the wrench set J at the seated pose q*\n";
+  out << "seated pose q*: x ~ " << fixed(q.approx[0]) << " m, y ~ " << fixed(q.approx[1]) << " m, theta ~ "
+      << fixed(q.approx[2]) << " rad (|theta*| = " << fixed(std::abs(q.approx[2])) << " rad)"
+      << (q.at_scene_pose ? ", the scene pose (every gap is 0)" : ", exact in a quadratic field") << "\n";
+  if (q.exact && !q.at_scene_pose)
+    out << "  exact: x = " << (*q.exact)[0].text() << ", y = " << (*q.exact)[1].text()
+        << ",\n         cos theta = " << (*q.exact)[2].text() << ", sin theta = " << (*q.exact)[3].text() << "\n";
+  if (std::abs(q.approx[2]) >= kValidatedRotation)
+    out << "warning: |theta*| >= " << kValidatedRotation
+        << " rad: the criterion is evaluated at q* only; Box2D has shown jams on the way to such seats "
+           "(docs/physics.md). Validate with `fixel region --push sustained --validate N`.\n";
+  out << "friction used (upper ends):";
+  for (const auto& m : J.mu) out << " " << to_string(m);
+  out << "\n";
+  if (J.empty) {
+    out << "J is EMPTY: no single sustained push can be trusted to seat this part: " << J.empty_reason << ".\n";
+  } else {
+    out << "J: " << J.pieces.size() << " convex cone piece(s); any push magnitude works (J is a cone).\n";
+    out << "strongly stable at the seat for every w in J: " << (J.strongly_stable ? "yes" : "no") << "\n";
+  }
+  out << "cone {w : -w in int cone(W_n*)}: rays (fx, fy, m) ~";
+  for (const auto& r : J.cone.rays)
+    out << " (" << fixed(r[0].approx(), 4) << ", " << fixed(r[1].approx(), 4) << ", " << fixed(r[2].approx(), 4) << ")";
+  out << "\n";
+  if (wrench) {
+    out << "wrench (" << to_string((*wrench)[0]) << ", " << to_string((*wrench)[1]) << ", " << to_string((*wrench)[2])
+        << ") N, N*m: ";
+    if (J.contains(*wrench))
+      out << "IN J (sustained push: seats and stays)\n";
+    else
+      out << "not in J: " << J.why_not(*wrench) << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace fixel
