@@ -24,9 +24,9 @@ ContactMatrices contact_matrices(const Scene& scene) {
   // The one-step model is not monotone in μ: an interval has no single
   // robust answer there (docs/theory.md §10), only in the sustained set.
   for (int i = 0; i < nc; ++i)
-    if (scene.fixels[i].mu != scene.fixels[i].mu_hi)
+    if (scene.fixels[i].mu_hi)
       throw UnsupportedError("fixels[" + std::to_string(i) + "].mu",
-                             "[" + to_string(scene.fixels[i].mu) + ", " + to_string(scene.fixels[i].mu_hi) + "]",
+                             "[" + to_string(scene.fixels[i].mu) + ", " + to_string(*scene.fixels[i].mu_hi) + "]",
                              "is an interval: only the sustained-push analysis (seat --sustained, region --push "
                              "sustained) accepts friction intervals; the one-step model needs one value");
   ContactMatrices W;

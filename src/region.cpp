@@ -454,7 +454,7 @@ std::unique_ptr<RegionTarget> step_target(const Scene& scene, const SeatingSet& 
 // A push is judged at the upper end of the pusher's friction interval: the
 // set of push directions grows with μ_p, so the region shrinks
 // (docs/theory.md §10).
-Rational default_pusher_mu(const Scene& scene, const RegionTarget&) { return scene.pusher_mu_hi; }
+Rational default_pusher_mu(const Scene& scene, const RegionTarget&) { return scene.pusher_mu_upper(); }
 
 bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
   if (r.status != RegionStatus::kIn) return false;

@@ -112,18 +112,17 @@ Boundary parse_boundary(const json& v) {
 }
 
 // A friction coefficient "mu" or an interval ["lo", "hi"] (0 <= lo <= hi).
-void parse_friction(const json& v, const std::string& path, Rational& lo, Rational& hi) {
+void parse_friction(const json& v, const std::string& path, Rational& lo, std::optional<Rational>& hi) {
   if (v.is_array()) {
     const VectorQ range = vector(v, path, 2, "a friction interval [lo, hi]");
     lo = range[0];
-    hi = range[1];
     require_nonnegative(lo, path + "[0]");
-    if (hi < lo) throw SceneError(path, "[" + to_string(lo) + ", " + to_string(hi) + "]", "has lo > hi");
+    if (range[1] < lo) throw SceneError(path, "[" + to_string(lo) + ", " + to_string(range[1]) + "]", "has lo > hi");
+    if (range[1] != lo) hi = range[1];
     return;
   }
   lo = number(v, path);
   require_nonnegative(lo, path);
-  hi = lo;
 }
 
 int parse_dof(const json& v) {
@@ -229,7 +228,6 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
         "but dof is " + std::to_string(b.dof) + ": the seating analysis needs exactly dof fixels (n_c == dof)");
 
   scene.pusher_mu = Rational(0);
-  scene.pusher_mu_hi = Rational(0);
   if (root.contains("pusher")) {
     const json& pusher = root.at("pusher");
     expect_object(pusher, "pusher", {"mu"});

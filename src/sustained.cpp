@@ -335,7 +335,7 @@ SustainedSet sustained_set(const Scene& scene) {
     const Vec2 t{-n.y, n.x};
     Wn.push_back({Q2(n.x), Q2(n.y), rx * Q2(n.y) - ry * Q2(n.x)});
     Wt.push_back({Q2(t.x), Q2(t.y), rx * Q2(t.y) - ry * Q2(t.x)});
-    J.mu.push_back(scene.fixels[i].mu_hi);
+    J.mu.push_back(scene.fixels[i].mu_upper());
   }
   if (nc != 3) throw SceneError("fixels", std::to_string(nc) + " fixels", "the sustained-push set needs exactly 3");
   const Q2 det = internal::dot(Wn[0], internal::cross(Wn[1], Wn[2]));

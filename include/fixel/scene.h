@@ -36,11 +36,14 @@ struct Body {
 
 /// One fixture point ("fixel").
 struct Fixel {
-  Vec2 p_AoF_A;    ///< Contact point in frame A.
-  Vec2 n_A;        ///< Inward unit normal (into the part), exactly x²+y² == 1.
-  Rational mu;     ///< Coulomb friction μ ≥ 0 (the lower end of an interval).
-  Rational mu_hi;  ///< Upper end of the friction interval (== mu for a single value).
-  Rational gap;    ///< Gap ψ ≥ 0 at the current configuration.
+  Vec2 p_AoF_A;  ///< Contact point in frame A.
+  Vec2 n_A;      ///< Inward unit normal (into the part), exactly x²+y² == 1.
+  Rational mu;   ///< Coulomb friction μ ≥ 0 (the lower end of an interval).
+  Rational gap;  ///< Gap ψ ≥ 0 at the current configuration.
+  /// Upper end of a friction interval ["lo", "hi"]; unset for one value.
+  std::optional<Rational> mu_hi;
+  /// The upper end of the friction interval (mu for a single value).
+  Rational mu_upper() const { return mu_hi.value_or(mu); }
 };
 
 /// A whole scene file.
@@ -50,8 +53,11 @@ struct Scene {
   Body body;
   std::vector<Fixel> fixels;
   Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0; the lower end of an interval).
-  Rational pusher_mu_hi;       ///< Upper end of the pusher friction interval (== pusher_mu for one value).
   VectorQ background_impulse;  ///< b₀, length dof (default 0).
+  /// Upper end of the pusher's friction interval; unset for one value.
+  std::optional<Rational> pusher_mu_hi;
+  /// The upper end of the pusher's friction interval.
+  Rational pusher_mu_upper() const { return pusher_mu_hi.value_or(pusher_mu); }
 
   /// Number of contacts n_c.
   int num_contacts() const { return static_cast<int>(fixels.size()); }

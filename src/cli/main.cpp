@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
     if (*region || *sample) {
       std::optional<fixel::Rational> mu;
       if (!pusher_mu_text.empty()) mu = parse_pusher_mu(pusher_mu_text);
-      const fixel::Rational used_mu = mu.value_or(scene.pusher_mu_hi);
+      const fixel::Rational used_mu = mu.value_or(scene.pusher_mu_upper());
       if (*sample) {
         const auto r = fixel::sample_region(scene, S, points, mu, g);
         std::cout << (json_out ? fixel::region_json(scene, r, "sample", std::nullopt, used_mu)

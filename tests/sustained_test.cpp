@@ -1,0 +1,275 @@
+#include "fixel/sustained.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <sstream>
+
+#include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
+#include "fixel/region.h"
+#include "fixel/region_target.h"
+#include "test_scenes.h"
+
+namespace fixel {
+namespace {
+
+using testing::random_rational;
+using testing::scene_file;
+using testing::v3;
+
+const Rational kHair = parse_rational("1e-30");
+
+// The square [−1, 1]² (centre of mass at the origin) with fixels on the
+// left edge at (−1, y0) and on the bottom edge at (x1, −1) and (x2, −1).
+std::string square_scene(const std::string& mu, const std::string& gaps_json, const std::string& y0 = "0",
+                         const std::string& x1 = "-1/2", const std::string& x2 = "1/2") {
+  std::istringstream g(gaps_json);
+  std::string g0, g1, g2;
+  g >> g0 >> g1 >> g2;
+  return R"({"name": "square", "time_step": "1",
+    "body": {"dof": "3", "mass": "1", "center_of_mass": ["0", "0"],
+             "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","1"], ["-1","1"], ["-1","-1"]]}]},
+    "fixels": [
+      {"point": ["-1", ")" +
+         y0 + R"("], "normal": ["1", "0"], "mu": )" + mu + R"(, "gap": ")" + g0 + R"("},
+      {"point": [")" +
+         x1 + R"(", "-1"], "normal": ["0", "1"], "mu": )" + mu + R"(, "gap": ")" + g1 + R"("},
+      {"point": [")" +
+         x2 + R"(", "-1"], "normal": ["0", "1"], "mu": )" + mu + R"(, "gap": ")" + g2 + R"("}]})";
+}
+
+Scene square(const std::string& mu = "\"1/10\"", const std::string& gaps = "0 0 0") {
+  return parse_scene(square_scene(mu, gaps));
+}
+
+// W_n of a scene, computed here from its definition (gaps 0: q* = 0).
+MatrixQ normal_matrix(const Scene& scene) {
+  MatrixQ Wn(3, 3);
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 r = scene.lever_arm(i), n = scene.fixels[i].n_A;
+    Wn.col(i) = v3(n.x, n.y, r.x * n.y - r.y * n.x);
+  }
+  return Wn;
+}
+
+// A wrench w with −w = W_n λ, λ random and positive: inside the cone of (a).
+VectorQ random_inward_wrench(std::mt19937_64& rng, const MatrixQ& Wn) {
+  return -(Wn * v3(random_rational(rng, 0, 2, 16), random_rational(rng, 0, 2, 16), random_rational(rng, 0, 2, 16)));
+}
+
+// −w ∈ int cone(W_n) by an independent exact solve (rational W_n: gaps 0).
+bool in_open_normal_cone(const Scene& scene, const VectorQ& w) {
+  const MatrixQ Wn = normal_matrix(scene);
+  const VectorQ lambda = internal::exact_lu(Wn).solve(VectorQ(-w));
+  for (int i = 0; i < 3; ++i)
+    if (lambda[i] <= 0) return false;
+  return true;
+}
+
+GTEST_TEST(SeatedPose, IsTheSceneFrameWhenEveryGapIsZero) {
+  const SeatedPose q = seated_pose(square());
+  EXPECT_TRUE(q.at_scene_pose);
+  ASSERT_TRUE(q.exact.has_value());
+  EXPECT_EQ((*q.exact)[2].a, 1);
+  EXPECT_EQ((*q.exact)[3].a, 0);
+}
+
+// Hand-built: the square turned by cos θ = 24/25, sin θ = 7/25 and moved by
+// t = (−1/10, −1/5) puts its points (−1/2, −1), (1/2, −1), (−1, 0) at
+// f = (−3/10, −13/10), (33/50, −51/50), (−53/50, −12/25). The scene puts
+// the same fixels at gaps 3/10, 1/50 and 3/50 from the unmoved square.
+GTEST_TEST(SeatedPose, RecoversAHandBuiltRotationExactly) {
+  const Scene scene = parse_scene(square_scene("\"0\"", "3/50 3/10 1/50", "-12/25", "-3/10", "33/50"));
+  const SeatedPose q = seated_pose(scene);
+  ASSERT_TRUE(q.exact.has_value());
+  const auto& e = *q.exact;
+  for (const auto& v : e) EXPECT_EQ(v.b, 0) << "expected rational values, got " << v.text();
+  EXPECT_EQ(e[0].a, Rational(-1, 10));
+  EXPECT_EQ(e[1].a, Rational(-1, 5));
+  EXPECT_EQ(e[2].a, Rational(24, 25));
+  EXPECT_EQ(e[3].a, Rational(7, 25));
+  // Contact points in the body frame are the chosen ones.
+  EXPECT_EQ(q.p_BoG_B[0][0].a, -1);
+  EXPECT_EQ(q.p_BoG_B[0][1].a, 0);
+  EXPECT_EQ(q.p_BoG_B[1][0].a, Rational(-1, 2));
+  EXPECT_EQ(q.p_BoG_B[2][0].a, Rational(1, 2));
+}
+
+GTEST_TEST(SeatedPose, RejectsAFixelOffThePolygon) {
+  const Scene scene = parse_scene(square_scene("\"0\"", "1/10 0 0", "0", "-1/2", "3/2"));
+  EXPECT_THROW(seated_pose(scene), SceneError);
+}
+
+GTEST_TEST(SeatedPose, NeedsABoundary) { EXPECT_THROW(seated_pose(scene_file("example2")), SceneError); }
+
+GTEST_TEST(SeatedPose, RefusesCurvedContactsWithOpenGapsClearly) {
+  EXPECT_THROW(seated_pose(scene_file("blob")), UnsupportedError);
+}
+
+// The hand-derived wrenches of docs/theory.md §10 on the square with μ = 1/10:
+// jam cone (1, 2) has the facet −x + y/10 ≥ 0 through (1/10, 1, −2/5) and
+// (1/10, 1, 3/5), whose sum v = (1/5, 2, 1/5) = W_n (1/5, 4/5, 6/5) is inside
+// cone(W_n).
+GTEST_TEST(SustainedSet, AWrenchExactlyOnAJamFacetIsHeldAndNotInJ) {
+  const SustainedSet J = sustained_set(square());
+  const VectorQ v = v3(Rational(1, 5), 2, Rational(1, 5));
+  EXPECT_FALSE(J.contains(-v));
+  EXPECT_NE(J.why_not(-v).find("fixels[1] and fixels[2]"), std::string::npos) << J.why_not(-v);
+}
+
+GTEST_TEST(SustainedSet, AWrenchAHairOutsideTheJamFacetIsInJ) {
+  const SustainedSet J = sustained_set(square());
+  const Rational hair = kHair;
+  EXPECT_TRUE(J.contains(-v3(Rational(1, 5) + hair, 2, Rational(1, 5))));
+  EXPECT_FALSE(J.contains(-v3(Rational(1, 5) - hair, 2, Rational(1, 5))));  // a hair inside the jam cone
+}
+
+GTEST_TEST(SustainedSet, TheBoundaryOfTheNormalConeIsNotInJ) {
+  const SustainedSet J = sustained_set(square("\"0\""));
+  // −w = W_n,1 + W_n,2 = (0, 2, 0): λ_0 = 0, on a face of cone(W_n).
+  EXPECT_FALSE(J.contains(v3(0, -2, 0)));
+  EXPECT_NE(J.why_not(v3(0, -2, 0)).find("escape"), std::string::npos);
+  // A hair inside cone(W_n) it is in J when μ = 0 ...
+  const Rational hair = kHair;
+  EXPECT_TRUE(J.contains(v3(-hair, -2, 0)));
+  // ... and held by the two bottom fixels with friction.
+  EXPECT_FALSE(sustained_set(square()).contains(v3(-hair, -2, 0)));
+}
+
+GTEST_TEST(SustainedSet, WithoutFrictionIsTheOpenNormalCone) {
+  const Scene scene = square("\"0\"");
+  const SustainedSet J = sustained_set(scene);
+  EXPECT_FALSE(J.empty);
+  std::mt19937_64 rng(7);
+  int in = 0;
+  for (int k = 0; k < 400; ++k) {
+    const VectorQ w =
+        v3(random_rational(rng, -2, 2, 4), random_rational(rng, -2, 2, 4), random_rational(rng, -2, 2, 4));
+    const bool expected = in_open_normal_cone(scene, w);
+    EXPECT_EQ(J.contains(w), expected) << w.transpose();
+    in += expected;
+  }
+  EXPECT_GT(in, 10);
+}
+
+GTEST_TEST(SustainedSet, ShrinksAsFrictionGrows) {
+  std::mt19937_64 rng(11);
+  int checked = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    const Rational mu1 = random_rational(rng, 0, 1, 40) / 4, mu2 = mu1 + random_rational(rng, 0, 1, 40) / 8;
+    const std::string y0 = to_string(random_rational(rng, -1, 1, 4));
+    const std::string x1 = to_string(random_rational(rng, -1, 0, 4)), x2 = to_string(random_rational(rng, 0, 1, 4));
+    if (x1 == x2 || y0 == "-1" || y0 == "1" || x1 == "-1" || x2 == "1") continue;
+    const Scene s1 = parse_scene(square_scene("\"" + to_string(mu1) + "\"", "0 0 0", y0, x1, x2));
+    const Scene s2 = parse_scene(square_scene("\"" + to_string(mu2) + "\"", "0 0 0", y0, x1, x2));
+    const SustainedSet J1 = sustained_set(s1), J2 = sustained_set(s2);
+    const MatrixQ Wn = normal_matrix(s1);
+    for (int k = 0; k < 200; ++k) {
+      const VectorQ w = random_inward_wrench(rng, Wn);
+      if (J2.contains(w)) {
+        EXPECT_TRUE(J1.contains(w)) << "mu " << mu1 << " < " << mu2 << " w " << w.transpose();
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
+GTEST_TEST(SustainedSet, FrictionIntervalsAreJudgedAtTheirUpperEnds) {
+  const SustainedSet Ji = sustained_set(square(R"(["1/20", "1/10"])"));
+  const SustainedSet Jhi = sustained_set(square("\"1/10\""));
+  EXPECT_EQ(Ji.mu[0], Rational(1, 10));
+  std::mt19937_64 rng(3);
+  const MatrixQ Wn = normal_matrix(square());
+  int in = 0;
+  for (int k = 0; k < 200; ++k) {
+    const VectorQ w =
+        k % 2 ? random_inward_wrench(rng, Wn)
+              : v3(random_rational(rng, -2, 2, 8), random_rational(rng, -3, 1, 8), random_rational(rng, -2, 2, 8));
+    EXPECT_EQ(Ji.contains(w), Jhi.contains(w));
+    in += Jhi.contains(w);
+  }
+  EXPECT_GT(in, 10);
+  EXPECT_THROW(parse_scene(square_scene(R"(["1/5", "1/10"])", "0 0 0")), SceneError);
+  EXPECT_THROW(parse_scene(square_scene(R"(["-1/5", "1/10"])", "0 0 0")), SceneError);
+}
+
+GTEST_TEST(SustainedSet, PiecesAreDisjointAndTheirUnionIsJ) {
+  const SustainedSet J = sustained_set(square());
+  ASSERT_FALSE(J.pieces.empty());
+  std::mt19937_64 rng(5);
+  const MatrixQ Wn = normal_matrix(square());
+  int in = 0;
+  auto in_piece = [](const AlgebraicCone& c, const VectorQ& w) {
+    // Rational pieces here (gaps 0, θ* = 0): evaluate the rows exactly.
+    for (const auto& a : c.closed)
+      if (a[0].a * w[0] + a[1].a * w[1] + a[2].a * w[2] < 0) return false;
+    for (const auto& a : c.strict)
+      if (a[0].a * w[0] + a[1].a * w[1] + a[2].a * w[2] <= 0) return false;
+    return true;
+  };
+  for (int k = 0; k < 400; ++k) {
+    const VectorQ w =
+        k % 2 ? random_inward_wrench(rng, Wn)
+              : v3(random_rational(rng, -2, 2, 8), random_rational(rng, -3, 1, 8), random_rational(rng, -2, 2, 8));
+    int count = 0;
+    for (const auto& p : J.pieces) count += in_piece(p, w);
+    EXPECT_LE(count, 1);
+    EXPECT_EQ(count == 1, J.contains(w)) << w.transpose();
+    in += count;
+  }
+  EXPECT_GT(in, 10);
+}
+
+GTEST_TEST(SustainedSet, EmptyWhenAPairHoldsEveryInwardPushAndSaysWhich) {
+  // With high friction the two bottom fixels hold every push that drives
+  // the part into its seat.
+  const SustainedSet J = sustained_set(square("\"3\""));
+  EXPECT_TRUE(J.empty);
+  EXPECT_FALSE(J.empty_reason.empty());
+}
+
+GTEST_TEST(SustainedRegion, IsSoundByExactSamplingOnThePolygon) {
+  const Scene scene = scene_file("polygon");
+  const SustainedSet J = sustained_set(scene);
+  for (const std::string mu : {"0", "1/10"}) {
+    auto target = sustained_target(J);
+    RegionOptions options;
+    options.resolution = Rational(1, 256);
+    options.pusher_mu = parse_rational(mu);
+    const Region region = compute_region(scene, *target, options);
+    EXPECT_EQ(region.push, "sustained");
+    int in = 0, out = 0;
+    for (const auto& r : region.intervals) {
+      if (r.status == RegionStatus::kPartial || r.u0 == r.u1) continue;
+      for (int k = 1; k < 8; ++k) {
+        const Rational u = r.u0 + (r.u1 - r.u0) * Rational(k, 8);
+        const RegionStatus st = point_status(scene, *target, r.curve, u, *options.pusher_mu);
+        EXPECT_EQ(st, r.status) << "curve " << r.curve << " u " << u;
+        (r.status == RegionStatus::kIn ? in : out)++;
+      }
+    }
+    EXPECT_GT(in, 0);
+    EXPECT_GT(out, 0);
+  }
+}
+
+GTEST_TEST(SustainedRegion, AFrictionalPusherInIsInForTheWholeFan) {
+  // Every IN point for μ_p = 1/10 is IN for μ_p = 0 (the fan only grows).
+  const Scene scene = scene_file("polygon");
+  const SustainedSet J = sustained_set(scene);
+  auto target = sustained_target(J);
+  RegionOptions options;
+  options.resolution = Rational(1, 256);
+  options.pusher_mu = Rational(1, 10);
+  const Region region = compute_region(scene, *target, options);
+  for (const auto& r : region.intervals) {
+    if (r.status != RegionStatus::kIn || r.u0 == r.u1) continue;
+    const Rational u = (r.u0 + r.u1) / 2;
+    EXPECT_EQ(point_status(scene, *target, r.curve, u, Rational(0)), RegionStatus::kIn);
+  }
+}
+
+}  // namespace
+}  // namespace fixel
