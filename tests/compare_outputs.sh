@@ -18,8 +18,9 @@ run() {  # run NAME ARGS... with both binaries, in separate directories
     mask < "$tmp/$which/$name/stdout" > "$tmp/$which/$name/stdout.m"; rm "$tmp/$which/$name/stdout"
   done
   # OFF triangulations come from CGAL's randomised hull: compare vertex sets.
-  for f in $(find "$tmp/old/$name" "$tmp/new/$name" -name '*.off'); do
-    grep -E '^-?[0-9.e+-]+ -?[0-9.e+-]+ -?[0-9.e+-]+$' "$f" | sort > "$f.v"; rm "$f"
+  local off
+  for off in $(find "$tmp/old/$name" "$tmp/new/$name" -name "*.off"); do
+    grep -E "^-?[0-9.e+-]+ -?[0-9.e+-]+ -?[0-9.e+-]+$" "$off" | sort > "$off.v"; rm "$off"
   done
   if ! diff -r "$tmp/old/$name" "$tmp/new/$name" > "$tmp/diff" 2>&1; then
     echo "DIFFERS: $*"; head -20 "$tmp/diff"; fail=1
