@@ -1,9 +1,13 @@
 // Reports of the sustained-push set J: the JSON contract and readable text.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fixel/error.h"
 #include "fixel/io.h"
+#include "fixel/off_io.h"
 
 namespace fixel {
 
@@ -138,6 +142,59 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
       out << "not in J: " << J.why_not(*wrench) << "\n";
   }
   return out.str();
+}
+
+}  // namespace fixel
+
+namespace fixel {
+
+namespace {
+
+// A display-only rational row: the double nearest each coordinate, read
+// back exactly (OFF vertices are doubles anyway).
+Halfspace display_row(const std::array<QuadraticIrrational, 3>& a) {
+  VectorQ v(3);
+  for (int k = 0; k < 3; ++k) v[k] = Rational(a[k].approx());
+  return {v, Rational(0)};
+}
+
+std::string write_cone_off(const std::string& dir, const std::string& name, const AlgebraicCone& cone,
+                           const std::vector<std::string>& comments) {
+  std::vector<Halfspace> rows;
+  for (const auto& a : cone.closed) rows.push_back(display_row(a));
+  for (const auto& a : cone.strict) rows.push_back(display_row(a));
+  Box box;
+  box.lo = VectorQ::Constant(3, Rational(-1));
+  box.hi = VectorQ::Constant(3, Rational(1));
+  for (const auto& h : box.halfspaces()) rows.push_back(h);
+  const std::string path = (std::filesystem::path(dir) / name).string();
+  std::ofstream out(path);
+  if (!out) throw InputError("--off", path, "cannot be written");
+  std::vector<std::string> all = comments;
+  all.push_back("clipped to the box [-1, 1]^3; rows rounded to double for display (exact: seat --sustained --json)");
+  write_polytope_off(out, rows, 3, all);
+  if (!out) throw InputError("--off", path, "could not be written completely");
+  return path;
+}
+
+}  // namespace
+
+std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError("--off", dir, "cannot be created: " + ec.message());
+  const std::string head =
+      "fixel: sustained-push set of scene \"" + scene.name + "\", w-space (fx, fy, m), world frame";
+  std::vector<std::string> written;
+  written.push_back(write_cone_off(dir, "sustained_cone.off", J.cone, {head, "the cone {w : -w in int cone(W_n*)}"}));
+  for (const auto& jam : J.jam_cones)
+    written.push_back(write_cone_off(
+        dir, "sustained_jam_" + std::to_string(jam.fixels[0]) + "_" + std::to_string(jam.fixels[1]) + ".off", jam.cone,
+        {head, "jam cone -(FC_" + std::to_string(jam.fixels[0]) + " + FC_" + std::to_string(jam.fixels[1]) + ")"}));
+  for (std::size_t k = 0; k < J.pieces.size(); ++k)
+    written.push_back(write_cone_off(dir, "sustained_piece_" + std::to_string(k) + ".off", J.pieces[k],
+                                     {head, "convex piece " + std::to_string(k) + " of J (its closure)"}));
+  return written;
 }
 
 }  // namespace fixel

@@ -5,8 +5,13 @@
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
 #include "fixel/seating.h"
+#include "fixel/sustained.h"
 
 namespace fixel {
+
+namespace internal {
+std::vector<VerificationCheck> sustained_checks();  // verify_sustained.cpp
+}
 
 namespace {
 
@@ -137,6 +142,7 @@ std::vector<VerificationCheck> run_verification() {
     }
     return std::string();
   }));
+  for (auto& c : internal::sustained_checks()) out.push_back(std::move(c));
   return out;
 }
 

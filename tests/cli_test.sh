@@ -65,4 +65,30 @@ sed 's/"normal": \["1", "0"\]/"normal": ["3\/5", "3\/5"]/' "$src/data/scenes/exa
 expect 2 'fixels[0].normal: (3/5, 3/5) is not of unit length' -- "$fixel" seat "$tmp/nonunit.json"
 expect 2 '--length: -1 must be > 0' -- "$fixel" dump "$src/data/scenes/example2.json" --off "$tmp/o2" --length -1
 
+# Sustained push (docs/theory.md §10).
+P="$src/data/scenes/polygon.json"
+expect 0 '"strongly_stable": true' -- "$fixel" seat "$P" --sustained --json
+expect 0 '"algebraic"' -- "$fixel" seat "$P" --sustained --json
+expect 0 'IN J (sustained push: seats and stays)' -- "$fixel" seat "$P" --sustained --wrench -1,-1,0
+expect 0 '"contains": false' -- "$fixel" seat "$P" --sustained --wrench 1,0,0 --json
+expect 0 'can escape' -- "$fixel" seat "$P" --sustained --wrench 1,0,0
+expect 0 '"push": "sustained"' -- "$fixel" region "$P" --push sustained --json
+expect 0 'any magnitude (sustained push: seats and stays)' -- "$fixel" region "$P" --push sustained --pusher-mu 0,1/10
+expect 0 'wrote' -- "$fixel" region "$P" --push sustained --svg "$tmp/sus.svg"
+grep -q "push model: sustained" "$tmp/sus.svg" || { echo "FAIL: sustained svg legend"; fail=1; }
+expect 0 'sustained_jam_0_1.off' -- "$fixel" dump "$P" --off "$tmp/sus" --sustained
+expect 2 'body.boundary: is missing' -- "$fixel" seat "$src/data/scenes/example2.json" --sustained
+expect 2 'is not on a polyline edge' -- "$fixel" seat "$src/data/scenes/blob.json" --sustained
+expect 2 '--wrench: "1,2" has 2 components' -- "$fixel" seat "$P" --sustained --wrench 1,2
+expect 2 '--wrench: 1,2,3 needs --sustained' -- "$fixel" seat "$P" --wrench 1,2,3
+expect 2 '--pusher-mu: 1/5,1/10 has lo > hi' -- "$fixel" region "$P" --push sustained --pusher-mu 1/5,1/10
+expect 2 '--guaranteed: cannot be combined with --push sustained' -- "$fixel" region "$P" --push sustained --guaranteed
+sed 's/"mu": "1\/10"/"mu": ["1\/20", "1\/10"]/' "$P" > "$tmp/interval.json"
+expect 0 'friction used (upper ends): 1/10 1/10 1/10' -- "$fixel" seat "$tmp/interval.json" --sustained
+expect 2 'fixels[0].mu: [1/20, 1/10] is an interval' -- "$fixel" seat "$tmp/interval.json"
+sed 's/"mu": "1\/10"/"mu": ["1\/5", "1\/10"]/' "$P" > "$tmp/badinterval.json"
+expect 2 'has lo > hi' -- "$fixel" seat "$tmp/badinterval.json" --sustained
+sed 's/"mu": "1\/10"/"mu": "3"/; s/"gap": "[0-9\/]*"/"gap": "0"/g' "$P" > "$tmp/sticky.json"
+expect 0 'J is EMPTY' -- "$fixel" seat "$tmp/sticky.json" --sustained
+
 exit $fail

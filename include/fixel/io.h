@@ -73,6 +73,11 @@ std::string region_text(const Scene& scene, const Region& region, const std::str
 std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench);
 /// The same as a readable report.
 std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench);
+/// Writes J's cones into `dir` as OFF files clipped to [−1, 1]³ (display:
+/// rows rounded to double): `sustained_cone.off`, `sustained_jam_<i>_<j>.off`
+/// and `sustained_piece_<k>.off`. Returns the written paths. Throws
+/// InputError if the directory cannot be created or written.
+std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir);
 /// The "seated_pose" object of sustained_json, as compact JSON text.
 std::string seated_pose_json(const SeatedPose& q);
 

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   bool json_out = false;
 
   auto* seat = app.add_subcommand("seat", "The seating impulse set S (paper §3): apex, rays and facets");
-  seat->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
+  seat->add_option("scene", scene_path, "Scene file (JSON, docs/formats.md)")->required();
   seat->add_flag("--json", json_out, "Print one JSON document on stdout");
   seat->add_option("--impulse", impulse_text, "Test an impulse: px,py[,ptheta] (exact numbers)");
   bool guaranteed = false, stable = false;
@@ -53,26 +53,27 @@ int main(int argc, char** argv) {
   seat->add_option("--wrench", wrench_text, "With --sustained: test a world-frame wrench wx,wy,wm (exact numbers)");
 
   auto* dump = app.add_subcommand("dump", "Write S as an OFF file, clipped to a stated box");
-  dump->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
+  dump->add_option("scene", scene_path, "Scene file (JSON, docs/formats.md)")->required();
   dump->add_option("--off", off_dir, "Output directory")->required();
   dump->add_option("--length", length_text, "Box holds apex + LENGTH * r for every ray r (default 1)");
   dump->add_flag("--guaranteed", guaranteed, "Also write the pieces of the guaranteed set G");
+  dump->add_flag("--sustained", sustained, "Also write the cones of the sustained-push set J (clipped, display)");
 
   int steps = 1;
   auto* simulate = app.add_subcommand("simulate", "Time-step the part under an impulse with the exact LCP solver");
-  simulate->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
+  simulate->add_option("scene", scene_path, "Scene file (JSON, docs/formats.md)")->required();
   simulate->add_option("--impulse", impulse_text, "External impulse of step 1: px,py[,ptheta]")->required();
   simulate->add_option("--steps", steps, "Number of steps (default 1); later steps get no impulse");
   simulate->add_flag("--json", json_out, "Print one JSON document on stdout");
 
   auto* solutions = app.add_subcommand("solutions", "Every outcome of one step (all LCP solutions, by contact mode)");
-  solutions->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
+  solutions->add_option("scene", scene_path, "Scene file (JSON, docs/formats.md)")->required();
   solutions->add_option("--impulse", impulse_text, "External impulse: px,py[,ptheta]")->required();
   solutions->add_flag("--json", json_out, "Print one JSON document on stdout");
 
   std::string resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path, push_text = "step";
   auto* region = app.add_subcommand("region", "The pushing region by exact recursive subdivision (paper §5)");
-  region->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
+  region->add_option("scene", scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
   region->add_option("--resolution", resolution_text, "Stop splitting at this curve-parameter width (default 1/1024)");
   region->add_option("--cone", cone_text, "Segment cone: tight (default) or paper")
       ->check(CLI::IsMember({"tight", "paper"}));
@@ -88,7 +89,7 @@ int main(int argc, char** argv) {
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
-  sample->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
+  sample->add_option("scene", scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
   sample->add_option("--points", points, "Points per curve (default 64)");
   sample->add_option("--pusher-mu", pusher_mu_text,
                      "Pusher friction M, or an interval lo,hi (judged at hi); overrides the scene's pusher.mu");
@@ -135,6 +136,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (!wrench_text.empty()) throw fixel::InputError("--wrench", wrench_text, "needs --sustained");
+    if (*dump && sustained) {
+      const fixel::SustainedSet J = fixel::sustained_set(scene);
+      for (const auto& path : fixel::dump_sustained_off(scene, J, off_dir)) std::cout << "wrote " << path << "\n";
+    }
     if (*region && push_text == "sustained") {
       if (guaranteed) throw fixel::InputError("--guaranteed", "", "cannot be combined with --push sustained");
       fixel::RegionOptions options;

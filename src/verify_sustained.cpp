@@ -1,0 +1,115 @@
+// The sustained-push checks of `fixel verify` (docs/theory.md §10).
+#include <functional>
+
+#include "fixel/internal/quadratic_field.h"
+#include "fixel/sustained.h"
+#include "fixel/verify.h"
+
+namespace fixel::internal {
+
+namespace {
+
+// The square [−1, 1]² with fixels at (−1, y0) and (x1, −1), (x2, −1).
+const char* kSquare = R"({"name": "square", "time_step": "1",
+  "body": {"dof": "3", "mass": "1", "center_of_mass": ["0", "0"],
+           "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","1"], ["-1","1"], ["-1","-1"]]}]},
+  "fixels": [{"point": ["-1", "Y0"], "normal": ["1", "0"], "mu": "MU", "gap": "G0"},
+             {"point": ["X1", "-1"], "normal": ["0", "1"], "mu": "MU", "gap": "G1"},
+             {"point": ["X2", "-1"], "normal": ["0", "1"], "mu": "MU", "gap": "G2"}]})";
+
+// The bundled polygon part (data/scenes/polygon.json), kept here so that an
+// installed `fixel verify` needs no data files.
+const char* kPolygon = R"({"name": "polygon", "time_step": "1",
+  "body": {"dof": 3, "boundary": [{"type": "polyline",
+    "points": [["-1", "-1"], ["3/2", "-1"], ["3/2", "1/2"], ["1/4", "3/2"], ["-1", "1/2"], ["-1", "-1"]]}]},
+  "fixels": [{"point": ["-1", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10"},
+             {"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20"},
+             {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20"}]})";
+
+std::string square(const std::string& mu, const std::string& y0, const std::string& x1, const std::string& x2,
+                   const std::string& g0, const std::string& g1, const std::string& g2) {
+  std::string s = kSquare;
+  auto put = [&](const std::string& key, const std::string& value) {
+    for (auto at = s.find(key); at != std::string::npos; at = s.find(key)) s.replace(at, key.size(), value);
+  };
+  put("MU", mu), put("Y0", y0), put("X1", x1), put("X2", x2), put("G0", g0), put("G1", g1), put("G2", g2);
+  return s;
+}
+
+VerificationCheck run(const std::string& name, const std::string& what, const std::function<std::string()>& check) {
+  VerificationCheck result{name, false, what};
+  try {
+    const std::string diff = check();
+    result.passed = diff.empty();
+    if (!diff.empty()) result.detail = diff;
+  } catch (const std::exception& e) {
+    result.detail = std::string("threw: ") + e.what();
+  }
+  return result;
+}
+
+// A wrench strictly inside a piece: the sum of its closure's rays.
+VectorQ inside(const AlgebraicCone& piece) {
+  VectorQ w = VectorQ::Zero(3);
+  for (const auto& r : piece.rays)
+    for (int k = 0; k < 3; ++k) w[k] += r[k].a;  // rational pieces only (θ* = 0 scenes)
+  return w;
+}
+
+}  // namespace
+
+std::vector<VerificationCheck> sustained_checks() {
+  std::vector<VerificationCheck> out;
+  out.push_back(
+      run("sustained.seat", "a square turned by cos 24/25, sin 7/25 and moved by (-1/10, -1/5): q* exact", [] {
+        const Scene scene = parse_scene(square("0", "-12/25", "-3/10", "33/50", "3/50", "3/10", "1/50"), "square");
+        const SeatedPose q = seated_pose(scene);
+        const std::array<Rational, 4> want = {Rational(-1, 10), Rational(-1, 5), Rational(24, 25), Rational(7, 25)};
+        for (int k = 0; k < 4; ++k)
+          if ((*q.exact)[k].b != 0 || (*q.exact)[k].a != want[k])
+            return "component " + std::to_string(k) + " is " + (*q.exact)[k].text();
+        return std::string();
+      }));
+  out.push_back(run("sustained.residual", "polygon: R (g_i - c) + c + t = f_i exactly at q* (in Q(sqrt d))", [] {
+    const Scene scene = parse_scene(kPolygon, "polygon");
+    const SeatedPose q = seated_pose(scene);
+    const auto& e = *q.exact;
+    const Q2 tx = from_public(e[0]), ty = from_public(e[1]), c = from_public(e[2]), s = from_public(e[3]);
+    if (sign(c * c + s * s - Q2(1)) != 0) return std::string("cos^2 + sin^2 != 1");
+    const Vec2& cm = scene.body.p_AoCm_A;
+    for (int i = 0; i < 3; ++i) {
+      const Fixel& f = scene.fixels[i];
+      const Q2 gx = from_public(q.p_BoG_B[i][0]) - Q2(cm.x), gy = from_public(q.p_BoG_B[i][1]) - Q2(cm.y);
+      const Q2 wx = c * gx - s * gy + Q2(cm.x) + tx, wy = s * gx + c * gy + Q2(cm.y) + ty;
+      if (sign(wx - Q2(f.p_AoF_A.x - f.gap * f.n_A.x)) != 0 || sign(wy - Q2(f.p_AoF_A.y - f.gap * f.n_A.y)) != 0)
+        return "fixel " + std::to_string(i) + " is not at its seat";
+    }
+    return std::string();
+  }));
+  out.push_back(
+      run("sustained.frictionless", "square, mu = 0: J is the open cone {-w in int cone(W_n)}, one piece", [] {
+        const SustainedSet J = sustained_set(parse_scene(square("0", "0", "-1/2", "1/2", "0", "0", "0"), "square"));
+        if (J.pieces.size() != 1) return "J has " + std::to_string(J.pieces.size()) + " pieces";
+        // −W_n = rows (−1, 0, 0), (0, −1, 1/2), (0, −1, −1/2): their sum is inside, each column is on the boundary.
+        if (!J.contains(VectorQ(Eigen::Matrix<Rational, 3, 1>(-1, -2, 0)))) return std::string("(-1, -2, 0) not in J");
+        if (J.contains(VectorQ(Eigen::Matrix<Rational, 3, 1>(0, -2, 0)))) return std::string("(0, -2, 0) is in J");
+        return std::string();
+      }));
+  out.push_back(run("sustained.monotone", "square: every piece of J(mu = 1/5) lies in J(mu = 1/10)", [] {
+    const SustainedSet J1 = sustained_set(parse_scene(square("1/10", "0", "-1/2", "1/2", "0", "0", "0"), "square"));
+    const SustainedSet J2 = sustained_set(parse_scene(square("1/5", "0", "-1/2", "1/2", "0", "0", "0"), "square"));
+    if (J2.empty) return std::string("J(1/5) is empty");
+    for (const auto& p : J2.pieces)
+      if (!J1.contains(inside(p))) return std::string("a wrench of J(1/5) is not in J(1/10)");
+    return std::string();
+  }));
+  out.push_back(run("sustained.polygon", "bundled polygon: J is non-empty and strongly stable", [] {
+    const SustainedSet J = sustained_set(parse_scene(kPolygon, "polygon"));
+    if (J.empty) return "J is empty: " + J.empty_reason;
+    if (!J.strongly_stable) return std::string("not strongly stable");
+    return std::string();
+  }));
+  return out;
+}
+
+}  // namespace fixel::internal
