@@ -26,8 +26,22 @@ json approx3(const std::array<QuadraticIrrational, 3>& v) {
   return json::array({v[0].approx(), v[1].approx(), v[2].approx()});
 }
 
+json enclosure3(const std::array<std::array<double, 2>, 3>& e) {
+  return json::array(
+      {json::array({e[0][0], e[0][1]}), json::array({e[1][0], e[1][1]}), json::array({e[2][0], e[2][1]})});
+}
+
 json cone_json(const AlgebraicCone& c) {
   json rays = json::array(), rays_approx = json::array(), hs = json::array();
+  if (!c.exact) {  // certified enclosures [lo, hi] instead of exact strings
+    for (const auto& r : c.rays_enclosure) {
+      rays.push_back(enclosure3(r));
+      rays_approx.push_back(json::array({(r[0][0] + r[0][1]) / 2, (r[1][0] + r[1][1]) / 2, (r[2][0] + r[2][1]) / 2}));
+    }
+    for (const auto& a : c.closed_enclosure) hs.push_back({{"a", enclosure3(a)}, {"c", "0"}, {"strict", false}});
+    for (const auto& a : c.strict_enclosure) hs.push_back({{"a", enclosure3(a)}, {"c", "0"}, {"strict", true}});
+    return {{"rays", rays}, {"rays_approx", rays_approx}, {"halfspaces", hs}};
+  }
   for (const auto& r : c.rays) {
     rays.push_back(exact3(r));
     rays_approx.push_back(approx3(r));
@@ -51,6 +65,7 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
   doc["scene"] = scene.name;
   doc["seated_pose"] = json::parse(seated_pose_json(J.pose));
   json sustained;
+  sustained["exact"] = J.cone.exact;
   sustained["cone"] = cone_json(J.cone);
   json jams = json::array();
   for (const auto& jam : J.jam_cones) {
@@ -61,8 +76,8 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
   sustained["jam_cones"] = jams;
   json pieces = json::array();
   for (const auto& p : J.pieces) pieces.push_back(cone_json(p));
-  sustained["pieces"] = pieces;
-  sustained["empty"] = J.empty;
+  sustained["pieces"] = J.pieces_decided ? pieces : json(nullptr);
+  sustained["empty"] = J.pieces_decided ? json(J.empty) : json(nullptr);
   if (J.empty) sustained["empty_reason"] = J.empty_reason;
   sustained["strongly_stable"] = J.strongly_stable;
   json mu = json::array();
@@ -73,8 +88,14 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
     json w = json::array();
     for (int k = 0; k < wrench->size(); ++k) w.push_back(to_string((*wrench)[k]));
     doc["wrench"] = w;
-    doc["contains"] = J.contains(*wrench);
-    if (!doc["contains"].get<bool>()) doc["why_not"] = J.why_not(*wrench);
+    try {
+      const std::string why = J.why_not(*wrench);
+      doc["contains"] = why.empty();
+      if (!why.empty()) doc["why_not"] = why;
+    } catch (const UnsupportedError& e) {
+      doc["contains"] = nullptr;
+      doc["why_not"] = e.what();
+    }
   }
   return doc.dump(2) + "\n";
 }
@@ -96,13 +117,23 @@ std::string seated_pose_json(const SeatedPose& q) {
   pose["theta_abs"] = std::abs(q.approx[2]);
   pose["at_scene_pose"] = q.at_scene_pose;
   json contacts = json::array();
-  for (std::size_t i = 0; i < q.p_BoG_B.size(); ++i)
-    contacts.push_back({{"fixel", i},
-                        {"curve", q.contact_curve[i]},
-                        {"u_approx", q.contact_u[i]},
-                        {"point_B", json::array({q.p_BoG_B[i][0].text(), q.p_BoG_B[i][1].text()})},
-                        {"normal_B", json::array({to_string(q.n_B[i].x), to_string(q.n_B[i].y)})}});
+  for (std::size_t i = 0; i < q.contact_curve.size(); ++i) {
+    json c = {{"fixel", i}, {"curve", q.contact_curve[i]}, {"u_approx", q.contact_u[i]}};
+    if (i < q.p_BoG_B.size()) {
+      c["point_B"] = json::array({q.p_BoG_B[i][0].text(), q.p_BoG_B[i][1].text()});
+      c["normal_B"] = json::array({to_string(q.n_B[i].x), to_string(q.n_B[i].y)});
+    } else {
+      const auto& g = q.p_BoG_B_enclosure[i];
+      const auto& t = q.tangent_B_enclosure[i];
+      c["point_B_enclosure"] = json::array({json::array({g[0][0], g[0][1]}), json::array({g[1][0], g[1][1]})});
+      c["tangent_B_enclosure"] = json::array({json::array({t[0][0], t[0][1]}), json::array({t[1][0], t[1][1]})});
+    }
+    contacts.push_back(c);
+  }
   pose["contacts"] = contacts;
+  if (!q.exact)
+    pose["cos_sin_enclosure"] = json::array({json::array({q.cos_sin_enclosure[0][0], q.cos_sin_enclosure[0][1]}),
+                                             json::array({q.cos_sin_enclosure[1][0], q.cos_sin_enclosure[1][1]})});
   return pose.dump();
 }
 
@@ -112,7 +143,12 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
   out << "Sustained push on scene \"" << scene.name << "\": the wrench set J at the seated pose q*\n";
   out << "seated pose q*: x ~ " << fixed(q.approx[0]) << " m, y ~ " << fixed(q.approx[1]) << " m, theta ~ "
       << fixed(q.approx[2]) << " rad (|theta*| = " << fixed(std::abs(q.approx[2])) << " rad)"
-      << (q.at_scene_pose ? ", the scene pose (every gap is 0)" : ", exact in a quadratic field") << "\n";
+      << (q.at_scene_pose ? ", the scene pose (every gap is 0)"
+                          : (q.exact ? ", exact in a quadratic field" : ", enclosed (curved contacts)"))
+      << "\n";
+  if (!q.exact)
+    out << "  certified enclosure (contacts on curved pieces): theta in [" << q.enclosure[2][0] << ", "
+        << q.enclosure[2][1] << "] rad; tests it cannot decide are reported as undecided/partial\n";
   if (q.exact && !q.at_scene_pose)
     out << "  exact: x = " << (*q.exact)[0].text() << ", y = " << (*q.exact)[1].text()
         << ",\n         cos theta = " << (*q.exact)[2].text() << ", sin theta = " << (*q.exact)[3].text() << "\n";
@@ -123,7 +159,10 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
   out << "friction used (upper ends):";
   for (const auto& m : J.mu) out << " " << to_string(m);
   out << "\n";
-  if (J.empty) {
+  if (!J.pieces_decided) {
+    out << "J: its pieces could not be decided at the enclosure's width (membership tests still are, or say "
+           "undecided)\n";
+  } else if (J.empty) {
     out << "J is EMPTY: no single sustained push can be trusted to seat this part: " << J.empty_reason << ".\n";
   } else {
     out << "J: " << J.pieces.size() << " convex cone piece(s); any push magnitude works (J is a cone).\n";
@@ -132,14 +171,19 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
   out << "cone {w : -w in int cone(W_n*)}: rays (fx, fy, m) ~";
   for (const auto& r : J.cone.rays)
     out << " (" << fixed(r[0].approx(), 4) << ", " << fixed(r[1].approx(), 4) << ", " << fixed(r[2].approx(), 4) << ")";
+  for (const auto& r : J.cone.rays_enclosure)
+    out << " (" << fixed((r[0][0] + r[0][1]) / 2, 4) << ", " << fixed((r[1][0] + r[1][1]) / 2, 4) << ", "
+        << fixed((r[2][0] + r[2][1]) / 2, 4) << ")";
   out << "\n";
   if (wrench) {
     out << "wrench (" << to_string((*wrench)[0]) << ", " << to_string((*wrench)[1]) << ", " << to_string((*wrench)[2])
         << ") N, N*m: ";
-    if (J.contains(*wrench))
-      out << "IN J (sustained push: seats and stays)\n";
-    else
-      out << "not in J: " << J.why_not(*wrench) << "\n";
+    try {
+      const std::string why = J.why_not(*wrench);
+      out << (why.empty() ? "IN J (sustained push: seats and stays)" : "not in J: " + why) << "\n";
+    } catch (const UnsupportedError& e) {
+      out << "undecided: " << e.what() << "\n";
+    }
   }
   return out.str();
 }

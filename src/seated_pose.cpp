@@ -10,6 +10,10 @@
 
 namespace fixel {
 
+namespace internal {
+SeatedPose seated_pose_curved(const Scene& scene);  // seated_pose_curved.cpp
+}
+
 namespace {
 
 using internal::Q2;
@@ -120,6 +124,15 @@ SeatedPose seated_pose(const Scene& scene) {
     return q;
   }
 
+  // Any contact off a polyline edge: the certified enclosure instead.
+  for (int i = 0; i < nc; ++i)
+    if (!edge_through(*scene.body.boundary, scene.fixels[i].p_AoF_A, scene.fixels[i].n_A)) {
+      bool curved = false;
+      for (const auto& piece : scene.body.boundary->pieces) curved = curved || piece.degree() > 1;
+      if (curved) return internal::seated_pose_curved(scene);
+      break;
+    }
+
   const Vec2& c = scene.body.p_AoCm_A;
   std::vector<Edge> edges;
   std::vector<Vec2> f_A;  // fixel points f_i = p_i − ψ_i n_i
@@ -193,8 +206,8 @@ SeatedPose seated_pose(const Scene& scene) {
       if (sign(along) <= 0 || sign(along - Q2(len2)) >= 0) {
         valid = false;
         why_not = fixel_path(i) +
-                  " would touch the line of its edge beyond the edge's end (at a corner or on a neighbouring "
-                  "piece; a curved neighbour needs the certified enclosure, which is not implemented)";
+                  " would touch the line of its edge beyond the edge's end (at a corner or on a "
+                  "neighbouring edge)";
         break;
       }
       q.p_BoG_B.push_back({internal::to_public(gx), internal::to_public(gy)});
@@ -220,7 +233,12 @@ SeatedPose seated_pose(const Scene& scene) {
                            std::to_string(theta) + " rad): the seat is not unique");
     best = q;
   }
-  if (!best) throw SceneError("fixels", "", "have no seated pose: " + why_not);
+  if (!best) {
+    // A contact that leaves its edge may land on a curved neighbour.
+    for (const auto& piece : scene.body.boundary->pieces)
+      if (piece.degree() > 1) return internal::seated_pose_curved(scene);
+    throw SceneError("fixels", "", "have no seated pose: " + why_not);
+  }
   return *best;
 }
 

@@ -260,9 +260,15 @@ void write_sustained_region_svg(const std::string& path, const Scene& scene, con
     for (const auto& a : v) out.push_back({a[0].approx(), a[1].approx(), a[2].approx()});
     return out;
   };
-  const auto K = rows(J.cone.strict);
+  auto mids = [](const std::vector<std::array<std::array<double, 2>, 3>>& v) {
+    std::vector<std::array<double, 3>> out;
+    for (const auto& a : v) out.push_back({(a[0][0] + a[0][1]) / 2, (a[1][0] + a[1][1]) / 2, (a[2][0] + a[2][1]) / 2});
+    return out;
+  };
+  const auto K = J.cone.exact ? rows(J.cone.strict) : mids(J.cone.strict_enclosure);
   std::vector<std::vector<std::array<double, 3>>> jams;
-  for (const auto& jam : J.jam_cones) jams.push_back(rows(jam.cone.closed));
+  for (const auto& jam : J.jam_cones)
+    jams.push_back(jam.cone.exact ? rows(jam.cone.closed) : mids(jam.cone.closed_enclosure));
   Picture pic;
   pic.in_label = "in: sustained push seats and stays (J)";
   pic.shade_caption =

@@ -103,8 +103,36 @@ GTEST_TEST(SeatedPose, RejectsAFixelOffThePolygon) {
 
 GTEST_TEST(SeatedPose, NeedsABoundary) { EXPECT_THROW(seated_pose(scene_file("example2")), SceneError); }
 
-GTEST_TEST(SeatedPose, RefusesCurvedContactsWithOpenGapsClearly) {
-  EXPECT_THROW(seated_pose(scene_file("blob")), UnsupportedError);
+// The same hand-built seat with the bottom edge given as a cubic B-spline
+// whose control points are collinear: the curved path (interval Newton,
+// Krawczyk) must enclose the exact answer of the polyline path.
+GTEST_TEST(SeatedPose, CertifiedEnclosureOnACurvedEdgeHoldsTheExactSeat) {
+  const Scene scene = parse_scene(R"({"name": "square", "time_step": "1",
+    "body": {"dof": "3", "mass": "1", "center_of_mass": ["0", "0"],
+             "boundary": [
+               {"type": "bspline", "degree": "3", "knots": ["0","0","0","0","1","1","1","1"],
+                "control_points": [["-1","-1"], ["-1/3","-1"], ["1/3","-1"], ["1","-1"]]},
+               {"type": "polyline", "points": [["1","-1"], ["1","1"], ["-1","1"], ["-1","-1"]]}]},
+    "fixels": [
+      {"point": ["-1", "-12/25"], "normal": ["1", "0"], "mu": "0", "gap": "3/50"},
+      {"point": ["-3/10", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "3/10"},
+      {"point": ["33/50", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "1/50"}]})");
+  const SeatedPose q = seated_pose(scene);
+  EXPECT_FALSE(q.exact.has_value());
+  auto holds = [](const std::array<double, 2>& e, const Rational& x) {
+    return Rational(e[0]) <= x && x <= Rational(e[1]) && e[1] - e[0] < 1e-6;
+  };
+  EXPECT_TRUE(holds(q.enclosure[0], Rational(-1, 10)));
+  EXPECT_TRUE(holds(q.enclosure[1], Rational(-1, 5)));
+  EXPECT_TRUE(holds(q.cos_sin_enclosure[0], Rational(24, 25)));
+  EXPECT_TRUE(holds(q.cos_sin_enclosure[1], Rational(7, 25)));
+  // J is computed on the enclosure and agrees with the exact one where it decides.
+  const SustainedSet J = sustained_set(scene);
+  EXPECT_FALSE(J.cone.exact);
+}
+
+GTEST_TEST(SeatedPose, SaysSoWhenNoSeatIsNearTheScenePose) {
+  EXPECT_THROW(seated_pose(scene_file("blob")), SceneError);
 }
 
 // The hand-derived wrenches of docs/theory.md §10 on the square with μ = 1/10:

@@ -40,7 +40,8 @@ struct SeatedPose {
   std::vector<int> contact_curve;
   std::vector<double> contact_u;
   /// For each fixel: its contact point g_i on the boundary at q*, in the
-  /// part's body frame B (frame A at the scene pose), exact in Q(√d).
+  /// part's body frame B (frame A at the scene pose), exact in Q(√d) (empty
+  /// when q* is only enclosed).
   std::vector<std::array<QuadraticIrrational, 2>> p_BoG_B;
   /// For each fixel: the boundary's inward normal at g_i, frame B, of any
   /// positive length (rational: an edge normal, or the fixel's own normal
@@ -48,15 +49,23 @@ struct SeatedPose {
   std::vector<Vec2> n_B;
   /// True when every gap is zero (q* = 0 exactly).
   bool at_scene_pose = false;
+  /// When q* is not exact (a contact on a curved piece with open gaps): a
+  /// certified enclosure, by the Krawczyk test in outward-rounded interval
+  /// arithmetic, of cos θ*, sin θ* and, per fixel, of its contact point g_i
+  /// and the boundary's tangent there (frame B), as [lo, hi] per coordinate.
+  /// A decision these intervals cannot make is reported as undecided.
+  std::array<std::array<double, 2>, 2> cos_sin_enclosure{};
+  std::vector<std::array<std::array<double, 2>, 2>> p_BoG_B_enclosure;
+  std::vector<std::array<std::array<double, 2>, 2>> tangent_B_enclosure;
 };
 
-/// Solves for q*, exactly. Every fixel must lie on a polyline edge of the
-/// boundary, unless every gap is zero (then q* = 0 and each contact keeps the
-/// fixel's own point and normal). Throws SceneError when the scene has no
-/// boundary or dof != 3, when a fixel is not on the boundary, when no seated
-/// pose exists (a fixel cannot touch its edge) or when it is not unique, and
-/// UnsupportedError for a fixel on a curved piece with open gaps (the
-/// certified enclosure for curved contacts is not implemented).
+/// Solves for q*: exactly when every fixel lies on a polyline edge, or every
+/// gap is zero (then q* = 0 and each contact keeps the fixel's own point and
+/// normal); otherwise (contacts on B-spline pieces) as a certified enclosure
+/// (interval Newton / Krawczyk, locally unique). Throws SceneError when the
+/// scene has no boundary or dof != 3, when a fixel is not on the boundary,
+/// when no seated pose exists (a fixel cannot touch its edge) or when it is
+/// not unique, and UnsupportedError when the enclosure cannot be certified.
 SeatedPose seated_pose(const Scene& scene);
 
 }  // namespace fixel

@@ -30,6 +30,10 @@ struct AlgebraicCone {
   std::vector<std::array<QuadraticIrrational, 3>> rays;
   std::vector<std::array<QuadraticIrrational, 3>> closed;
   std::vector<std::array<QuadraticIrrational, 3>> strict;
+  /// False when q* is only enclosed (curved contacts): the vectors above are
+  /// then empty and these certified enclosures ([lo, hi] per entry) hold.
+  bool exact = true;
+  std::vector<std::array<std::array<double, 2>, 3>> rays_enclosure, closed_enclosure, strict_enclosure;
 };
 
 /// The wrenches a pair of fixels can hold: −(FC_i + FC_j) in w-space.
@@ -47,6 +51,9 @@ struct SustainedSet {
   std::vector<JamCone> jam_cones;
   /// J as disjoint convex cones (their union is J exactly).
   std::vector<AlgebraicCone> pieces;
+  /// False when the enclosure of q* could not decide which pieces are
+  /// empty (then `pieces` is empty and `empty` is false: unknown).
+  bool pieces_decided = true;
   /// J has no wrench: no single sustained push can be trusted.
   bool empty = true;
   /// When empty: which fixels can hold the part, in words.
@@ -62,7 +69,8 @@ struct SustainedSet {
   /// Body-frame data for the exact tests (internal).
   std::shared_ptr<const internal::SustainedData> data;
 
-  /// Exact membership of a world-frame wrench (length 3).
+  /// Exact membership of a world-frame wrench (length 3). With an enclosed
+  /// q*, throws UnsupportedError when the enclosure cannot decide.
   bool contains(const VectorQ& w_W) const;
   /// Empty when w_W is in J; otherwise which condition fails, in words
   /// ("can escape: ..." or "fixels[0] and fixels[1] can hold the part ...").
