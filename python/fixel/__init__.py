@@ -82,6 +82,12 @@ def _jsonable(x, path):
     return text(x, path)
 
 
+def _expect(x, cls, name):
+    if not isinstance(x, cls):
+        raise TypeError(f"{name}: expected a fixel.{cls.__name__}, not {type(x).__name__}")
+    return x
+
+
 def _scene(scene):
     if isinstance(scene, Scene):
         return scene
@@ -160,7 +166,7 @@ class GuaranteedSet:
 def guaranteed_set(scene, seating=None):
     """G for a scene; pass its SeatingSet to reuse it."""
     scene = _scene(scene)
-    S = seating if seating is not None else seating_set(scene)
+    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     return GuaranteedSet(S, _fixel.guaranteed_set(scene._impl, S._impl))
 
 
@@ -199,13 +205,16 @@ def to_off(scene, seating, directory, length=1, guaranteed=None):
     """Writes S (and G's pieces, the outline, the segment cones) as OFF/OBJ
     files into ``directory``, like ``fixel dump --off``; returns the paths."""
     scene = _scene(scene)
+    _expect(seating, SeatingSet, "seating")
+    if guaranteed is not None:
+        _expect(guaranteed, GuaranteedSet, "guaranteed")
     g = guaranteed._impl if guaranteed is not None else None
     return _fixel.dump_off(scene._impl, seating._impl, str(directory), text(length, "length"), g)
 
 
 def to_svg(path, region_result):
     """Draws a region (from fixel.region) to an SVG file like ``fixel region --svg``."""
-    r = region_result
+    r = _expect(region_result, Region, "region")
     _fixel.write_region_svg(
         str(path), r.scene._impl, r.seating._impl, r._impl, r.cone, text(r.resolution, "resolution"),
         text(r.pusher_mu, "pusher_mu"),

@@ -190,7 +190,7 @@ def region(
     ``guaranteed``: True, or a GuaranteedSet, classifies against G instead of S.
     ``progress``: None, True (tqdm bar after ~1 s) or callable(stage, elapsed).
     """
-    from . import _scene, seating_set
+    from . import SeatingSet, _expect, _scene, seating_set
 
     scene = _scene(scene)
     if push == "sustained":
@@ -203,7 +203,7 @@ def region(
         raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
     res = text(resolution, "resolution")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
-    S = seating if seating is not None else seating_set(scene)
+    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = _run(lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g), progress, "fixel.region")
     return _region_of(scene, S, impl, cone, frac(res), None if mu is None else frac(mu))
@@ -211,12 +211,12 @@ def region(
 
 def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None):
     """The point-sampling baseline (``fixel sample``): ``points`` per curve."""
-    from . import _scene, seating_set
+    from . import SeatingSet, _expect, _scene, seating_set
 
     scene = _scene(scene)
     if not isinstance(points, int) or isinstance(points, bool):
         raise TypeError(f"points: {points!r} is not an int")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
-    S = seating if seating is not None else seating_set(scene)
+    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     impl = _fixel.sample_region(scene._impl, S._impl, points, mu, _guaranteed_impl(guaranteed, scene, S))
     return _region_of(scene, S, impl, "sample", None, None if mu is None else frac(mu))

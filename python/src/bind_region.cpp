@@ -68,45 +68,44 @@ void bind_region(py::module_& m) {
                              })
       .def_property_readonly("stats", [](const Region& r) { return stats_dict(r.stats); });
 
-  m.def("compute_region", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution,
-                             const std::string& cone, const std::optional<std::string>& pusher_mu,
-                             const py::object& G) {
-    RegionOptions options;
-    options.resolution = parse_rational(resolution, "resolution");
-    if (cone != "tight" && cone != "paper")
-      throw InputError("cone", cone, "is not a cone method (tight or paper)");
-    options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
-    options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
-    options.guaranteed = guaranteed_of(G, S);
-    py::gil_scoped_release release;
-    return std::make_shared<Region>(compute_region(*scene, *S, options));
-  });
+  m.def("compute_region",
+        [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution, const std::string& cone,
+           const std::optional<std::string>& pusher_mu, const py::object& G) {
+          RegionOptions options;
+          options.resolution = parse_rational(resolution, "resolution");
+          if (cone != "tight" && cone != "paper")
+            throw InputError("cone", cone, "is not a cone method (tight or paper)");
+          options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+          options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
+          options.guaranteed = guaranteed_of(G, S);
+          py::gil_scoped_release release;
+          return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));
+        });
   m.def("sample_region", [](const ScenePtr& scene, const SeatingPtr& S, int points,
                             const std::optional<std::string>& pusher_mu, const py::object& G) {
     if (points < 1) throw InputError("points", std::to_string(points), "must be at least 1");
     const auto mu = optional_rational(pusher_mu, "pusher_mu");
     const GuaranteedSet* g = guaranteed_of(G, S);
     py::gil_scoped_release release;
-    return std::make_shared<Region>(sample_region(*scene, *S, points, mu, g));
+    return std::make_shared<Region>(sample_region(checked(scene, "scene"), checked(S, "seating"), points, mu, g));
   });
   m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r, const std::string& method,
                           const std::optional<std::string>& resolution, const std::string& pusher_mu) {
-    return region_json(*scene, *r, method, optional_rational(resolution, "resolution"),
-                       parse_rational(pusher_mu, "pusher_mu"));
+    return region_json(checked(scene, "scene"), checked(r, "region"), method,
+                       optional_rational(resolution, "resolution"), parse_rational(pusher_mu, "pusher_mu"));
   });
-  m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S,
-                               const RegionPtr& r, const std::string& method, const std::string& resolution,
-                               const std::string& pusher_mu) {
+  m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r,
+                               const std::string& method, const std::string& resolution, const std::string& pusher_mu) {
     const Rational res = parse_rational(resolution, "resolution"), mu = parse_rational(pusher_mu, "pusher_mu");
     py::gil_scoped_release release;
-    write_region_svg(path, *scene, *S, *r, method, res, mu);
+    write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"), method, res, mu);
   });
   m.def("dump_off", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& dir, const std::string& length,
                        const py::object& G) {
     const Rational len = parse_rational(length, "length");
     const GuaranteedSet* g = guaranteed_of(G, S);
     py::gil_scoped_release release;
-    return dump_off(*scene, *S, dir, len, g);
+    return dump_off(checked(scene, "scene"), checked(S, "seating"), dir, len, g);
   });
 }
 

@@ -76,12 +76,14 @@ void bind_sets(py::module_& m) {
 
   py::class_<SeatingSystem>(m, "SeatingSystem")
       .def_readonly("y_names", &SeatingSystem::y_names)
-      .def("y", [](const SeatingSystem& K, const std::vector<std::string>& p) {
-        return texts(K.y(exact_vector(p, static_cast<int>(K.P.cols()), "p")));
-      })
-      .def("linear_part", [](const SeatingSystem& K, const std::vector<std::string>& p) {
-        return texts(K.linear_part(exact_vector(p, static_cast<int>(K.P.cols()), "p")));
-      })
+      .def("y",
+           [](const SeatingSystem& K, const std::vector<std::string>& p) {
+             return texts(K.y(exact_vector(p, static_cast<int>(K.P.cols()), "p")));
+           })
+      .def("linear_part",
+           [](const SeatingSystem& K, const std::vector<std::string>& p) {
+             return texts(K.linear_part(exact_vector(p, static_cast<int>(K.P.cols()), "p")));
+           })
       .def("threshold", [](const SeatingSystem& K) { return texts(K.threshold()); });
 
   py::class_<GuaranteedHandle, std::shared_ptr<GuaranteedHandle>>(m, "GuaranteedSet")
@@ -108,35 +110,36 @@ void bind_sets(py::module_& m) {
 
   m.def("seating_set", [](const ScenePtr& scene) {
     py::gil_scoped_release release;
-    return std::make_shared<SeatingSet>(seating_set(*scene));
+    return std::make_shared<SeatingSet>(seating_set(checked(scene, "scene")));
   });
   m.def("seating_system", [](const ScenePtr& scene, const SeatingPtr& S) {
     py::gil_scoped_release release;
-    return seating_system(*scene, *S);
+    return seating_system(checked(scene, "scene"), checked(S, "seating"));
   });
   m.def("guaranteed_set", [](const ScenePtr& scene, const SeatingPtr& S) {
     py::gil_scoped_release release;
-    return std::make_shared<GuaranteedHandle>(GuaranteedHandle{guaranteed_set(*scene, *S), S});
+    return std::make_shared<GuaranteedHandle>(
+        GuaranteedHandle{guaranteed_set(checked(scene, "scene"), checked(S, "seating")), S});
   });
   m.def("simulate", [](const ScenePtr& scene, const std::vector<std::vector<std::string>>& impulses, int steps) {
     std::vector<VectorQ> p;
     for (std::size_t k = 0; k < impulses.size(); ++k)
-      p.push_back(exact_vector(impulses[k], scene->body.dof, "impulse[" + std::to_string(k) + "]"));
+      p.push_back(exact_vector(impulses[k], checked(scene, "scene").body.dof, "impulse[" + std::to_string(k) + "]"));
     Simulation sim;
     {
       py::gil_scoped_release release;
-      sim = simulate(*scene, p, steps);
+      sim = simulate(checked(scene, "scene"), p, steps);
     }
     py::list out;
     for (const auto& s : sim.steps) out.append(step_dict(s));
     return py::make_tuple(sim.seated, out);
   });
   m.def("solutions", [](const ScenePtr& scene, const std::vector<std::string>& impulse) {
-    const VectorQ p = exact_vector(impulse, scene->body.dof, "impulse");
+    const VectorQ p = exact_vector(impulse, checked(scene, "scene").body.dof, "impulse");
     std::vector<Outcome> outcomes;
     {
       py::gil_scoped_release release;
-      outcomes = enumerate_outcomes(*scene, p);
+      outcomes = enumerate_outcomes(checked(scene, "scene"), p);
     }
     py::list out;
     for (const auto& o : outcomes) out.append(outcome_dict(o));

@@ -28,6 +28,14 @@ std::vector<std::vector<std::string>> texts(const std::vector<VectorQ>& vs);
 /// would otherwise reach Eigen unchecked) and ParseError for a bad number.
 VectorQ exact_vector(const std::vector<std::string>& text, int size, const std::string& field);
 
+/// *p, or TypeError for None: pybind11 turns None into an empty holder, and
+/// dereferencing it would crash the interpreter.
+template <class T>
+T& checked(const std::shared_ptr<T>& p, const char* name) {
+  if (!p) throw py::type_error(std::string(name) + ": None is not a fixel object");
+  return *p;
+}
+
 /// G's membership test needs S, so the binding keeps both alive together.
 struct GuaranteedHandle {
   GuaranteedSet G;

@@ -71,9 +71,11 @@ def test_region_objects(polygon):
 
 def test_progress_callback(polygon):
     events = []
-    fixel.region(polygon, resolution="1/64", progress=lambda stage, t: events.append((stage, t)))
+    blob32 = fixel.Scene.load(SCENE_DIR / "blob32.json")  # ~0.2 s
+    r = fixel.region(blob32, progress=lambda stage, t: events.append((stage, t)))
     assert events[0] == ("start", 0.0) and events[-1][0] == "done"
     assert all(stage == "running" for stage, _ in events[1:-1])
+    assert r.stats.seconds < 0.15 or len(events) > 2  # ticks while the core runs
     fixel.region(polygon, resolution="1/64", progress=True)  # the tqdm bar stays hidden under 1 s
 
 
@@ -86,7 +88,7 @@ def test_progress_error_propagates(polygon):
 
 def test_gil_released_during_region():
     """Another Python thread keeps running while the core computes."""
-    scene = fixel.Scene.load(SCENE_DIR / "blob.json")
+    scene = fixel.Scene.load(SCENE_DIR / "blob32.json")  # ~0.2 s
     ticks, done = [], threading.Event()
 
     def count():
@@ -96,11 +98,10 @@ def test_gil_released_during_region():
 
     t = threading.Thread(target=count)
     t.start()
-    r = fixel.region(scene, resolution="1/256")
+    r = fixel.region(scene)
     done.set()
     t.join()
-    if r.stats.seconds > 0.05:
-        assert len(ticks) > 5
+    assert r.stats.seconds < 0.05 or len(ticks) > 10
 
 
 def test_guaranteed_region(polygon):

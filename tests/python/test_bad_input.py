@@ -166,3 +166,17 @@ def test_unsupported_eq27_with_sticking_contact():
     if 0 in S.sliding:
         with pytest.raises(fixel.UnsupportedError):
             S.eq27((0, 0, 0))
+
+
+def test_none_never_crashes(example2, tmp_path):
+    for call in [
+        lambda: fixel.seating_set(None),
+        lambda: fixel.guaranteed_set(example2, seating="S"),
+        lambda: fixel.to_off(example2, None, tmp_path),
+        lambda: fixel.to_svg(tmp_path / "x.svg", None),
+        lambda: fixel._fixel.seating_set(None),  # the raw module too
+        lambda: fixel._fixel.guaranteed_set(example2._impl, None),
+        lambda: fixel._fixel.compute_region(None, None, "1/8", "tight", None, None),
+    ]:
+        with pytest.raises(TypeError):
+            call()

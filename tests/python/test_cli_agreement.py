@@ -59,9 +59,8 @@ REGION_SCENES = [p for p in SCENES if "boundary" in p.read_text()]
 
 @pytest.mark.parametrize("path", REGION_SCENES, ids=lambda p: p.name)
 def test_region_agrees(path):
-    res = "1/64"  # coarse: the agreement, not the resolution, is under test
-    doc = cli_json("region", path, "--resolution", res)
-    r = fixel.region(fixel.Scene.load(path), resolution=F(1, 64))
+    doc = cli_json("region", path)  # default resolution 1/1024 on both sides
+    r = fixel.region(fixel.Scene.load(path))
     assert len(r.intervals) == len(doc["intervals"])
     for a, b in zip(r.intervals, doc["intervals"]):
         assert (a.curve, a.u0, a.u1, a.status, a.half_line) == (b["curve"], F(b["u0"]), F(b["u1"]), b["status"], b["half_line"])
@@ -70,7 +69,7 @@ def test_region_agrees(path):
     assert r.counts() == doc["counts"]
     assert {k: F(v) for k, v in doc["lengths"].items()} == r.lengths()
     assert r.stats.cone_tests == doc["stats"]["cone_tests"] and r.stats.depth == doc["stats"]["depth"]
-    assert r.resolution == F(1, 64) and r.pusher_mu == F(doc["pusher_mu"])
+    assert r.resolution == F(1, 1024) and r.pusher_mu == F(doc["pusher_mu"])
 
 
 def test_region_paper_cone_and_pusher_mu_agree():
