@@ -29,6 +29,11 @@ def _is_numpy_float(x):
 
 def text(x, field):
     """Exact text of one number ("p/q", an integer, or the user's string)."""
+    t = type(x)
+    if t is int or t is str:  # fast paths of the common exact types
+        return str(x)
+    if t is Fraction:
+        return f"{x.numerator}/{x.denominator}"
     if x is None:
         raise TypeError(f"{field}: None is not a number")
     if isinstance(x, bool):

@@ -137,3 +137,23 @@ def test_plots(polygon):
     assert fixel.plot.wrench_sphere(b, polygon, r) is b
     assert a.lines and b.lines
     plt.close(fig)
+
+
+def test_tqdm_bar_after_one_second(capsys):
+    import time
+
+    from fixel._region import _run
+
+    assert _run(lambda: time.sleep(1.3) or 7, True, "fixel.region") == 7
+    assert "fixel.region" in capsys.readouterr().err
+    assert _run(lambda: 8, True, "fixel.region") == 8
+    assert "fixel.region" not in capsys.readouterr().err  # quick runs show nothing
+
+
+def test_point_mass_scene():
+    scene = fixel.Scene.load(SCENE_DIR / "example1.json")
+    S = fixel.seating_set(scene)
+    assert scene.dof == 2 and len(S.apex) == 2
+    assert S.contains(S.apex)
+    with pytest.raises(fixel.InputError):
+        S.contains((0, 0, 0))
