@@ -59,6 +59,7 @@ class Scene:
     num_contacts = property(lambda self: self._impl.num_contacts)
     has_boundary = property(lambda self: self._impl.has_boundary)
     num_curves = property(lambda self: self._impl.num_curves)
+    pusher_mu = property(lambda self: frac(self._impl.pusher_mu))
 
     def curve_range(self, k):
         """(u_begin, u_end) of curve k as Fractions."""

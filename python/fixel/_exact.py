@@ -76,7 +76,16 @@ def vector(p, field):
             )
         if getattr(p, "ndim", 1) != 1:
             raise InputError.make(field, f"shape {p.shape}", "must be a flat vector")
-    return [text(x, f"{field}[{i}]") for i, x in enumerate(p)]
+    out = []
+    for i, x in enumerate(p):
+        t = type(x)  # fast paths inline: this runs on every contains() call
+        if t is int or t is str:
+            out.append(str(x))
+        elif t is Fraction:
+            out.append(f"{x.numerator}/{x.denominator}")
+        else:
+            out.append(text(x, f"{field}[{i}]"))
+    return out
 
 
 def frac(s):

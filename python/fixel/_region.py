@@ -107,8 +107,8 @@ def _region_of(scene, S, impl, cone, resolution, pusher_mu):
     stats = RegionStats(
         s["cone_tests"], s["lp_tests"], s["point_tests"], s["depth"], frac(s["partial_length"]), s["seconds"]
     )
-    mu = pusher_mu if pusher_mu is not None else frac(scene.to_dict()["pusher"]["mu"])
-    return Region(scene, S, intervals, stats, cone, resolution, Fraction(text(mu, "pusher_mu")), impl)
+    mu = pusher_mu if pusher_mu is not None else frac(scene._impl.pusher_mu)
+    return Region(scene, S, intervals, stats, cone, resolution, mu, impl)
 
 
 class _TqdmProgress:
