@@ -157,3 +157,14 @@ def test_point_mass_scene():
     assert S.contains(S.apex)
     with pytest.raises(fixel.InputError):
         S.contains((0, 0, 0))
+
+
+def test_concurrent_calls_agree():
+    """The core runs without the GIL; threads must not disturb each other."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    scenes = [fixel.Scene.load(SCENE_DIR / n) for n in ("polygon.json", "blob.json", "fig6.json")] * 2
+    serial = [[(i.u0, i.u1, i.status) for i in fixel.region(s, resolution="1/128").intervals] for s in scenes]
+    with ThreadPoolExecutor(4) as pool:
+        parallel = list(pool.map(lambda s: [(i.u0, i.u1, i.status) for i in fixel.region(s, resolution="1/128").intervals], scenes))
+    assert parallel == serial

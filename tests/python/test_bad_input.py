@@ -160,12 +160,15 @@ def test_simulate_and_solutions_bad_input(example2):
         fixel.solutions(example2, None)
 
 
-def test_unsupported_eq27_with_sticking_contact():
-    scene = fixel.Scene.load(SCENE_DIR / "nonunique.json")
-    S = fixel.seating_set(scene)
-    if 0 in S.sliding:
-        with pytest.raises(fixel.UnsupportedError):
-            S.eq27((0, 0, 0))
+def test_unsupported_eq27_with_sticking_contact(example2):
+    # Gaps (1/10, 0, 0): ν⁺ is along fixel 0's normal, so fixel 0 sticks.
+    d = example2.to_dict()
+    d["fixels"][1]["gap"] = d["fixels"][2]["gap"] = "0"
+    S = fixel.seating_set(fixel.Scene.from_dict(d))
+    assert S.sliding[0] == 0 and len(S.rays) == 4
+    with pytest.raises(fixel.UnsupportedError) as e:
+        S.eq27((0, 0, 0))
+    assert isinstance(e.value, NotImplementedError)
 
 
 def test_none_never_crashes(example2, tmp_path):
