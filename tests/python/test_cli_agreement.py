@@ -34,7 +34,12 @@ def test_impulse_commands_agree(name):
     scene, text = fixel.Scene.load(path), IMPULSES[name]
     p = [F(x) for x in text.split(",")]
     seat = cli_json("seat", path, "--impulse", text)
-    assert fixel.seating_set(scene).contains(p) == seat["contains"]
+    S = fixel.seating_set(scene)
+    assert S.contains(p) == seat["contains"]
+    if "y" in seat:  # eq. (27): y = K⁻¹(P p + a) = linear − threshold
+        names, linear, threshold = S.eq27(p)
+        assert names == seat["y_names"]
+        assert [a - b for a, b in zip(linear, threshold)] == [F(y) for y in seat["y"]]
     sim = cli_json("simulate", path, "--impulse", text)
     mine = fixel.simulate(scene, p)
     assert mine.seated == sim["seated"]

@@ -3,7 +3,7 @@
 from fractions import Fraction as F
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import fixel
@@ -73,3 +73,14 @@ def test_inputs_in_any_exact_form_agree(example2, p):
     S = fixel.seating_set(example2)
     as_text = [f"{x.numerator}/{x.denominator}" for x in p]
     assert S.contains(p) == S.contains(as_text) == S.contains(list(p))
+
+
+@settings(max_examples=30)  # each enumerates 4^3 contact modes exactly (~70 ms)
+@given(name=st.sampled_from(["example2.json", "nonunique.json"]), lam=st.lists(weights, min_size=3, max_size=3))
+def test_membership_means_a_seating_outcome(cases, name, lam):
+    """p ∈ S iff one of the step LCP's outcomes at p seats the part: S checked
+    against the outcome enumeration, a different algorithm."""
+    S, _ = cases[name]
+    p = [S.apex[k] + sum(lam[j] * r[k] for j, r in enumerate(S.rays)) for k in range(3)]
+    scene = fixel.Scene.load(SCENE_DIR / name)
+    assert S.contains(p) == any(o.seated for o in fixel.solutions(scene, p))
