@@ -10,6 +10,7 @@ import timeit
 from fractions import Fraction
 
 import fixel
+from fixel import _fixel
 
 scenes = pathlib.Path(__file__).resolve().parents[1] / "data" / "scenes"
 S = fixel.seating_set(fixel.Scene.load(scenes / "example2.json"))
@@ -28,7 +29,7 @@ cases = [
     ("contains, strings", "S.contains(('-1', '-1', '-1'))", 20000),
     ("contains, raw _fixel (text in)", "S._impl.contains(['-1', '-1', '-1'])", 20000),
     ("region 1/1024 (fixel.region)", "fixel.region(rounded, seating=S_rounded)", 10),
-    ("region 1/1024 (raw _fixel)", "fixel._fixel.compute_region(rounded._impl, S_rounded._impl, '1/1024', 'tight', None, None)", 10),
+    ("region 1/1024 (raw _fixel)", "_fixel.compute_region(rounded._impl, S_rounded._impl, '1/1024', 'tight', None, None)", 10),
 ]  # fmt: skip
 p_frac = (Fraction(-1), Fraction(-1), Fraction(-1))
 for name, stmt, number in cases:

@@ -164,7 +164,11 @@ def test_concurrent_calls_agree():
     from concurrent.futures import ThreadPoolExecutor
 
     scenes = [fixel.Scene.load(SCENE_DIR / n) for n in ("polygon.json", "blob.json", "fig6.json")] * 2
-    serial = [[(i.u0, i.u1, i.status) for i in fixel.region(s, resolution="1/128").intervals] for s in scenes]
+
+    def intervals(s):
+        return [(i.u0, i.u1, i.status) for i in fixel.region(s, resolution="1/128").intervals]
+
+    serial = [intervals(s) for s in scenes]
     with ThreadPoolExecutor(4) as pool:
-        parallel = list(pool.map(lambda s: [(i.u0, i.u1, i.status) for i in fixel.region(s, resolution="1/128").intervals], scenes))
+        parallel = list(pool.map(intervals, scenes))
     assert parallel == serial

@@ -44,7 +44,8 @@ def test_impulse_commands_agree(name):
     mine = fixel.simulate(scene, p)
     assert mine.seated == sim["seated"]
     for a, b in zip(mine.steps, sim["steps"]):
-        assert (a.q, a.velocity, a.gaps, a.p_n, a.p_f) == tuple(fr(b[k]) for k in ("q", "velocity", "gaps", "p_n", "p_f"))
+        keys = ("q", "velocity", "gaps", "p_n", "p_f")
+        assert (a.q, a.velocity, a.gaps, a.p_n, a.p_f) == tuple(fr(b[k]) for k in keys)
     sols = cli_json("solutions", path, "--impulse", text)["solutions"]
     mine = fixel.solutions(scene, p)
     assert len(mine) == len(sols)
@@ -68,7 +69,8 @@ def test_region_agrees(path):
     r = fixel.region(fixel.Scene.load(path))
     assert len(r.intervals) == len(doc["intervals"])
     for a, b in zip(r.intervals, doc["intervals"]):
-        assert (a.curve, a.u0, a.u1, a.status, a.half_line) == (b["curve"], F(b["u0"]), F(b["u1"]), b["status"], b["half_line"])
+        want = (b["curve"], F(b["u0"]), F(b["u1"]), b["status"], b["half_line"])
+        assert (a.curve, a.u0, a.u1, a.status, a.half_line) == want
         m = a.magnitudes
         assert (None if m is None else (m.lo, m.lo_closed, m.hi, m.hi_closed)) == magnitudes(b["magnitudes"])
     assert r.counts() == doc["counts"]
