@@ -15,6 +15,8 @@ import numpy as np
 from . import _fixel
 from ._exact import exact, frac, fracs, text, vector
 from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
+__version__ = _fixel.__version__
+
 from ._region import Magnitudes, Region, RegionInterval, RegionStats, region, sample
 
 __all__ = [
@@ -213,9 +215,19 @@ def to_off(scene, seating, directory, length=1, guaranteed=None):
     return _fixel.dump_off(scene._impl, seating._impl, str(directory), text(length, "length"), g)
 
 
-def to_svg(path, region_result):
-    """Draws a region (from fixel.region) to an SVG file like ``fixel region --svg``."""
-    r = _expect(region_result, Region, "region")
+def to_svg(path, result, theta=None, impulse=None):
+    """Draws ``result`` to an SVG file: a Region (from fixel.region) like
+    ``fixel region --svg``, or a GuaranteedSet (dof 3) like ``fixel seat
+    --guaranteed --svg``: the slice p_θ = theta (default: the impulse's, else
+    the apex's) of S and G, with ``impulse`` marked."""
+    if isinstance(result, GuaranteedSet):
+        S = result.seating
+        p = None if impulse is None else vector(impulse, "impulse")
+        if theta is None:
+            theta = p[2] if p is not None and len(p) == 3 else (S.apex[2] if S.dof == 3 else 0)
+        _fixel.write_guaranteed_svg(str(path), S.scene._impl, S._impl, result._impl, text(theta, "theta"), p)
+        return
+    r = _expect(result, Region, "region")
     _fixel.write_region_svg(
         str(path), r.scene._impl, r.seating._impl, r._impl, r.cone, text(r.resolution, "resolution"),
         text(r.pusher_mu, "pusher_mu"),

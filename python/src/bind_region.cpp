@@ -34,8 +34,8 @@ py::dict interval_dict(const RegionInterval& r) {
   d["half_line"] = r.half_line;
   // As in `fixel region --json`: magnitudes only on IN intervals.
   d["magnitudes"] = r.status == RegionStatus::kIn ? magnitudes(r.magnitudes) : py::none();
-  py::list set;
-  for (const auto& m : r.magnitude_set) set.append(magnitudes(m));
+  py::list set;  // as the CLI's "magnitude_intervals": values on IN intervals only
+  for (const auto& m : r.magnitude_set) set.append(r.status == RegionStatus::kIn ? magnitudes(m) : py::none());
   d["magnitude_set"] = set;
   return d;
 }
@@ -100,6 +100,17 @@ void bind_region(py::module_& m) {
     py::gil_scoped_release release;
     write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"), method, res, mu);
   });
+  m.def("write_guaranteed_svg",
+        [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const py::object& G,
+           const std::string& theta, const std::optional<std::vector<std::string>>& impulse) {
+          const GuaranteedSet* g = guaranteed_of(G, S);
+          if (!g) throw py::type_error("guaranteed: None is not a fixel object");
+          const Rational t = parse_rational(theta, "theta");
+          std::optional<VectorQ> p;
+          if (impulse) p = exact_vector(*impulse, checked(S, "seating").dof, "impulse");
+          py::gil_scoped_release release;
+          write_guaranteed_svg(path, checked(scene, "scene"), checked(S, "seating"), *g, t, p);
+        });
   m.def("dump_off", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& dir, const std::string& length,
                        const py::object& G) {
     const Rational len = parse_rational(length, "length");

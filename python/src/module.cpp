@@ -73,6 +73,7 @@ void translate(std::exception_ptr p) {
 
 PYBIND11_MODULE(_fixel, m) {
   m.doc() = "fixel's exact C++ core; use the fixel package, not this module";
+  m.attr("__version__") = FIXEL_VERSION;
   pybind11::register_exception_translator(&fixel::python::translate);
   fixel::python::bind_scene(m);
   fixel::python::bind_sets(m);

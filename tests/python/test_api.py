@@ -118,6 +118,9 @@ def test_files(tmp_path, polygon):
     G = fixel.guaranteed_set(polygon, r.seating)
     paths = fixel.to_off(polygon, r.seating, tmp_path / "offg", guaranteed=G)
     assert any("guaranteed_" in p for p in paths) or G.num_pieces == 0
+    fixel.to_svg(tmp_path / "g.svg", G, impulse=G.seating.apex)
+    assert "<svg" in (tmp_path / "g.svg").read_text()
+    assert fixel.__version__.count(".") == 2
     other = fixel.seating_set(polygon)
     with pytest.raises(fixel.InputError):
         fixel.to_off(polygon, other, tmp_path / "bad", guaranteed=G)

@@ -116,3 +116,23 @@ def test_region_without_boundary_same_error():
     with pytest.raises(fixel.SceneError) as e:
         fixel.region(fixel.Scene.load(path))
     assert str(e.value) == message
+
+
+def magnitude_list(doc):
+    return [magnitudes(m) for m in doc.get("magnitude_intervals", [])]
+
+
+def as_tuples(ms):
+    return [None if m is None else (m.lo, m.lo_closed, m.hi, m.hi_closed) for m in ms]
+
+
+@pytest.mark.parametrize("command", ["region", "sample"])
+def test_guaranteed_region_agrees(command):
+    path = [p for p in SCENES if p.name == "nonunique_part.json"][0]
+    doc = cli_json(command, path, "--guaranteed")
+    scene = fixel.Scene.load(path)
+    r = fixel.region(scene, guaranteed=True) if command == "region" else fixel.sample(scene, 64, guaranteed=True)
+    assert len(r.intervals) == len(doc["intervals"])
+    for a, b in zip(r.intervals, doc["intervals"]):
+        assert (a.curve, a.u0, a.u1, a.status) == (b["curve"], F(b["u0"]), F(b["u1"]), b["status"])
+        assert as_tuples(a.magnitude_set) == magnitude_list(b)
