@@ -5,11 +5,13 @@ Nothing in this module calls ``plt.show()`` or creates a figure.
 """
 
 import math
+from fractions import Fraction
 
 import numpy as np
 
 from . import _fixel
 from ._exact import text
+from .errors import InputError
 
 #: Status colours, as in `fixel region --svg`.
 COLOURS = {"in": "#1a9850", "out": "#bdbdbd", "partial": "#fdae61"}
@@ -24,6 +26,7 @@ def region(ax, scene, region, samples_per_unit=48, fixels=True, linewidth=3):
     """Draws the outline coloured by status, the fixels (points, inward
     normals) and the centre of mass into ``ax``. Returns ``ax``."""
     impl = scene._impl
+    drawn = []
     for r in region.intervals:
         u0, u1 = text(r.u0, "u0"), text(r.u1, "u1")
         if r.u0 == r.u1:  # a corner sample
@@ -31,13 +34,16 @@ def region(ax, scene, region, samples_per_unit=48, fixels=True, linewidth=3):
             ax.plot([x], [y], "o", color=COLOURS[r.status], markersize=5, zorder=3)
             continue
         pts = np.array(_fixel.sample_curve(impl, r.curve, u0, u1, _samples(r, samples_per_unit)))
+        drawn.append(pts)
         ax.plot(pts[:, 0], pts[:, 1], color=COLOURS[r.status], linewidth=linewidth, solid_capstyle="butt")
     d = scene.to_dict()
+    span = float(np.ptp(np.vstack(drawn), axis=0).max()) if drawn else 1.0
     if fixels:
         for i, f in enumerate(d["fixels"]):
-            (x, y), (nx, ny) = (map(float, _fractions(f["point"]))), map(float, _fractions(f["normal"]))
+            x, y = (float(v) for v in _fractions(f["point"]))
+            nx, ny = (float(v) for v in _fractions(f["normal"]))
             ax.plot([x], [y], "o", color="#08519c", zorder=4)
-            ax.annotate("", xy=(x + 0.3 * nx, y + 0.3 * ny), xytext=(x, y), arrowprops={"arrowstyle": "->"})
+            ax.annotate("", xy=(x + 0.15 * span * nx, y + 0.15 * span * ny), xytext=(x, y), arrowprops={"arrowstyle": "->"})
             ax.annotate(f"f{i}", (x, y), textcoords="offset points", xytext=(6, -12), color="#08519c")
     cx, cy = map(float, _fractions(d["body"]["center_of_mass"]))
     ax.plot([cx], [cy], "+", color="black", markersize=10, markeredgewidth=2)
@@ -48,8 +54,6 @@ def region(ax, scene, region, samples_per_unit=48, fixels=True, linewidth=3):
 
 
 def _fractions(values):
-    from fractions import Fraction
-
     return [Fraction(v) for v in values]
 
 
@@ -64,7 +68,7 @@ def wrench_sphere(ax, scene, region=None, seating=None, grid=(120, 60), samples_
     display grid), and, with a region, the boundary's frictionless push
     wrenches coloured by status. Returns ``ax``."""
     if scene.dof != 3:
-        raise ValueError("wrench_sphere needs a dof 3 scene")
+        raise InputError.make("scene", f"dof {scene.dof}", "has no wrench sphere: wrench_sphere needs dof 3")
     if seating is None:
         seating = region.seating if region is not None else None
     if seating is not None:
