@@ -67,6 +67,10 @@ class Scene:
         """(u_begin, u_end) of curve k as Fractions."""
         return fracs(_fixel.curve_range(self._impl, k))
 
+    def __reduce__(self):
+        # Pickled as its exact dict (for multiprocessing over many layouts).
+        return (_scene_from_dict, (self.to_dict(), self.name))
+
     def __repr__(self):
         return f"<fixel.Scene {self.name!r} dof={self.dof} contacts={self.num_contacts}>"
 
@@ -83,6 +87,10 @@ def _jsonable(x, path):
     if getattr(x, "dtype", None) is not None and getattr(x, "ndim", 0) > 0:
         return _jsonable(list(x), path) if x.dtype.kind not in "fc" else vector(x, path)
     return text(x, path)
+
+
+def _scene_from_dict(d, source):
+    return Scene.from_dict(d, source)
 
 
 def _expect(x, cls, name):
@@ -119,6 +127,9 @@ class SeatingSet:
 
     def __contains__(self, p):
         return self.contains(p)
+
+    def __reduce__(self):
+        return (seating_set, (self.scene,))  # recomputed exactly on unpickling
 
     def eq27(self, p):
         """Eq. (27) of the paper at p: (names, K⁻¹P p, −K⁻¹a), with p ∈ S iff

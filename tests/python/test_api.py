@@ -175,3 +175,11 @@ def test_concurrent_calls_agree():
     with ThreadPoolExecutor(4) as pool:
         parallel = list(pool.map(intervals, scenes))
     assert parallel == serial
+
+
+def test_pickle_round_trip(example2):
+    import pickle
+
+    S = fixel.seating_set(example2)
+    T = pickle.loads(pickle.dumps(S))
+    assert T.halfspaces == S.halfspaces and T.scene.to_dict() == example2.to_dict()
