@@ -14,10 +14,10 @@ import numpy as np
 
 from . import _fixel
 from ._exact import exact, frac, fracs, text, vector
-from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
-__version__ = _fixel.__version__
-
 from ._region import Magnitudes, Region, RegionInterval, RegionStats, region, sample
+from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
+
+__version__ = _fixel.__version__
 
 __all__ = [
     "Error", "InputError", "ParseError", "SceneError", "UnsupportedError",
