@@ -8,6 +8,7 @@ See docs/python.md.
 """
 
 import json
+import os
 from types import SimpleNamespace
 
 import numpy as np
@@ -40,7 +41,9 @@ class Scene:
     @classmethod
     def load(cls, path):
         """Reads a scene file; InputError if unreadable, ParseError/SceneError if invalid."""
-        return cls(_fixel.load_scene(str(path)))
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(f"path: {path!r} is not a file path")
+        return cls(_fixel.load_scene(os.fspath(path)))
 
     @classmethod
     def from_dict(cls, d, source="scene"):

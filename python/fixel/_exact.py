@@ -29,6 +29,13 @@ def _is_numpy_float(x):
 
 def text(x, field):
     """Exact text of one number ("p/q", an integer, or the user's string)."""
+    try:
+        return _text(x, field)
+    except ValueError as e:  # Python refuses str() of integers beyond 4300 digits
+        raise InputError.make(field, f"({type(x).__name__})", f"is too large to convert to exact text ({e})") from e
+
+
+def _text(x, field):
     t = type(x)
     if t is int or t is str:  # fast paths of the common exact types
         return str(x)
@@ -77,15 +84,22 @@ def vector(p, field):
         if getattr(p, "ndim", 1) != 1:
             raise InputError.make(field, f"shape {p.shape}", "must be a flat vector")
     out = []
-    for i, x in enumerate(p):
-        t = type(x)  # fast paths inline: this runs on every contains() call
-        if t is int or t is str:
-            out.append(str(x))
-        elif t is Fraction:
-            out.append(f"{x.numerator}/{x.denominator}")
-        else:
-            out.append(text(x, f"{field}[{i}]"))
+    try:
+        for x in p:
+            t = type(x)  # fast paths inline: this runs on every contains() call
+            if t is int or t is str:
+                out.append(str(x))
+            elif t is Fraction:
+                out.append(f"{x.numerator}/{x.denominator}")
+            else:
+                raise _Slow
+    except (_Slow, ValueError):
+        return [text(x, f"{field}[{i}]") for i, x in enumerate(p)]  # names the entry on error
     return out
+
+
+class _Slow(Exception):
+    """A vector entry needs the general conversion."""
 
 
 def frac(s):

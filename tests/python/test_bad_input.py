@@ -37,6 +37,7 @@ def S(example2):
         (np.zeros((3, 1), dtype=int), fixel.InputError),
         (("-1", "x", "-1"), fixel.ParseError),
         (("1/0", "-1", "-1"), fixel.ParseError),
+        ((10**5000, 0, 0), fixel.InputError),  # beyond Python's int-to-text limit
     ],
 )
 def test_contains_rejects(S, bad, exc):
@@ -113,6 +114,8 @@ def test_scene_errors_other(tmp_path):
         fixel.Scene.from_dict(d)
     with pytest.raises(TypeError):
         fixel.Scene.from_dict(None)
+    with pytest.raises(TypeError):
+        fixel.Scene.load(None)
     with pytest.raises(TypeError):
         fixel.seating_set("example2.json")
 
