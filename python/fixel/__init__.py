@@ -180,11 +180,14 @@ class GuaranteedSet:
         return frac(self._impl.lost_fraction(grid))
 
 
-def guaranteed_set(scene, seating=None):
-    """G for a scene; pass its SeatingSet to reuse it."""
+def guaranteed_set(scene, seating=None, progress=None):
+    """G for a scene; pass its SeatingSet to reuse it. ``progress`` as in region."""
+    from ._region import _run
+
     scene = _scene(scene)
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
-    return GuaranteedSet(S, _fixel.guaranteed_set(scene._impl, S._impl))
+    impl = _run(lambda: _fixel.guaranteed_set(scene._impl, S._impl), progress, "fixel.guaranteed_set")
+    return GuaranteedSet(S, impl)
 
 
 def _vectors(d, keys):

@@ -79,6 +79,12 @@ def test_progress_callback(polygon):
     fixel.region(polygon, resolution="1/64", progress=True)  # the tqdm bar stays hidden under 1 s
 
 
+def test_guaranteed_set_progress(polygon):
+    events = []
+    G = fixel.guaranteed_set(polygon, progress=lambda stage, t: events.append(stage))
+    assert events[0] == "start" and events[-1] == "done" and G.num_pieces >= 0
+
+
 def test_progress_error_propagates(polygon):
     with pytest.raises(fixel.UnsupportedError):
         fixel.region(polygon, push="sustained", progress=True)
