@@ -16,3 +16,9 @@ echo "$out"
 grep -q "impulse (-1, -1, -1) is in S" <<<"$out"
 grep -q "right edge: " <<<"$out"
 test -x "$tmp/prefix/bin/fixel"
+# The Python package, when built, is installed and importable from the prefix.
+pkg=$(find "$tmp/prefix/lib" -path '*dist-packages/fixel' -type d 2>/dev/null | head -1)
+if [ -n "$pkg" ]; then
+  (cd "$tmp" && PYTHONPATH=$(dirname "$pkg") /usr/bin/python3 -c \
+    "import fixel; S = fixel.seating_set(fixel.Scene.load('$src/data/scenes/example2.json')); assert S.contains((-1, -1, -1)); print('python: import fixel from', fixel.__file__)")
+fi

@@ -1,0 +1,255 @@
+"""fixel from Python: exact seating sets, outcomes and pushing regions.
+
+Every exact value comes out as ``fractions.Fraction``; every input accepts a
+``Fraction``, an ``int`` or a string (``"p/q"``, ``"0.1"``). A ``float`` is
+refused with ``TypeError`` (use ``fixel.exact(x)`` to take its binary value on
+purpose). Doubles appear only in ``.approx`` views and in ``fixel.plot``.
+See docs/python.md.
+"""
+
+import json
+import os
+from types import SimpleNamespace
+
+import numpy as np
+
+from . import _fixel
+from ._exact import exact, frac, fracs, text, vector
+from ._region import Magnitudes, Region, RegionInterval, RegionStats, region, sample
+from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
+
+__version__ = _fixel.__version__
+
+__all__ = [
+    "Error", "InputError", "ParseError", "SceneError", "UnsupportedError",
+    "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes",
+    "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
+    "to_off", "to_svg",
+]  # fmt: skip
+
+
+def _approx(values):
+    return np.array([float(v) for v in values], dtype=float)
+
+
+class Scene:
+    """A validated scene (the library's parse_scene/load_scene)."""
+
+    def __init__(self, impl):
+        self._impl = impl
+
+    @classmethod
+    def load(cls, path):
+        """Reads a scene file; InputError if unreadable, ParseError/SceneError if invalid."""
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(f"path: {path!r} is not a file path")
+        return cls(_fixel.load_scene(os.fspath(path)))
+
+    @classmethod
+    def from_dict(cls, d, source="scene"):
+        """Validates a scene given as a dict in the scene-file format. Numbers
+        may be strings, ints or Fractions; floats are refused (not exact)."""
+        if not isinstance(d, dict):
+            raise TypeError(f"{source}: a scene is a dict in the scene-file format, not {type(d).__name__}")
+        # Serialised and parsed by the C++ parser, so validation and messages
+        # are exactly those of the CLI.
+        return cls(_fixel.parse_scene(json.dumps(_jsonable(d, "")), source))
+
+    def to_dict(self):
+        """The scene in the scene-file format, every number an exact string."""
+        return self._impl.to_dict()
+
+    name = property(lambda self: self._impl.name)
+    dof = property(lambda self: self._impl.dof)
+    num_contacts = property(lambda self: self._impl.num_contacts)
+    has_boundary = property(lambda self: self._impl.has_boundary)
+    num_curves = property(lambda self: self._impl.num_curves)
+    pusher_mu = property(lambda self: frac(self._impl.pusher_mu))
+
+    def curve_range(self, k):
+        """(u_begin, u_end) of curve k as Fractions."""
+        return fracs(_fixel.curve_range(self._impl, k))
+
+    def __reduce__(self):
+        # Pickled as its exact dict (for multiprocessing over many layouts).
+        return (_scene_from_dict, (self.to_dict(), self.name))
+
+    def __repr__(self):
+        return f"<fixel.Scene {self.name!r} dof={self.dof} contacts={self.num_contacts}>"
+
+
+def _jsonable(x, path):
+    """The dict with every number as exact text; a float anywhere is a TypeError
+    naming its JSON path (json.dumps would otherwise write its decimal repr)."""
+    if isinstance(x, dict):
+        return {k: _jsonable(v, f"{path}.{k}" if path else str(k)) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_jsonable(v, f"{path}[{i}]") for i, v in enumerate(x)]
+    if x is None or isinstance(x, (str, bool)) or type(x) is int:
+        return x  # left to the C++ parser, which names the field if it is wrong
+    if getattr(x, "dtype", None) is not None and getattr(x, "ndim", 0) > 0:
+        return _jsonable(list(x), path) if x.dtype.kind not in "fc" else vector(x, path)
+    return text(x, path)
+
+
+def _scene_from_dict(d, source):
+    return Scene.from_dict(d, source)
+
+
+def _expect(x, cls, name):
+    if not isinstance(x, cls):
+        raise TypeError(f"{name}: expected a fixel.{cls.__name__}, not {type(x).__name__}")
+    return x
+
+
+def _scene(scene):
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, dict):
+        return Scene.from_dict(scene)
+    raise TypeError(f"scene: expected a fixel.Scene or a scene dict, not {type(scene).__name__}")
+
+
+class SeatingSet:
+    """S = {apex + Σ λ_k rays_k : λ ≥ 0} = {p : a·p ≥ c for every (a, c) in halfspaces}."""
+
+    def __init__(self, scene, impl):
+        self.scene = scene
+        self._impl = impl
+        self.dof = impl.dof
+        self.apex = fracs(impl.apex)
+        self.rays = [fracs(r) for r in impl.rays]
+        self.halfspaces = [(fracs(a), frac(c)) for a, c in impl.halfspaces]
+        self.velocity_after = fracs(impl.velocity_after)
+        self.tangential_velocity = fracs(impl.tangential_velocity)
+        self.sliding = tuple(impl.sliding)
+
+    def contains(self, p):
+        """Exact membership (boundary points are members)."""
+        return self._impl.contains(vector(p, "p"))
+
+    def __contains__(self, p):
+        return self.contains(p)
+
+    def __reduce__(self):
+        return (seating_set, (self.scene,))  # recomputed exactly on unpickling
+
+    def eq27(self, p):
+        """Eq. (27) of the paper at p: (names, K⁻¹P p, −K⁻¹a), with p ∈ S iff
+        linear ≥ threshold entrywise. UnsupportedError when a contact sticks."""
+        system = _fixel.seating_system(self.scene._impl, self._impl)
+        return (list(system.y_names), fracs(system.linear_part(vector(p, "p"))), fracs(system.threshold()))
+
+    @property
+    def approx(self):
+        """Doubles for display: apex, rays, halfspace normals and offsets."""
+        return SimpleNamespace(
+            apex=_approx(self.apex),
+            rays=np.array([_approx(r) for r in self.rays]),
+            normals=np.array([_approx(a) for a, _ in self.halfspaces]),
+            offsets=_approx([c for _, c in self.halfspaces]),
+        )
+
+    def __repr__(self):
+        return f"<fixel.SeatingSet apex={tuple(str(x) for x in self.apex)} rays={len(self.rays)}>"
+
+
+def seating_set(scene):
+    """The seating set S of a scene (n_c == dof)."""
+    scene = _scene(scene)
+    return SeatingSet(scene, _fixel.seating_set(scene._impl))
+
+
+class GuaranteedSet:
+    """G ⊂ S: the impulses whose every one-step outcome seats the part."""
+
+    def __init__(self, seating, impl):
+        self.seating = seating
+        self._impl = impl
+        self.num_pieces = impl.num_pieces
+        self.non_seating = [(tuple(modes), fixel) for modes, fixel in impl.non_seating]
+
+    def contains(self, p):
+        return self._impl.contains(vector(p, "p"))
+
+    def __contains__(self, p):
+        return self.contains(p)
+
+    def lost_fraction(self, grid=6):
+        """Fraction of sample points of S that are not in G (exact)."""
+        return frac(self._impl.lost_fraction(grid))
+
+
+def guaranteed_set(scene, seating=None, progress=None):
+    """G for a scene; pass its SeatingSet to reuse it. ``progress`` as in region."""
+    from ._region import _run
+
+    scene = _scene(scene)
+    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
+    impl = _run(lambda: _fixel.guaranteed_set(scene._impl, S._impl), progress, "fixel.guaranteed_set")
+    return GuaranteedSet(S, impl)
+
+
+def _vectors(d, keys):
+    return {k: (fracs(v) if k in keys else v) for k, v in d.items()}
+
+
+def simulate(scene, impulse, steps=1):
+    """Simulates ``steps`` steps, applying ``impulse`` in the first (or a list
+    of impulses, one per step). Returns SimpleNamespace(seated, steps) where
+    each step has q, velocity, gaps, p_n, p_f (Fractions) and pivots."""
+    scene = _scene(scene)
+    if not isinstance(steps, int) or isinstance(steps, bool):
+        raise TypeError(f"steps: {steps!r} is not an int")
+    impulses = impulse if _is_list_of_vectors(impulse) else [impulse]
+    seated, records = _fixel.simulate(scene._impl, [vector(p, "impulse") for p in impulses], steps)
+    keys = {"q", "velocity", "gaps", "p_n", "p_f"}
+    return SimpleNamespace(seated=seated, steps=[SimpleNamespace(**_vectors(r, keys)) for r in records])
+
+
+def _is_list_of_vectors(x):
+    return isinstance(x, (list, tuple)) and len(x) > 0 and all(isinstance(e, (list, tuple)) for e in x)
+
+
+def solutions(scene, impulse):
+    """Every distinct outcome of one step at ``impulse`` (the CLI's
+    ``solutions``): SimpleNamespaces with seated, modes, velocity, gaps, p_n,
+    p_t, isolated."""
+    scene = _scene(scene)
+    keys = {"velocity", "gaps", "p_n", "p_t"}
+    out = _fixel.solutions(scene._impl, vector(impulse, "impulse"))
+    return [SimpleNamespace(**_vectors(o, keys)) for o in out]
+
+
+def to_off(scene, seating, directory, length=1, guaranteed=None):
+    """Writes S (and G's pieces, the outline, the segment cones) as OFF/OBJ
+    files into ``directory``, like ``fixel dump --off``; returns the paths."""
+    scene = _scene(scene)
+    _expect(seating, SeatingSet, "seating")
+    if guaranteed is not None:
+        _expect(guaranteed, GuaranteedSet, "guaranteed")
+    g = guaranteed._impl if guaranteed is not None else None
+    return _fixel.dump_off(scene._impl, seating._impl, str(directory), text(length, "length"), g)
+
+
+def to_svg(path, result, theta=None, impulse=None):
+    """Draws ``result`` to an SVG file: a Region (from fixel.region) like
+    ``fixel region --svg``, or a GuaranteedSet (dof 3) like ``fixel seat
+    --guaranteed --svg``: the slice p_θ = theta (default: the impulse's, else
+    the apex's) of S and G, with ``impulse`` marked."""
+    if isinstance(result, GuaranteedSet):
+        S = result.seating
+        p = None if impulse is None else vector(impulse, "impulse")
+        if theta is None:
+            theta = p[2] if p is not None and len(p) == 3 else (S.apex[2] if S.dof == 3 else 0)
+        _fixel.write_guaranteed_svg(str(path), S.scene._impl, S._impl, result._impl, text(theta, "theta"), p)
+        return
+    r = _expect(result, Region, "region")
+    _fixel.write_region_svg(
+        str(path), r.scene._impl, r.seating._impl, r._impl, r.cone, text(r.resolution, "resolution"),
+        text(r.pusher_mu, "pusher_mu"),
+    )  # fmt: skip
+
+
+# Coming (other branches): sustained_set(scene) and push(scene, wrench=...).
+# Each is a C++ call in python/src plus a wrapper here, following seating_set.

@@ -1,0 +1,111 @@
+"""The exactness boundary: Python values in, exact text to C++, Fractions out.
+
+Inputs accept ``Fraction``, ``int`` (and numpy integers, ``decimal.Decimal``)
+and strings such as ``"-3/7"`` or ``"0.1"`` (read as exactly 1/10). A
+``float`` is refused: it is a binary approximation, and silently using it
+would make "exact" results depend on rounding. ``exact(x)`` converts a float
+deliberately, to the exact value of its binary representation.
+"""
+
+import decimal
+import numbers
+from fractions import Fraction
+
+from .errors import InputError
+
+
+def exact(x):
+    """The exact value of ``x`` as a Fraction; a float gives its binary value
+    (``exact(0.1) == Fraction(3602879701896397, 36028797018963968)``)."""
+    if isinstance(x, float) or _is_numpy_float(x):
+        return Fraction(float(x))
+    return Fraction(text(x, "x"))
+
+
+def _is_numpy_float(x):
+    kind = getattr(getattr(x, "dtype", None), "kind", None)
+    return kind in ("f", "c") and getattr(x, "ndim", 0) == 0
+
+
+def text(x, field):
+    """Exact text of one number ("p/q", an integer, or the user's string)."""
+    try:
+        return _text(x, field)
+    except ValueError as e:  # Python refuses str() of integers beyond 4300 digits
+        raise InputError.make(field, f"({type(x).__name__})", f"is too large to convert to exact text ({e})") from e
+
+
+def _text(x, field):
+    t = type(x)
+    if t is int or t is str:  # fast paths of the common exact types
+        return str(x)
+    if t is Fraction:
+        return f"{x.numerator}/{x.denominator}"
+    if x is None:
+        raise TypeError(f"{field}: None is not a number")
+    if isinstance(x, bool):
+        raise TypeError(f"{field}: {x!r} is a bool, not a number")
+    if isinstance(x, str):
+        return x  # parsed by fixel::parse_rational: ParseError names the field
+    if isinstance(x, Fraction):
+        return f"{x.numerator}/{x.denominator}"
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    if isinstance(x, float) or _is_numpy_float(x) or isinstance(x, numbers.Real) and not isinstance(
+        x, (numbers.Rational, decimal.Decimal)
+    ):
+        raise TypeError(
+            f"{field}: {x!r} is a float, which is not exact (0.1 is stored as "
+            "3602879701896397/36028797018963968); pass a Fraction, an int or a string "
+            "such as '1/10' or '0.1', or fixel.exact(x) for the float's exact binary value"
+        )
+    if isinstance(x, decimal.Decimal):
+        if not x.is_finite():
+            raise TypeError(f"{field}: {x!r} is not a finite number")
+        return text(Fraction(x), field)
+    if isinstance(x, numbers.Rational):
+        return f"{int(x.numerator)}/{int(x.denominator)}"
+    raise TypeError(f"{field}: {x!r} ({type(x).__name__}) is not an exact number (Fraction, int or str)")
+
+
+def vector(p, field):
+    """Exact texts of a flat sequence; C++ checks the length against dof."""
+    if p is None:
+        raise TypeError(f"{field}: None is not a vector")
+    if isinstance(p, (str, bytes)) or not hasattr(p, "__iter__"):
+        raise TypeError(f"{field}: {p!r} is not a sequence of exact numbers")
+    dtype = getattr(p, "dtype", None)
+    if dtype is not None:
+        if dtype.kind in ("f", "c"):
+            raise TypeError(
+                f"{field}: a numpy {dtype} array is not exact; pass ints, Fractions or strings "
+                "(e.g. a list, or an array of dtype object or int)"
+            )
+        if getattr(p, "ndim", 1) != 1:
+            raise InputError.make(field, f"shape {p.shape}", "must be a flat vector")
+    out = []
+    try:
+        for x in p:
+            t = type(x)  # fast paths inline: this runs on every contains() call
+            if t is int or t is str:
+                out.append(str(x))
+            elif t is Fraction:
+                out.append(f"{x.numerator}/{x.denominator}")
+            else:
+                raise _Slow
+    except (_Slow, ValueError):
+        return [text(x, f"{field}[{i}]") for i, x in enumerate(p)]  # names the entry on error
+    return out
+
+
+class _Slow(Exception):
+    """A vector entry needs the general conversion."""
+
+
+def frac(s):
+    """Fraction from the core's exact text."""
+    return Fraction(s)
+
+
+def fracs(v):
+    return tuple(Fraction(s) for s in v)

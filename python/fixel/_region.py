@@ -1,0 +1,222 @@
+"""The pushing region: exact result objects and progress reporting."""
+
+import json
+import threading
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Optional, Tuple
+
+from . import _fixel
+from ._exact import frac, text
+from .errors import InputError, UnsupportedError
+
+
+@dataclass(frozen=True)
+class Magnitudes:
+    """Push magnitudes |p| (N·s): from lo to hi (None = +∞), ends open or closed."""
+
+    lo: Fraction
+    lo_closed: bool
+    hi: Optional[Fraction]
+    hi_closed: bool
+
+    @property
+    def half_line(self):
+        return self.hi is None
+
+    def contains(self, x):
+        x = Fraction(text(x, "x"))
+        above = x > self.lo or (self.lo_closed and x == self.lo)
+        below = self.hi is None or x < self.hi or (self.hi_closed and x == self.hi)
+        return above and below
+
+    @classmethod
+    def _of(cls, t):
+        if t is None:
+            return None
+        lo, lo_closed, hi, hi_closed = t
+        return cls(frac(lo), lo_closed, None if hi is None else frac(hi), hi_closed)
+
+
+@dataclass(frozen=True)
+class RegionInterval:
+    """A stretch [u0, u1] of curve ``curve`` with status "in", "out" or "partial"."""
+
+    curve: int
+    u0: Fraction
+    u1: Fraction
+    status: str
+    half_line: bool
+    magnitudes: Optional[Magnitudes]  # IN only, as in `fixel region --json`
+    magnitude_set: Tuple[Optional[Magnitudes], ...] = ()  # with a guaranteed set
+
+
+@dataclass(frozen=True)
+class RegionStats:
+    cone_tests: int
+    lp_tests: int
+    point_tests: int
+    depth: int
+    partial_length: Fraction
+    seconds: float  # wall time, display only
+
+
+@dataclass(eq=False)
+class Region:
+    """The intervals tile every curve's parameter range, in order."""
+
+    scene: object
+    seating: object
+    intervals: list
+    stats: RegionStats
+    cone: str
+    resolution: Optional[Fraction]
+    pusher_mu: Fraction
+    _impl: object = field(repr=False)
+
+    def counts(self):
+        out = {"in": 0, "out": 0, "partial": 0}
+        for r in self.intervals:
+            out[r.status] += 1
+        return out
+
+    def lengths(self):
+        """Total parameter length per status (exact)."""
+        out = {"in": Fraction(0), "out": Fraction(0), "partial": Fraction(0)}
+        for r in self.intervals:
+            out[r.status] += r.u1 - r.u0
+        return out
+
+    def to_json(self):
+        """The document of `fixel region --json` (same C++ writer)."""
+        res = None if self.resolution is None else text(self.resolution, "resolution")
+        doc = _fixel.region_json(self.scene._impl, self._impl, self.cone, res, text(self.pusher_mu, "pusher_mu"))
+        return json.loads(doc)
+
+
+def _region_of(scene, S, impl, cone, resolution, pusher_mu):
+    intervals = [
+        RegionInterval(
+            d["curve"], frac(d["u0"]), frac(d["u1"]), d["status"], d["half_line"],
+            Magnitudes._of(d["magnitudes"]), tuple(Magnitudes._of(m) for m in d["magnitude_set"]),
+        )
+        for d in impl.intervals
+    ]  # fmt: skip
+    s = impl.stats
+    stats = RegionStats(
+        s["cone_tests"], s["lp_tests"], s["point_tests"], s["depth"], frac(s["partial_length"]), s["seconds"]
+    )
+    mu = pusher_mu if pusher_mu is not None else frac(scene._impl.pusher_mu)
+    return Region(scene, S, intervals, stats, cone, resolution, mu, impl)
+
+
+class _TqdmProgress:
+    """progress=True: a tqdm bar of elapsed seconds, shown only after ~1 s."""
+
+    def __init__(self, description):
+        self.description = description
+        self.bar = None
+        self.shown = 0.0
+
+    def __call__(self, stage, elapsed):
+        from tqdm import tqdm  # imported only when asked for
+
+        if self.bar is None:
+            fmt = "{desc}: {elapsed} elapsed{postfix}"
+            self.bar = tqdm(total=None, desc=self.description, delay=1.0, bar_format=fmt, leave=False)
+        self.bar.update(elapsed - self.shown)
+        self.shown = elapsed
+        if stage == "done":
+            self.bar.close()
+
+
+def _run(work, progress, description, interval=0.1):
+    """Runs ``work`` (a C++ call that releases the GIL) and reports progress.
+
+    The C++ region has no progress hook, so the callback is told
+    ("start", 0.0), then ("running", elapsed_seconds) every ``interval``
+    seconds while the core computes in a worker thread, then ("done", total).
+    """
+    if progress is None or progress is False:
+        return work()
+    callback = _TqdmProgress(description) if progress is True else progress
+    if not callable(callback):
+        raise TypeError(f"progress: {progress!r} is neither a callable, True nor None")
+    result, error = [], []
+
+    def target():
+        try:
+            result.append(work())
+        except BaseException as e:  # re-raised in the caller's thread
+            error.append(e)
+
+    start = time.perf_counter()
+    callback("start", 0.0)
+    worker = threading.Thread(target=target, name="fixel-region", daemon=True)
+    worker.start()
+    try:
+        while worker.is_alive():
+            worker.join(interval)
+            if worker.is_alive():
+                callback("running", time.perf_counter() - start)
+    finally:
+        worker.join()  # the core cannot be interrupted; never leave it running unseen
+        callback("done", time.perf_counter() - start)
+    if error:
+        raise error[0]
+    return result[0]
+
+
+def _guaranteed_impl(guaranteed, scene, S):
+    if guaranteed is None or guaranteed is False:
+        return None
+    if guaranteed is True:
+        from . import guaranteed_set
+
+        return guaranteed_set(scene, S)._impl
+    return guaranteed._impl
+
+
+def region(
+    scene, resolution="1/1024", cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
+    progress=None,
+):  # fmt: skip
+    """The pushing region by exact recursive subdivision (``fixel region``).
+
+    ``resolution``: stop splitting at this curve-parameter width (exact).
+    ``cone``: "tight" or "paper". ``pusher_mu``: overrides the scene's.
+    ``push``: "step" (one impulse); "sustained" is coming (UnsupportedError).
+    ``guaranteed``: True, or a GuaranteedSet, classifies against G instead of S.
+    ``progress``: None, True (tqdm bar after ~1 s) or callable(stage, elapsed).
+    """
+    from . import SeatingSet, _expect, _scene, seating_set
+
+    scene = _scene(scene)
+    if push == "sustained":
+        raise UnsupportedError.make(
+            "push", "sustained", "is not available yet: the sustained-push set is being added; use push='step'"
+        )
+    if push != "step":
+        raise InputError.make("push", repr(push), "is not a push model (step; sustained is coming)")
+    if cone not in ("tight", "paper"):
+        raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
+    res = text(resolution, "resolution")
+    mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
+    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
+    g = _guaranteed_impl(guaranteed, scene, S)
+    impl = _run(lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g), progress, "fixel.region")
+    return _region_of(scene, S, impl, cone, frac(res), None if mu is None else frac(mu))
+
+
+def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None):
+    """The point-sampling baseline (``fixel sample``): ``points`` per curve."""
+    from . import SeatingSet, _expect, _scene, seating_set
+
+    scene = _scene(scene)
+    if not isinstance(points, int) or isinstance(points, bool):
+        raise TypeError(f"points: {points!r} is not an int")
+    mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
+    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
+    impl = _fixel.sample_region(scene._impl, S._impl, points, mu, _guaranteed_impl(guaranteed, scene, S))
+    return _region_of(scene, S, impl, "sample", None, None if mu is None else frac(mu))

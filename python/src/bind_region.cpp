@@ -1,0 +1,123 @@
+/// @file
+/// The pushing region (compute_region, sample_region) and the file writers
+/// (OFF dump, region SVG). The region runs with the GIL released so that a
+/// Python thread can report progress meanwhile (fixel/_progress.py).
+
+#include <memory>
+#include <optional>
+
+#include "bindings.h"
+#include "fixel/guaranteed.h"
+#include "fixel/io.h"
+#include "fixel/region.h"
+#include "fixel/svg.h"
+
+namespace fixel::python {
+namespace {
+
+using ScenePtr = std::shared_ptr<Scene>;
+using SeatingPtr = std::shared_ptr<SeatingSet>;
+using RegionPtr = std::shared_ptr<Region>;
+
+py::object magnitudes(const Magnitudes& m) {
+  if (m.empty) return py::none();
+  return py::make_tuple(to_string(m.lo), m.lo_closed, m.hi ? py::cast(to_string(*m.hi)) : py::none(),
+                        m.hi.has_value() && m.hi_closed);
+}
+
+py::dict interval_dict(const RegionInterval& r) {
+  py::dict d;
+  d["curve"] = r.curve;
+  d["u0"] = to_string(r.u0);
+  d["u1"] = to_string(r.u1);
+  d["status"] = to_string(r.status);
+  d["half_line"] = r.half_line;
+  // As in `fixel region --json`: magnitudes only on IN intervals.
+  d["magnitudes"] = r.status == RegionStatus::kIn ? magnitudes(r.magnitudes) : py::none();
+  py::list set;  // as the CLI's "magnitude_intervals": values on IN intervals only
+  for (const auto& m : r.magnitude_set) set.append(r.status == RegionStatus::kIn ? magnitudes(m) : py::none());
+  d["magnitude_set"] = set;
+  return d;
+}
+
+py::dict stats_dict(const RegionStats& s) {
+  py::dict d;
+  d["cone_tests"] = s.cone_tests;
+  d["lp_tests"] = s.lp_tests;
+  d["point_tests"] = s.point_tests;
+  d["depth"] = s.depth;
+  d["partial_length"] = to_string(s.partial_length);
+  d["seconds"] = s.seconds;
+  return d;
+}
+
+std::optional<Rational> optional_rational(const std::optional<std::string>& text, const std::string& field) {
+  if (!text) return std::nullopt;
+  return parse_rational(*text, field);
+}
+
+}  // namespace
+
+void bind_region(py::module_& m) {
+  py::class_<Region, RegionPtr>(m, "Region")
+      .def_property_readonly("intervals",
+                             [](const Region& r) {
+                               py::list out;
+                               for (const auto& i : r.intervals) out.append(interval_dict(i));
+                               return out;
+                             })
+      .def_property_readonly("stats", [](const Region& r) { return stats_dict(r.stats); });
+
+  m.def("compute_region",
+        [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution, const std::string& cone,
+           const std::optional<std::string>& pusher_mu, const py::object& G) {
+          RegionOptions options;
+          options.resolution = parse_rational(resolution, "resolution");
+          if (cone != "tight" && cone != "paper")
+            throw InputError("cone", cone, "is not a cone method (tight or paper)");
+          options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+          options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
+          options.guaranteed = guaranteed_of(G, S);
+          py::gil_scoped_release release;
+          return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));
+        });
+  m.def("sample_region", [](const ScenePtr& scene, const SeatingPtr& S, int points,
+                            const std::optional<std::string>& pusher_mu, const py::object& G) {
+    if (points < 1) throw InputError("points", std::to_string(points), "must be at least 1");
+    const auto mu = optional_rational(pusher_mu, "pusher_mu");
+    const GuaranteedSet* g = guaranteed_of(G, S);
+    py::gil_scoped_release release;
+    return std::make_shared<Region>(sample_region(checked(scene, "scene"), checked(S, "seating"), points, mu, g));
+  });
+  m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r, const std::string& method,
+                          const std::optional<std::string>& resolution, const std::string& pusher_mu) {
+    return region_json(checked(scene, "scene"), checked(r, "region"), method,
+                       optional_rational(resolution, "resolution"), parse_rational(pusher_mu, "pusher_mu"));
+  });
+  m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r,
+                               const std::string& method, const std::string& resolution, const std::string& pusher_mu) {
+    const Rational res = parse_rational(resolution, "resolution"), mu = parse_rational(pusher_mu, "pusher_mu");
+    py::gil_scoped_release release;
+    write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"), method, res, mu);
+  });
+  m.def("write_guaranteed_svg",
+        [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const py::object& G,
+           const std::string& theta, const std::optional<std::vector<std::string>>& impulse) {
+          const GuaranteedSet* g = guaranteed_of(G, S);
+          if (!g) throw py::type_error("guaranteed: None is not a fixel object");
+          const Rational t = parse_rational(theta, "theta");
+          std::optional<VectorQ> p;
+          if (impulse) p = exact_vector(*impulse, checked(S, "seating").dof, "impulse");
+          py::gil_scoped_release release;
+          write_guaranteed_svg(path, checked(scene, "scene"), checked(S, "seating"), *g, t, p);
+        });
+  m.def("dump_off", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& dir, const std::string& length,
+                       const py::object& G) {
+    const Rational len = parse_rational(length, "length");
+    const GuaranteedSet* g = guaranteed_of(G, S);
+    py::gil_scoped_release release;
+    return dump_off(checked(scene, "scene"), checked(S, "seating"), dir, len, g);
+  });
+}
+
+}  // namespace fixel::python

@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// Shared helpers of the _fixel module (docs/python.md). Exact numbers cross
+/// the boundary as text ("p/q", fixel::to_string): the Python layer turns
+/// them into fractions.Fraction and back, so no value is ever rounded here.
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fixel/guaranteed.h"
+#include "fixel/rational.h"
+#include "fixel/seating.h"
+
+namespace fixel::python {
+
+namespace py = pybind11;
+
+/// Exact text of every entry.
+std::vector<std::string> texts(const VectorQ& v);
+std::vector<std::vector<std::string>> texts(const std::vector<VectorQ>& vs);
+
+/// Parses exact texts into a vector of length `size` (any length if size < 0).
+/// Throws InputError naming `field` for a wrong length (a mismatched length
+/// would otherwise reach Eigen unchecked) and ParseError for a bad number.
+VectorQ exact_vector(const std::vector<std::string>& text, int size, const std::string& field);
+
+/// *p, or TypeError for None: pybind11 turns None into an empty holder, and
+/// dereferencing it would crash the interpreter.
+template <class T>
+T& checked(const std::shared_ptr<T>& p, const char* name) {
+  if (!p) throw py::type_error(std::string(name) + ": None is not a fixel object");
+  return *p;
+}
+
+/// G's membership test needs S, so the binding keeps both alive together.
+struct GuaranteedHandle {
+  GuaranteedSet G;
+  std::shared_ptr<SeatingSet> S;
+};
+
+/// G of `S` from a Python object (None gives nullptr); InputError if G was
+/// built for another seating set.
+const GuaranteedSet* guaranteed_of(const py::object& g, const std::shared_ptr<SeatingSet>& S);
+
+void bind_scene(py::module_& m);
+void bind_sets(py::module_& m);
+void bind_region(py::module_& m);
+
+}  // namespace fixel::python

@@ -1,0 +1,81 @@
+/// @file
+/// The _fixel extension module: typed exceptions and the exact-text helpers.
+/// The bindings themselves live in bind_*.cpp, one group of concepts each.
+
+#include <exception>
+
+#include "bindings.h"
+#include "fixel/error.h"
+
+namespace fixel::python {
+
+std::vector<std::string> texts(const VectorQ& v) {
+  std::vector<std::string> out;
+  out.reserve(v.size());
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(to_string(v[i]));
+  return out;
+}
+
+std::vector<std::vector<std::string>> texts(const std::vector<VectorQ>& vs) {
+  std::vector<std::vector<std::string>> out;
+  out.reserve(vs.size());
+  for (const auto& v : vs) out.push_back(texts(v));
+  return out;
+}
+
+VectorQ exact_vector(const std::vector<std::string>& text, int size, const std::string& field) {
+  if (size >= 0 && static_cast<int>(text.size()) != size) {
+    std::string shown = "(";
+    for (std::size_t i = 0; i < text.size(); ++i) shown += (i ? ", " : "") + text[i];
+    throw InputError(field, shown + ")",
+                     "has " + std::to_string(text.size()) + " entries but dof " + std::to_string(size) + " needs " +
+                         std::to_string(size));
+  }
+  VectorQ v(static_cast<Eigen::Index>(text.size()));
+  for (std::size_t i = 0; i < text.size(); ++i)
+    v[static_cast<Eigen::Index>(i)] = parse_rational(text[i], field + "[" + std::to_string(i) + "]");
+  return v;
+}
+
+namespace {
+
+// Raises fixel.errors.<name>(message, field, value); the classes are defined
+// in Python so that they carry .field and .value and subclass ValueError.
+void raise(const char* name, const std::string& message, const std::string& field, const std::string& value) {
+  try {
+    py::object cls = py::module_::import("fixel.errors").attr(name);
+    py::object exc = cls(message, field, value);
+    PyErr_SetObject(cls.ptr(), exc.ptr());
+  } catch (py::error_already_set&) {
+    // Used without the fixel package: still an exception, never a crash.
+    PyErr_SetString(PyExc_ValueError, message.c_str());
+  }
+}
+
+void translate(std::exception_ptr p) {
+  try {
+    if (p) std::rethrow_exception(p);
+  } catch (const UnsupportedError& e) {
+    raise("UnsupportedError", e.what(), e.field(), e.value());
+  } catch (const SceneError& e) {
+    raise("SceneError", e.what(), e.field(), e.value());
+  } catch (const ParseError& e) {
+    raise("ParseError", e.what(), e.field(), e.value());
+  } catch (const InputError& e) {
+    raise("InputError", e.what(), e.field(), e.value());
+  } catch (const Error& e) {
+    raise("Error", e.what(), "", "");
+  }
+}
+
+}  // namespace
+}  // namespace fixel::python
+
+PYBIND11_MODULE(_fixel, m) {
+  m.doc() = "fixel's exact C++ core; use the fixel package, not this module";
+  m.attr("__version__") = FIXEL_VERSION;
+  pybind11::register_exception_translator(&fixel::python::translate);
+  fixel::python::bind_scene(m);
+  fixel::python::bind_sets(m);
+  fixel::python::bind_region(m);
+}

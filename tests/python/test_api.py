@@ -1,0 +1,191 @@
+"""The Python API beyond the CLI: round trips, approx views, progress, plots, files."""
+
+import threading
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+
+import fixel
+
+from conftest import SCENE_DIR
+
+
+@pytest.fixture(scope="module")
+def polygon():
+    return fixel.Scene.load(SCENE_DIR / "polygon.json")
+
+
+@pytest.mark.parametrize("name", ["example1.json", "example2.json", "blob.json", "nonunique_part.json"])
+def test_to_dict_round_trip(name):
+    scene = fixel.Scene.load(SCENE_DIR / name)
+    d = scene.to_dict()
+    again = fixel.Scene.from_dict(d)
+    assert again.to_dict() == d
+    assert fixel.seating_set(again).halfspaces == fixel.seating_set(scene).halfspaces
+
+
+def test_from_dict_accepts_fractions_and_ints(example2):
+    d = example2.to_dict()
+    d["fixels"][0]["mu"] = F(1, 10)
+    d["time_step"] = 1
+    d["body"]["velocity"] = np.array([0, 0, 0])
+    assert fixel.seating_set(fixel.Scene.from_dict(d)).apex == fixel.seating_set(example2).apex
+
+
+def test_values_are_fractions(example2):
+    S = fixel.seating_set(example2)
+    assert all(type(x) is F for x in S.apex)
+    assert all(type(x) is F for r in S.rays for x in r)
+    assert all(type(c) is F and all(type(x) is F for x in a) for a, c in S.halfspaces)
+    assert (-1, -1, -1) in S
+
+
+def test_approx_views_are_doubles(example2):
+    a = fixel.seating_set(example2).approx
+    assert a.apex.dtype == np.float64 and a.rays.shape == (3, 3) and a.normals.shape[1] == 3
+
+
+def test_exact_helper():
+    assert fixel.exact(0.1) == F(3602879701896397, 36028797018963968)
+    assert fixel.exact("0.1") == F(1, 10) and fixel.exact(3) == 3
+    with pytest.raises(TypeError):
+        fixel.exact(None)
+
+
+def test_region_objects(polygon):
+    r = fixel.region(polygon, resolution="1/64")
+    assert r.intervals and all(isinstance(i, fixel.RegionInterval) for i in r.intervals)
+    assert all(type(i.u0) is F and type(i.u1) is F for i in r.intervals)
+    # The intervals tile each curve's parameter range exactly, in order.
+    for k in range(polygon.num_curves):
+        mine = [i for i in r.intervals if i.curve == k]
+        lo, hi = polygon.curve_range(k)
+        assert mine[0].u0 == lo and mine[-1].u1 == hi
+        assert all(a.u1 == b.u0 for a, b in zip(mine, mine[1:]))
+    for i in r.intervals:
+        if i.magnitudes is not None:
+            assert i.status == "in" and i.magnitudes.half_line == (i.magnitudes.hi is None)
+    assert isinstance(r.stats, fixel.RegionStats) and type(r.stats.partial_length) is F
+
+
+def test_progress_callback(polygon):
+    events = []
+    blob32 = fixel.Scene.load(SCENE_DIR / "blob32.json")  # ~0.2 s
+    r = fixel.region(blob32, progress=lambda stage, t: events.append((stage, t)))
+    assert events[0] == ("start", 0.0) and events[-1][0] == "done"
+    assert all(stage == "running" for stage, _ in events[1:-1])
+    assert r.stats.seconds < 0.15 or len(events) > 2  # ticks while the core runs
+    fixel.region(polygon, resolution="1/64", progress=True)  # the tqdm bar stays hidden under 1 s
+
+
+def test_guaranteed_set_progress(polygon):
+    events = []
+    G = fixel.guaranteed_set(polygon, progress=lambda stage, t: events.append(stage))
+    assert events[0] == "start" and events[-1] == "done" and G.num_pieces >= 0
+
+
+def test_progress_error_propagates(polygon):
+    with pytest.raises(fixel.UnsupportedError):
+        fixel.region(polygon, push="sustained", progress=True)
+    with pytest.raises(fixel.InputError):
+        fixel.region(polygon, resolution="-1", progress=lambda *a: None)
+
+
+def test_gil_released_during_region():
+    """Another Python thread keeps running while the core computes."""
+    scene = fixel.Scene.load(SCENE_DIR / "blob32.json")  # ~0.2 s
+    ticks, done = [], threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks.append(1)
+            done.wait(0.001)
+
+    t = threading.Thread(target=count)
+    t.start()
+    r = fixel.region(scene)
+    done.set()
+    t.join()
+    assert r.stats.seconds < 0.05 or len(ticks) > 10
+
+
+def test_guaranteed_region(polygon):
+    r = fixel.region(polygon, resolution="1/16", guaranteed=True)
+    assert r.intervals
+
+
+def test_files(tmp_path, polygon):
+    r = fixel.region(polygon, resolution="1/64")
+    fixel.to_svg(tmp_path / "r.svg", r)
+    assert (tmp_path / "r.svg").read_text().startswith("<svg") or "<svg" in (tmp_path / "r.svg").read_text()
+    paths = fixel.to_off(polygon, r.seating, tmp_path / "off", length=2)
+    assert any(p.endswith("seating_set.off") for p in paths)
+    G = fixel.guaranteed_set(polygon, r.seating)
+    paths = fixel.to_off(polygon, r.seating, tmp_path / "offg", guaranteed=G)
+    assert any("guaranteed_" in p for p in paths) or G.num_pieces == 0
+    fixel.to_svg(tmp_path / "g.svg", G, impulse=G.seating.apex)
+    assert "<svg" in (tmp_path / "g.svg").read_text()
+    assert fixel.__version__.count(".") == 2
+    other = fixel.seating_set(polygon)
+    with pytest.raises(fixel.InputError):
+        fixel.to_off(polygon, other, tmp_path / "bad", guaranteed=G)
+
+
+def test_plots(polygon):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    import fixel.plot
+
+    r = fixel.region(polygon, resolution="1/64")
+    fig, (a, b) = plt.subplots(1, 2)
+    assert fixel.plot.region(a, polygon, r) is a
+    assert fixel.plot.wrench_sphere(b, polygon, r) is b
+    assert a.lines and b.lines
+    plt.close(fig)
+
+
+def test_tqdm_bar_after_one_second(capsys):
+    import time
+
+    from fixel._region import _run
+
+    assert _run(lambda: time.sleep(1.3) or 7, True, "fixel.region") == 7
+    assert "fixel.region" in capsys.readouterr().err
+    assert _run(lambda: 8, True, "fixel.region") == 8
+    assert "fixel.region" not in capsys.readouterr().err  # quick runs show nothing
+
+
+def test_point_mass_scene():
+    scene = fixel.Scene.load(SCENE_DIR / "example1.json")
+    S = fixel.seating_set(scene)
+    assert scene.dof == 2 and len(S.apex) == 2
+    assert S.contains(S.apex)
+    with pytest.raises(fixel.InputError):
+        S.contains((0, 0, 0))
+
+
+def test_concurrent_calls_agree():
+    """The core runs without the GIL; threads must not disturb each other."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    scenes = [fixel.Scene.load(SCENE_DIR / n) for n in ("polygon.json", "blob.json", "fig6.json")] * 2
+
+    def intervals(s):
+        return [(i.u0, i.u1, i.status) for i in fixel.region(s, resolution="1/128").intervals]
+
+    serial = [intervals(s) for s in scenes]
+    with ThreadPoolExecutor(4) as pool:
+        parallel = list(pool.map(intervals, scenes))
+    assert parallel == serial
+
+
+def test_pickle_round_trip(example2):
+    import pickle
+
+    S = fixel.seating_set(example2)
+    T = pickle.loads(pickle.dumps(S))
+    assert T.halfspaces == S.halfspaces and T.scene.to_dict() == example2.to_dict()

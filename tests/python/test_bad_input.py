@@ -1,0 +1,188 @@
+"""Every documented bad input raises the documented exception (docs/python.md)."""
+
+import json
+from decimal import Decimal
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+
+import fixel
+
+from conftest import SCENE_DIR, cli_error
+
+P = (-1, -1, -1)
+
+
+@pytest.fixture(scope="module")
+def S(example2):
+    return fixel.seating_set(example2)
+
+
+@pytest.mark.parametrize(
+    "bad, exc",
+    [
+        ((-1.0, -1, -1), TypeError),  # a float is not exact
+        ((np.float64(-1), -1, -1), TypeError),
+        (np.array([-1.0, -1.0, -1.0]), TypeError),  # numpy float array
+        (np.array([-1, -1, -1], dtype=np.float32), TypeError),
+        (None, TypeError),
+        ((None, -1, -1), TypeError),
+        ((True, -1, -1), TypeError),
+        ("-1,-1,-1", TypeError),  # a string is not a vector
+        ((1 + 2j, 0, 0), TypeError),
+        (-1, TypeError),  # a number is not a vector
+        ((-1, -1), fixel.InputError),  # wrong shape for dof 3
+        ((-1, -1, -1, -1), fixel.InputError),
+        (np.zeros((3, 1), dtype=int), fixel.InputError),
+        (("-1", "x", "-1"), fixel.ParseError),
+        (("1/0", "-1", "-1"), fixel.ParseError),
+        ((10**5000, 0, 0), fixel.InputError),  # beyond Python's int-to-text limit
+    ],
+)
+def test_contains_rejects(S, bad, exc):
+    with pytest.raises(exc):
+        S.contains(bad)
+
+
+def test_float_message_says_why(S):
+    with pytest.raises(TypeError, match="not exact"):
+        S.contains((0.1, 0, 0))
+    with pytest.raises(TypeError, match="fixel.exact"):
+        S.contains((0.1, 0, 0))
+
+
+def test_exact_inputs_accepted(S):
+    for p in [(F(-1), -1, "-1"), ("-1", "-1.0", "-10/10"), np.array([-1, -1, -1]), (Decimal("-1"), -1, -1),
+              np.array([F(-1), F(-1), F(-1)], dtype=object), [np.int64(-1)] * 3]:  # fmt: skip
+        assert S.contains(p)
+
+
+def test_wrong_shape_error_carries_field(S):
+    with pytest.raises(fixel.InputError) as e:
+        S.contains((-1, -1))
+    assert e.value.field == "p" and e.value.value == "(-1, -1)"
+    assert isinstance(e.value, ValueError) and isinstance(e.value, fixel.Error)
+
+
+def test_parse_error_names_entry(S):
+    with pytest.raises(fixel.ParseError) as e:
+        S.contains(("-1", "0.1.2", "-1"))
+    assert e.value.field == "p[1]" and e.value.value.strip('"') == "0.1.2"
+
+
+def bad_scene(tmp_path, **fixel1):
+    d = json.loads((SCENE_DIR / "example2.json").read_text())
+    d["fixels"][1].update(fixel1)
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(d))
+    return d, path
+
+
+@pytest.mark.parametrize(
+    "change, exc, field",
+    [
+        ({"normal": ["3/5", "3/5"]}, fixel.SceneError, "fixels[1].normal"),
+        ({"mu": "-1"}, fixel.SceneError, "fixels[1].mu"),
+        ({"gap": "abc"}, fixel.ParseError, "fixels[1].gap"),
+        ({"colour": "red"}, fixel.InputError, None),
+    ],
+)
+def test_scene_errors_match_cli(tmp_path, change, exc, field):
+    d, path = bad_scene(tmp_path, **change)
+    message = cli_error("seat", path)
+    with pytest.raises(exc) as from_file:
+        fixel.Scene.load(path)
+    assert str(from_file.value) == message
+    with pytest.raises(exc) as from_dict:
+        fixel.Scene.from_dict(d, source=str(path))
+    assert str(from_dict.value) == message
+    if field:
+        assert from_file.value.field == field
+
+
+def test_scene_errors_other(tmp_path):
+    with pytest.raises(fixel.InputError) as e:
+        fixel.Scene.load(tmp_path / "missing.json")
+    assert str(e.value) == cli_error("seat", tmp_path / "missing.json")
+    (tmp_path / "broken.json").write_text("{")
+    with pytest.raises(fixel.ParseError):
+        fixel.Scene.load(tmp_path / "broken.json")
+    d = json.loads((SCENE_DIR / "example2.json").read_text())
+    d["fixels"][0]["mu"] = 0.1
+    with pytest.raises(TypeError, match=r"fixels\[0\]\.mu.*not exact"):
+        fixel.Scene.from_dict(d)
+    with pytest.raises(TypeError):
+        fixel.Scene.from_dict(None)
+    with pytest.raises(TypeError):
+        fixel.Scene.load(None)
+    with pytest.raises(TypeError):
+        fixel.seating_set("example2.json")
+
+
+def test_singular_scene(tmp_path):
+    d = json.loads((SCENE_DIR / "example2.json").read_text())
+    d["fixels"][2] = dict(d["fixels"][1])
+    with pytest.raises(fixel.SceneError):
+        fixel.Scene.from_dict(d)
+
+
+def test_region_bad_options():
+    scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    with pytest.raises(fixel.UnsupportedError) as e:
+        fixel.region(scene, push="sustained")
+    assert isinstance(e.value, NotImplementedError) and e.value.field == "push"
+    with pytest.raises(fixel.InputError):
+        fixel.region(scene, push="shove")
+    with pytest.raises(fixel.InputError):
+        fixel.region(scene, cone="round")
+    with pytest.raises(fixel.InputError):
+        fixel.region(scene, resolution=0)
+    with pytest.raises(TypeError):
+        fixel.region(scene, resolution=0.01)
+    with pytest.raises(fixel.InputError):
+        fixel.region(scene, pusher_mu=-1)
+    with pytest.raises(TypeError):
+        fixel.region(scene, pusher_mu=0.1)
+    with pytest.raises(TypeError):
+        fixel.region(scene, progress="yes")
+
+
+def test_simulate_and_solutions_bad_input(example2):
+    with pytest.raises(fixel.InputError):
+        fixel.simulate(example2, P, steps=0)
+    with pytest.raises(TypeError):
+        fixel.simulate(example2, P, steps=1.0)
+    with pytest.raises(fixel.InputError):
+        fixel.simulate(example2, (-1, -1))
+    with pytest.raises(TypeError):
+        fixel.solutions(example2, np.array([-1.0, -1.0, -1.0]))
+    with pytest.raises(fixel.InputError):
+        fixel.solutions(example2, (-1, -1))
+    with pytest.raises(TypeError):
+        fixel.solutions(example2, None)
+
+
+def test_unsupported_eq27_with_sticking_contact(example2):
+    # Gaps (1/10, 0, 0): ν⁺ is along fixel 0's normal, so fixel 0 sticks.
+    d = example2.to_dict()
+    d["fixels"][1]["gap"] = d["fixels"][2]["gap"] = "0"
+    S = fixel.seating_set(fixel.Scene.from_dict(d))
+    assert S.sliding[0] == 0 and len(S.rays) == 4
+    with pytest.raises(fixel.UnsupportedError) as e:
+        S.eq27((0, 0, 0))
+    assert isinstance(e.value, NotImplementedError)
+
+
+def test_none_never_crashes(example2, tmp_path):
+    for call in [
+        lambda: fixel.seating_set(None),
+        lambda: fixel.guaranteed_set(example2, seating="S"),
+        lambda: fixel.to_off(example2, None, tmp_path),
+        lambda: fixel.to_svg(tmp_path / "x.svg", None),
+        lambda: fixel._fixel.seating_set(None),  # the raw module too
+        lambda: fixel._fixel.guaranteed_set(example2._impl, None),
+        lambda: fixel._fixel.compute_region(None, None, "1/8", "tight", None, None),
+    ]:
+        with pytest.raises(TypeError):
+            call()
