@@ -24,7 +24,7 @@ __all__ = [
     "Error", "InputError", "ParseError", "SceneError", "UnsupportedError",
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
-    "to_off", "to_svg",
+    "to_off", "to_svg", "SustainedSet", "sustained_set",
 ]  # fmt: skip
 
 
@@ -251,5 +251,38 @@ def to_svg(path, result, theta=None, impulse=None):
     )  # fmt: skip
 
 
-# Coming (other branches): sustained_set(scene) and push(scene, wrench=...).
+class SustainedSet:
+    """J: the held wrenches (world frame: force through the centre of mass,
+    moment about it) that drive the part into its seat and keep it there,
+    judged at the exact seated pose q* (docs/theory.md §10)."""
+
+    def __init__(self, scene, impl):
+        self.scene = scene
+        self._impl = impl
+        self.empty = impl.empty
+        self.empty_reason = impl.empty_reason
+        self.strongly_stable = impl.strongly_stable
+        self.pieces_decided = impl.pieces_decided
+        self.mu = fracs(impl.mu)
+        doc = json.loads(_fixel.sustained_json(scene._impl, impl))
+        #: The "seated_pose" object of ``fixel seat --sustained --json``.
+        self.seated_pose = doc["seated_pose"]
+        #: The "sustained" object: cone, jam_cones, pieces (exact strings "a+b*sqrt(d)").
+        self.cones = doc["sustained"]
+
+    def why_not(self, w):
+        """"" when w is in J, else the reason (it can escape, or two fixels hold it)."""
+        return self._impl.why_not(vector(w, "wrench"))
+
+    def contains(self, w):
+        return self.why_not(w) == ""
+
+    def __contains__(self, w):
+        return self.contains(w)
+
+
+def sustained_set(scene):
+    """The sustained-push set J of a scene (``fixel seat --sustained``)."""
+    scene = _scene(scene)
+    return SustainedSet(scene, _fixel.sustained_set(scene._impl))
 # Each is a C++ call in python/src plus a wrapper here, following seating_set.

@@ -186,23 +186,31 @@ def region(
 
     ``resolution``: stop splitting at this curve-parameter width (exact).
     ``cone``: "tight" or "paper". ``pusher_mu``: overrides the scene's.
-    ``push``: "step" (one impulse); "sustained" is coming (UnsupportedError).
+    ``push``: "step" (one impulse, against S) or "sustained" (a held wrench,
+    against the sustained-push set J at the seated pose; ``seating`` is then
+    the SustainedSet and IN intervals carry no magnitudes).
     ``guaranteed``: True, or a GuaranteedSet, classifies against G instead of S.
     ``progress``: None, True (tqdm bar after ~1 s) or callable(stage, elapsed).
     """
     from . import SeatingSet, _expect, _scene, seating_set
 
     scene = _scene(scene)
-    if push == "sustained":
-        raise UnsupportedError.make(
-            "push", "sustained", "is not available yet: the sustained-push set is being added; use push='step'"
-        )
-    if push != "step":
-        raise InputError.make("push", repr(push), "is not a push model (step; sustained is coming)")
+    if push not in ("step", "sustained"):
+        raise InputError.make("push", repr(push), "is not a push model (step or sustained)")
     if cone not in ("tight", "paper"):
         raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
     res = text(resolution, "resolution")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
+    if push == "sustained":
+        from . import sustained_set
+
+        if guaranteed not in (None, False):
+            raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
+        J = sustained_set(scene)
+        impl = _run(
+            lambda: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu), progress, "fixel.region"
+        )
+        return _region_of(scene, J, impl, cone, frac(res), None if mu is None else frac(mu))
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = _run(lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g), progress, "fixel.region")

@@ -49,5 +49,6 @@ const GuaranteedSet* guaranteed_of(const py::object& g, const std::shared_ptr<Se
 void bind_scene(py::module_& m);
 void bind_sets(py::module_& m);
 void bind_region(py::module_& m);
+void bind_sustained(py::module_& m);
 
 }  // namespace fixel::python

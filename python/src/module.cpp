@@ -78,4 +78,5 @@ PYBIND11_MODULE(_fixel, m) {
   fixel::python::bind_scene(m);
   fixel::python::bind_sets(m);
   fixel::python::bind_region(m);
+  fixel::python::bind_sustained(m);
 }

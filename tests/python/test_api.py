@@ -8,7 +8,9 @@ import pytest
 
 import fixel
 
-from conftest import SCENE_DIR
+import json
+
+from conftest import SCENE_DIR, run_cli
 
 
 @pytest.fixture(scope="module")
@@ -86,8 +88,8 @@ def test_guaranteed_set_progress(polygon):
 
 
 def test_progress_error_propagates(polygon):
-    with pytest.raises(fixel.UnsupportedError):
-        fixel.region(polygon, push="sustained", progress=True)
+    with pytest.raises(fixel.InputError):
+        fixel.region(polygon, resolution="0", push="sustained", progress=True)
     with pytest.raises(fixel.InputError):
         fixel.region(polygon, resolution="-1", progress=lambda *a: None)
 
@@ -189,3 +191,32 @@ def test_pickle_round_trip(example2):
     S = fixel.seating_set(example2)
     T = pickle.loads(pickle.dumps(S))
     assert T.halfspaces == S.halfspaces and T.scene.to_dict() == example2.to_dict()
+
+
+def test_sustained_set_agrees_with_the_cli_and_decides_exactly():
+    path = SCENE_DIR / "polygon.json"
+    scene = fixel.Scene.load(path)
+    J = fixel.sustained_set(scene)
+    assert not J.empty and J.strongly_stable
+    assert list(J.mu) == [F(1, 10)] * 3
+    code, out, err = run_cli("seat", path, "--sustained", "--json")
+    assert code == 0, err
+    cli = json.loads(out)
+    assert J.cones == cli["sustained"]
+    assert J.seated_pose["algebraic"] == cli["seated_pose"]["algebraic"]
+    assert J.contains([-1, -1, 0])
+    assert "escape" in J.why_not([1, 0, 0])
+    with pytest.raises(TypeError):
+        J.contains([-1.0, -1, 0])
+
+
+def test_sustained_region_matches_the_cli():
+    path = SCENE_DIR / "polygon.json"
+    r = fixel.region(fixel.Scene.load(path), resolution="1/256", push="sustained")
+    code, out, err = run_cli("region", path, "--push", "sustained", "--resolution", "1/256", "--json")
+    assert code == 0, err
+    cli = json.loads(out)
+    assert [(i.curve, i.u0, i.u1, i.status) for i in r.intervals] == [
+        (d["curve"], F(d["u0"]), F(d["u1"]), d["status"]) for d in cli["intervals"]
+    ]
+    assert any(i.status == "in" for i in r.intervals)

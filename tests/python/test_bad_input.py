@@ -129,9 +129,9 @@ def test_singular_scene(tmp_path):
 
 def test_region_bad_options():
     scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
-    with pytest.raises(fixel.UnsupportedError) as e:
-        fixel.region(scene, push="sustained")
-    assert isinstance(e.value, NotImplementedError) and e.value.field == "push"
+    with pytest.raises(fixel.InputError) as e:
+        fixel.region(scene, push="sustained", guaranteed=True)
+    assert e.value.field == "guaranteed"
     with pytest.raises(fixel.InputError):
         fixel.region(scene, push="shove")
     with pytest.raises(fixel.InputError):

@@ -1,0 +1,59 @@
+/// @file
+/// The sustained-push set J at the seated pose (docs/theory.md §10) and its
+/// pushing region. Exact values cross as text; the JSON document of
+/// `fixel seat --sustained --json` carries the cones and the seated pose.
+
+#include <memory>
+#include <optional>
+
+#include "bindings.h"
+#include "fixel/io.h"
+#include "fixel/region.h"
+#include "fixel/region_target.h"
+#include "fixel/sustained.h"
+#include "fixel/svg.h"
+
+namespace fixel::python {
+
+using ScenePtr = std::shared_ptr<Scene>;
+using SustainedPtr = std::shared_ptr<SustainedSet>;
+
+void bind_sustained(py::module_& m) {
+  py::class_<SustainedSet, SustainedPtr>(m, "SustainedSet")
+      .def_readonly("empty", &SustainedSet::empty)
+      .def_readonly("empty_reason", &SustainedSet::empty_reason)
+      .def_readonly("strongly_stable", &SustainedSet::strongly_stable)
+      .def_readonly("pieces_decided", &SustainedSet::pieces_decided)
+      .def_property_readonly("mu",
+                             [](const SustainedSet& J) {
+                               std::vector<std::string> out;
+                               for (const auto& m : J.mu) out.push_back(to_string(m));
+                               return out;
+                             })
+      .def("why_not", [](const SustainedSet& J, const std::vector<std::string>& w) {
+        return J.why_not(exact_vector(w, 3, "wrench"));
+      });
+  m.def("sustained_set", [](const ScenePtr& scene) {
+    const Scene& s = checked(scene, "scene");
+    py::gil_scoped_release release;
+    return std::make_shared<SustainedSet>(sustained_set(s));
+  });
+  m.def("sustained_json", [](const ScenePtr& scene, const SustainedPtr& J) {
+    return sustained_json(checked(scene, "scene"), checked(J, "sustained"), std::nullopt);
+  });
+  m.def("compute_region_sustained", [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution,
+                                       const std::string& cone, const std::optional<std::string>& pusher_mu) {
+    RegionOptions options;
+    options.resolution = parse_rational(resolution, "resolution");
+    if (cone != "tight" && cone != "paper") throw InputError("cone", cone, "is not a cone method (tight or paper)");
+    options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+    if (pusher_mu) options.pusher_mu = parse_rational(*pusher_mu, "pusher_mu");
+    const Scene& s = checked(scene, "scene");
+    const SustainedSet& j = checked(J, "sustained");
+    py::gil_scoped_release release;
+    const auto target = sustained_target(j);
+    return std::make_shared<Region>(compute_region(s, *target, options));
+  });
+}
+
+}  // namespace fixel::python
