@@ -9,7 +9,6 @@ namespace fixel {
 namespace {
 
 Vec2 lerp(const Vec2& a, const Vec2& b, const Rational& t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
-Vec2 sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 std::string text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
 

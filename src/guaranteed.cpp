@@ -45,42 +45,6 @@ Polyhedron non_seating_impulses(const Scene& scene, const std::vector<ContactMod
 
 }  // namespace
 
-namespace {
-
-Magnitudes make_interval(const Rational& lo, bool lo_closed, const std::optional<Rational>& hi, bool hi_closed) {
-  Magnitudes m;
-  m.lo = lo;
-  m.lo_closed = lo_closed;
-  m.hi = hi;
-  m.hi_closed = hi.has_value() && hi_closed;
-  m.empty = hi && (*hi < lo || (*hi == lo && !(lo_closed && hi_closed)));
-  return m;
-}
-
-// A \ B for intervals: at most two pieces, with complementary closedness.
-std::vector<Magnitudes> minus(const Magnitudes& A, const Magnitudes& B) {
-  if (A.empty) return {};
-  if (B.empty) return {A};
-  std::vector<Magnitudes> out;
-  const Magnitudes left = make_interval(A.lo, A.lo_closed, B.lo, !B.lo_closed);
-  if (!left.empty) {
-    // Clip to A's upper end.
-    Magnitudes l = left;
-    if (A.hi && (*A.hi < *l.hi || (*A.hi == *l.hi && !A.hi_closed)))
-      l = make_interval(A.lo, A.lo_closed, A.hi, A.hi_closed);
-    if (!l.empty) out.push_back(l);
-  }
-  if (B.hi) {
-    Magnitudes right = make_interval(*B.hi, !B.hi_closed, A.hi, A.hi_closed);
-    if (right.lo < A.lo || (right.lo == A.lo && !A.lo_closed))
-      right = make_interval(A.lo, A.lo_closed, A.hi, A.hi_closed);
-    if (!right.empty) out.push_back(right);
-  }
-  return out;
-}
-
-}  // namespace
-
 std::vector<Magnitudes> ray_magnitudes(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0,
                                        const VectorQ& g) {
   std::vector<Magnitudes> parts;
@@ -91,7 +55,7 @@ std::vector<Magnitudes> ray_magnitudes(const GuaranteedSet& G, const SeatingSet&
     if (cut.empty) continue;
     std::vector<Magnitudes> next;
     for (const auto& part : parts)
-      for (const auto& rest : minus(part, cut)) next.push_back(rest);
+      for (const auto& rest : part.subtract(cut)) next.push_back(rest);
     parts = std::move(next);
   }
   std::sort(parts.begin(), parts.end(), [](const Magnitudes& a, const Magnitudes& b) { return a.lo < b.lo; });

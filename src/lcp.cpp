@@ -1,16 +1,9 @@
 #include "fixel/lcp.h"
 
 #include "fixel/error.h"
+#include "fixel/internal/exact_lu.h"
 
 namespace fixel {
-
-VectorQ contact_wrench(const Vec2& r_A, const Vec2& d_A, int dof) {
-  VectorQ w(dof);
-  w[0] = d_A.x;
-  w[1] = d_A.y;
-  if (dof == 3) w[2] = r_A.x * d_A.y - r_A.y * d_A.x;  // r ⊗ d
-  return w;
-}
 
 MatrixQ normal_wrench_matrix(const Scene& scene) {
   const int dof = scene.body.dof, nc = scene.num_contacts();
@@ -19,7 +12,31 @@ MatrixQ normal_wrench_matrix(const Scene& scene) {
   return Wn;
 }
 
+namespace {
+
+std::string pair_text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
+
+}  // namespace
+
+void require_determined_fixture(const Scene& scene) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  if (nc != dof)
+    throw SceneError(
+        "fixels", std::to_string(nc) + " fixels",
+        "but dof is " + std::to_string(dof) + ": the seating analysis needs exactly dof fixels (n_c == dof)");
+  // Name the first fixel whose normal wrench lies in the span of the earlier
+  // ones, so that the message points at something the user can change.
+  const MatrixQ Wn = normal_wrench_matrix(scene);
+  if (internal::exact_lu(Wn).isInvertible()) return;
+  for (int j = 1; j <= nc; ++j)
+    if (internal::exact_lu(Wn.leftCols(j)).rank() < j)
+      throw SceneError("fixels[" + std::to_string(j - 1) + "]", pair_text(scene.fixels[j - 1].p_AoF_A),
+                       "makes W_n singular: its normal wrench is a combination of the earlier fixels', "
+                       "so the fixture does not determine the motion");
+}
+
 ContactMatrices contact_matrices(const Scene& scene) {
+  require_determined_fixture(scene);
   const int dof = scene.body.dof, nc = scene.num_contacts();
   // The one-step model is not monotone in μ: an interval has no single
   // robust answer there (docs/theory.md §10), only in the sustained set.

@@ -247,7 +247,7 @@ Magnitudes ray_magnitudes(const Polyhedron& P, const VectorQ& b0, const VectorQ&
   for (const auto& h : P.closed) apply(h, false);
   for (const auto& h : P.strict) apply(h, true);
   if (m.empty) return Magnitudes{};
-  if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) return Magnitudes{};
+  if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) return Magnitudes{};
   return m;
 }
 

@@ -12,11 +12,6 @@ namespace fixel {
 
 namespace {
 
-Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-Rational dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
-bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
-Vec2 sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
-
 std::vector<EdgeFamily> families(const Rational& mu) {
   if (mu == 0) return {EdgeFamily::kNormal};
   return {EdgeFamily::kMinus, EdgeFamily::kPlus};
@@ -77,7 +72,7 @@ Magnitudes common_magnitudes(const std::vector<VectorQ>& gens, const std::vector
       m.hi_closed = m.hi_closed && T[j].hi_closed;
     }
   }
-  if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) return Magnitudes{};
+  if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) return Magnitudes{};
   return m;
 }
 
@@ -192,7 +187,7 @@ class GuaranteedTarget final : public RegionTarget {
           Magnitudes m = t;
           m.lo = t.lo * internal::sqrt_upper(d2);
           if (t.hi) m.hi = *t.hi * internal::sqrt_lower(d2);
-          if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) continue;
+          if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) continue;
           set->push_back(m);
         }
       }
@@ -299,28 +294,13 @@ void subdivide(Context& ctx, const BezierPiece& seg, int depth, std::vector<Regi
   subdivide(ctx, halves.second, depth + 1, out);
 }
 
-Magnitudes intersect(const Magnitudes& a, const Magnitudes& b) {
-  if (a.empty || b.empty) return Magnitudes{};
-  Magnitudes m = a;
-  if (b.lo > m.lo || (b.lo == m.lo && !b.lo_closed)) {
-    m.lo_closed = b.lo == m.lo ? (m.lo_closed && b.lo_closed) : b.lo_closed;
-    m.lo = b.lo;
-  }
-  if (b.hi && (!m.hi || *b.hi < *m.hi || (*b.hi == *m.hi && !b.hi_closed))) {
-    m.hi_closed = m.hi && *b.hi == *m.hi ? (m.hi_closed && b.hi_closed) : b.hi_closed;
-    m.hi = b.hi;
-  }
-  if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) return Magnitudes{};
-  return m;
-}
-
 std::vector<RegionInterval> merge(const std::vector<RegionInterval>& in) {
   std::vector<RegionInterval> out;
   for (const auto& r : in) {
     if (!out.empty() && out.back().curve == r.curve && out.back().status == r.status && out.back().u1 == r.u0) {
       out.back().u1 = r.u1;
       out.back().half_line = out.back().half_line && r.half_line;
-      out.back().magnitudes = intersect(out.back().magnitudes, r.magnitudes);
+      out.back().magnitudes = out.back().magnitudes.intersect(r.magnitudes);
       if (!out.back().magnitude_set.empty() && !r.magnitude_set.empty() && !out.back().magnitudes.empty)
         out.back().magnitude_set = {out.back().magnitudes};  // certified pieces intersect to one interval
       else
@@ -384,19 +364,6 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>&
 
 }  // namespace
 
-bool Magnitudes::contains(const Rational& x) const {
-  if (empty) return false;
-  if (x < lo || (x == lo && !lo_closed)) return false;
-  if (hi && (x > *hi || (x == *hi && !hi_closed))) return false;
-  return true;
-}
-
-std::string Magnitudes::describe() const {
-  if (empty) return "empty";
-  return std::string(lo_closed ? "[" : "(") + to_string(lo) + ", " + (hi ? to_string(*hi) : "inf") +
-         (hi && hi_closed ? "]" : ")");
-}
-
 std::string to_string(RegionStatus status) {
   switch (status) {
     case RegionStatus::kIn:
@@ -407,33 +374,6 @@ std::string to_string(RegionStatus status) {
       return "partial";
   }
   return "?";
-}
-
-Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g) {
-  Magnitudes m;
-  m.empty = false;
-  m.lo = 0;
-  m.lo_closed = false;  // τ > 0
-  for (const auto& h : S.halfspaces) {
-    const Rational alpha = h.a.dot(g), beta = h.c - h.a.dot(b0);  // need τ α >= β
-    if (alpha > 0) {
-      const Rational v = beta / alpha;
-      if (v > m.lo) {
-        m.lo = v;
-        m.lo_closed = true;
-      }
-    } else if (alpha < 0) {
-      const Rational v = beta / alpha;
-      if (!m.hi || v < *m.hi) {
-        m.hi = v;
-        m.hi_closed = true;
-      }
-    } else if (beta > 0) {
-      return Magnitudes{};
-    }
-  }
-  if (m.hi && (*m.hi < m.lo || (*m.hi == m.lo && !(m.lo_closed && m.hi_closed)))) return Magnitudes{};
-  return m;
 }
 
 std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0) {

@@ -6,9 +6,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
-#include "fixel/internal/exact_lu.h"
 #include "fixel/internal/json_exact.h"
-#include "fixel/lcp.h"
 
 namespace fixel {
 
@@ -132,19 +130,6 @@ int parse_dof(const json& v) {
   return s == "2" ? 2 : 3;
 }
 
-// Names the first fixel whose normal wrench lies in the span of the earlier
-// ones, so that the message points at something the user can change.
-void check_fixture_determines_motion(const Scene& scene) {
-  const MatrixQ Wn = normal_wrench_matrix(scene);
-  if (internal::exact_lu(Wn).isInvertible()) return;
-  for (int j = 1; j <= scene.num_contacts(); ++j) {
-    if (internal::exact_lu(Wn.leftCols(j)).rank() < j)
-      throw SceneError("fixels[" + std::to_string(j - 1) + "]", pair_text(scene.fixels[j - 1].p_AoF_A),
-                       "makes W_n singular: its normal wrench is a combination of the earlier fixels', "
-                       "so the fixture does not determine the motion");
-  }
-}
-
 }  // namespace
 
 Vec2 Scene::lever_arm(int i) const {
@@ -222,10 +207,6 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
     require_nonnegative(fx.gap, path + ".gap");
     scene.fixels.push_back(fx);
   }
-  if (scene.num_contacts() != b.dof)
-    throw SceneError(
-        "fixels", std::to_string(scene.num_contacts()) + " fixels",
-        "but dof is " + std::to_string(b.dof) + ": the seating analysis needs exactly dof fixels (n_c == dof)");
 
   scene.pusher_mu = Rational(0);
   if (root.contains("pusher")) {
@@ -240,7 +221,6 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
           ? vector(root.at("background_impulse"), "background_impulse", b.dof, "dof " + std::to_string(b.dof))
           : VectorQ::Zero(b.dof);
 
-  check_fixture_determines_motion(scene);
   return scene;
 }
 

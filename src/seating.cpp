@@ -95,4 +95,31 @@ VectorQ SeatingSystem::y(const VectorQ& p_ext) const { return K_inv * (P * p_ext
 VectorQ SeatingSystem::linear_part(const VectorQ& p_ext) const { return K_inv * (P * p_ext); }
 VectorQ SeatingSystem::threshold() const { return -(K_inv * a); }
 
+Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g) {
+  Magnitudes m;
+  m.empty = false;
+  m.lo = 0;
+  m.lo_closed = false;  // τ > 0
+  for (const auto& h : S.halfspaces) {
+    const Rational alpha = h.a.dot(g), beta = h.c - h.a.dot(b0);  // need τ α >= β
+    if (alpha > 0) {
+      const Rational v = beta / alpha;
+      if (v > m.lo) {
+        m.lo = v;
+        m.lo_closed = true;
+      }
+    } else if (alpha < 0) {
+      const Rational v = beta / alpha;
+      if (!m.hi || v < *m.hi) {
+        m.hi = v;
+        m.hi_closed = true;
+      }
+    } else if (beta > 0) {
+      return Magnitudes{};
+    }
+  }
+  if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) return Magnitudes{};
+  return m;
+}
+
 }  // namespace fixel

@@ -15,21 +15,12 @@ namespace {
 
 using Kernel = CGAL::Simple_cartesian<Rational>;  // exact hull predicates
 
-Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-Rational dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
 Vec2 rot90(const Vec2& v) { return {-v.y, v.x}; }
-bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
 
 VectorQ wrench(const Vec2& d, const Rational& moment) {
   VectorQ w(3);
   w << d.x, d.y, moment;
   return w;
-}
-
-// d is in cone(a, b) for a pointed planar cone (a to b counter-clockwise).
-bool in_planar_cone(const Vec2& d, const Vec2& a, const Vec2& b) {
-  if (cross(a, b) == 0) return cross(a, d) == 0 && dot(a, d) > 0;  // a single ray
-  return cross(a, d) >= 0 && cross(d, b) >= 0;
 }
 
 }  // namespace
@@ -53,7 +44,7 @@ bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
   // Anti-parallel legs inside (span exactly π) are caught by the test above
   // only through the extremes; check every pair against the extremes too.
   for (const auto& w : v)
-    if (!in_planar_cone(w, first, last) && !(c == 0 && cross(first, w) == 0 && dot(first, w) > 0)) return false;
+    if (!in_cone(w, first, last) && !(c == 0 && cross(first, w) == 0 && dot(first, w) > 0)) return false;
   return true;
 }
 
@@ -110,8 +101,8 @@ std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec
     // The extra ⊥ angle: X = r ⊗ d is ±|r| where d ⊥ r.
     if (!is_zero(r)) {
       const Rational bound = internal::sqrt_upper(dot(r, r));
-      if (in_planar_cone(rot90(r), us, ue)) X.push_back(bound);
-      if (in_planar_cone(Vec2{-rot90(r).x, -rot90(r).y}, us, ue)) X.push_back(-bound);
+      if (in_cone(rot90(r), us, ue)) X.push_back(bound);
+      if (in_cone(Vec2{-rot90(r).x, -rot90(r).y}, us, ue)) X.push_back(-bound);
     }
   }
   Rational xmin = X[0], xmax = X[0];

@@ -13,8 +13,6 @@
 namespace fixel {
 namespace {
 
-Rational cross(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
-Vec2 sub(const Vec2& a, const Vec2& b) { return {a.x - b.x, a.y - b.y}; }
 
 // The exact contact wrench (d, r ⊗ d) at local parameter s of a segment.
 VectorQ exact_wrench(const BezierPiece& seg, const Rational& s, const Vec2& com, const Vec2& d) {

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "fixel/geometry.h"
 #include "fixel/rational.h"
-#include "fixel/scene.h"
 
 namespace fixel {
 

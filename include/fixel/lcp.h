@@ -9,14 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "fixel/geometry.h"
 #include "fixel/rational.h"
 #include "fixel/scene.h"
 
 namespace fixel {
 
-/// Wrench (force, moment) of a unit push along direction d_A applied at lever
-/// arm r_A: (d_x, d_y, r ⊗ d) for dof 3 and (d_x, d_y) for dof 2.
-VectorQ contact_wrench(const Vec2& r_A, const Vec2& d_A, int dof);
+/// The one-step analyses need n_c == dof fixels with W_n nonsingular: throws
+/// SceneError naming the first fixel that breaks this. (A scene loads
+/// without it, e.g. a part with no fixels for fixture design.)
+void require_determined_fixture(const Scene& scene);
 
 /// W_n (dof × n_c): column i is the normal wrench of fixel i.
 MatrixQ normal_wrench_matrix(const Scene& scene);

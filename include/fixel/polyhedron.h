@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "fixel/cone.h"
+#include "fixel/interval.h"
 #include "fixel/rational.h"
-#include "fixel/region.h"
 
 namespace fixel {
 

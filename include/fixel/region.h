@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixel/curve.h"
+#include "fixel/interval.h"
 #include "fixel/rational.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
@@ -17,25 +18,6 @@ namespace fixel {
 
 struct GuaranteedSet;
 class RegionTarget;
-
-/// An interval of positive reals with optional infinite upper end.
-struct Magnitudes {
-  bool empty = true;
-  Rational lo;  ///< Lower end (>= 0).
-  bool lo_closed = false;
-  std::optional<Rational> hi;  ///< Upper end; std::nullopt means +∞.
-  bool hi_closed = false;
-  /// Unbounded above (and not empty).
-  bool half_line() const { return !empty && !hi.has_value(); }
-  /// Exact membership.
-  bool contains(const Rational& x) const;
-  /// "[lo, hi)", "(0, inf)", "empty".
-  std::string describe() const;
-};
-
-/// Ray test: T(g) = {τ > 0 : b0 + τ g ∈ S}, exact from the H-form, one facet
-/// at a time. The ray hits S iff the result is not empty.
-Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g);
 
 /// Status of a stretch of boundary.
 enum class RegionStatus {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixel/error.h"
+#include "fixel/geometry.h"
 #include "fixel/rational.h"
 
 namespace fixel {
@@ -15,12 +16,6 @@ struct Boundary;
 }
 
 namespace fixel {
-
-/// A 2-vector of exact numbers, in the analysis frame A (the part's body
-/// frame at the current configuration, axes aligned with the world).
-struct Vec2 {
-  Rational x, y;
-};
 
 /// The moving part. Generalised coordinates are (x, y, θ) for dof 3 and
 /// (x, y) for a point mass (dof 2).

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fixel/cone.h"
+#include "fixel/interval.h"
 #include "fixel/lcp.h"
 #include "fixel/rational.h"
 #include "fixel/scene.h"
@@ -32,6 +33,10 @@ struct SeatingSet {
   /// Exact membership from the H-form; boundary points are members.
   bool contains(const VectorQ& p_ext) const;
 };
+
+/// Ray test: T(g) = {τ > 0 : b0 + τ g ∈ S}, exact from the H-form, one facet
+/// at a time. The ray hits S iff the result is not empty.
+Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g);
 
 /// Computes S for a validated scene (n_c == dof, W_n nonsingular), for
 /// sliding and sticking (v_t,i == 0) contacts alike.

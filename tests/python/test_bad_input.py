@@ -123,8 +123,10 @@ def test_scene_errors_other(tmp_path):
 def test_singular_scene(tmp_path):
     d = json.loads((SCENE_DIR / "example2.json").read_text())
     d["fixels"][2] = dict(d["fixels"][1])
-    with pytest.raises(fixel.SceneError):
-        fixel.Scene.from_dict(d)
+    scene = fixel.Scene.from_dict(d)  # loads: the rank of W_n is the analyses' rule
+    with pytest.raises(fixel.SceneError) as e:
+        fixel.seating_set(scene)
+    assert "makes W_n singular" in str(e.value)
 
 
 def test_region_bad_options():
