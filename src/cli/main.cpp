@@ -5,7 +5,9 @@
 
 #include "fixel/error.h"
 #include "fixel/io.h"
+#include "fixel/physics.h"
 #include "fixel/scene.h"
+#include "fixel/seated_pose.h"
 #include "fixel/seating.h"
 #include "fixel/svg.h"
 #include "fixel/verify.h"
@@ -63,6 +65,10 @@ int main(int argc, char** argv) {
   region->add_option("--svg", svg_path, "Also draw the region to this SVG file");
   region->add_flag("--json", json_out, "Print one JSON document on stdout");
   region->add_flag("--guaranteed", guaranteed, "Classify against G instead of S (frictionless pusher only)");
+  int validate = 0;
+  std::string time_text = "20";
+  region->add_option("--validate", validate, "Run N pushes per IN interval in Box2D (docs/physics.md)");
+  region->add_option("--time", time_text, "With --validate: hold each push for T time steps h (default 20)");
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
@@ -71,6 +77,17 @@ int main(int argc, char** argv) {
   sample->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
   sample->add_flag("--json", json_out, "Print one JSON document on stdout");
   sample->add_flag("--guaranteed", guaranteed, "Test against G instead of S (frictionless pusher only)");
+
+  std::string wrench_text, at_text, push_svg;
+  auto* push = app.add_subcommand("push", "Run a constant push in the Box2D physics engine (docs/physics.md)");
+  push->add_option("scene", scene_path, "Scene file with a boundary (JSON, DESIGN §5)")->required();
+  auto* wrench_opt =
+      push->add_option("--wrench", wrench_text, "World-frame wrench wx,wy,wm (force at the centre of mass)");
+  push->add_option("--at", at_text, "Frictionless unit push at parameter U of curve K, at the seated pose: K:U")
+      ->excludes(wrench_opt);
+  push->add_option("--time", time_text, "Hold the wrench for T time steps h (default 20)");
+  push->add_option("--svg", push_svg, "Draw the trajectory to this SVG file");
+  push->add_flag("--json", json_out, "Print one JSON document on stdout");
 
   auto* verify = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
   verify->add_flag("--json", json_out, "Print one JSON document on stdout");
@@ -99,6 +116,27 @@ int main(int argc, char** argv) {
       const fixel::VectorQ p = fixel::parse_impulse(impulse_text, scene.body.dof);
       const auto outcomes = fixel::enumerate_outcomes(scene, p);
       std::cout << (json_out ? fixel::outcomes_json(scene, p, outcomes) : fixel::outcomes_text(scene, p, outcomes));
+      return 0;
+    }
+    fixel::physics::PushOptions push_options;
+    push_options.time = fixel::parse_rational(time_text, "--time");
+    if (push_options.time <= 0) throw fixel::InputError("--time", time_text, "must be > 0");
+    if (*push) {
+      if (wrench_text.empty() && at_text.empty()) throw fixel::InputError("--wrench", "missing", "or --at is required");
+      fixel::physics::Wrench w;
+      if (!at_text.empty()) {
+        const auto at = fixel::physics::parse_curve_point(scene, at_text, "--at");
+        const auto q = fixel::seated_pose(scene).approx;
+        w = fixel::physics::push_wrench_at(scene, at.curve, at.u, {q[0], q[1], q[2]}, "--at");
+      } else {
+        w = fixel::physics::parse_wrench(wrench_text, scene.body.dof, "--wrench");
+      }
+      const auto r = fixel::physics::push(scene, w, push_options);
+      std::cout << (json_out ? fixel::physics::push_json(scene, w, r) : fixel::physics::push_text(scene, w, r));
+      if (!push_svg.empty()) {
+        fixel::physics::write_push_svg(push_svg, scene, r);
+        if (!json_out) std::cout << "wrote " << push_svg << "\n";
+      }
       return 0;
     }
     const fixel::SeatingSet S = fixel::seating_set(scene);
@@ -133,8 +171,18 @@ int main(int argc, char** argv) {
       options.pusher_mu = mu;
       options.guaranteed = g;
       const auto r = fixel::compute_region(scene, S, options);
-      std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, used_mu)
-                             : fixel::region_text(scene, r, cone_text, options.resolution, used_mu));
+      std::optional<fixel::physics::RegionValidation> v;
+      if (validate != 0) {
+        const auto model = fixel::physics::one_step_push_model(scene, S, used_mu);
+        v = fixel::physics::validate_region(scene, r, model, validate, 1, push_options);
+      }
+      if (json_out) {
+        const std::string doc = fixel::region_json(scene, r, cone_text, options.resolution, used_mu);
+        std::cout << (v ? fixel::physics::add_validation_json(doc, *v) : doc);
+      } else {
+        std::cout << fixel::region_text(scene, r, cone_text, options.resolution, used_mu);
+        if (v) std::cout << fixel::physics::validation_text(r, *v);
+      }
       if (!svg_path.empty()) {
         fixel::write_region_svg(svg_path, scene, S, r, cone_text + (g ? ", against G" : ""), options.resolution,
                                 used_mu);
