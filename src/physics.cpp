@@ -62,10 +62,11 @@ double signed_distance(const P2& p, const std::vector<P2>& poly) {
     const double dx = b[0] - a[0], dy = b[1] - a[1];
     const double len2 = dx * dx + dy * dy;
     const double t = len2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy));
+    const double ex = p[0] - a[0] - t * dx, ey = p[1] - a[1] - t * dy;
+    best = std::min(best, ex * ex + ey * ey);
     if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * dx / dy) inside = !inside;
   }
-  return inside ? -best : best;
+  return inside ? -std::sqrt(best) : std::sqrt(best);
 }
 
 struct Listener : b2ContactListener {
@@ -248,9 +249,10 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   const float torque = scene.body.dof == 3 ? float(e.s * e.s * w.m) : 0.0f;
 
   std::vector<double> gaps(nf);
-  auto measure = [&](Pose& pose) {
+  auto measure = [&](Pose& pose, bool with_gaps) {
     const b2Vec2 x = e.part->GetPosition();
     pose = {x.x / e.s, x.y / e.s, e.part->GetAngle()};
+    if (!with_gaps) return;
     const double cs = std::cos(pose.theta), sn = std::sin(pose.theta);
     for (int i = 0; i < nf; ++i) {
       const double dx = f[i][0] - e.c[0] - pose.x, dy = f[i][1] - e.c[1] - pose.y;
@@ -258,7 +260,7 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
     }
   };
   Pose pose;
-  measure(pose);
+  measure(pose, true);
   r.trajectory.push_back({0, pose});
   long seat_run = 0, jam_run = 0;
   for (long step = 1; step <= total; ++step) {
@@ -269,11 +271,12 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
     e.world.Step(float(r.dt), options.velocity_iterations, options.position_iterations);
     r.steps = step;
     const double t = double(step) * r.dt;
-    measure(pose);
     const b2Vec2 v_e = e.part->GetLinearVelocity();
     const P2 v{v_e.x / e.s, v_e.y / e.s};
     const double speed = std::hypot(v[0], v[1]) + std::abs(e.part->GetAngularVelocity()) * radius;
     const bool at_rest = speed < r.rest_speed;
+    // Gaps only matter at rest (and at the end): skip them while moving.
+    measure(pose, at_rest || step == total);
     bool closed = true, touching = false;
     for (int i = 0; i < nf; ++i) {
       closed = closed && gaps[i] < r.gap_tolerance;
@@ -300,6 +303,7 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
     if (r.outcome != Outcome::kTimeout && options.stop_at_outcome) break;
   }
   if (r.outcome != Outcome::kSeated) r.time_to_seat.reset();
+  measure(pose, true);
   r.time_end = double(r.steps) * r.dt;
   r.final_pose = pose;
   r.final_gaps = gaps;

@@ -19,6 +19,16 @@ using json = nlohmann::json;
 
 json pose_json(const Pose& p) { return json::array({p.x, p.y, p.theta}); }
 
+json counts_json(const Validation& v) {
+  return {
+      {"pushes", v.pushes}, {"seated", v.seated}, {"jammed", v.jammed}, {"escaped", v.escaped}, {"timeout", v.timeout}};
+}
+
+std::string counts_text(const Validation& v) {
+  return std::to_string(v.seated) + " of " + std::to_string(v.pushes) + " pushes seated (" + std::to_string(v.jammed) +
+         " jammed, " + std::to_string(v.escaped) + " escaped, " + std::to_string(v.timeout) + " timeout)";
+}
+
 std::string list(const std::vector<int>& v) {
   std::string s;
   for (int i : v) s += (s.empty() ? "" : ", ") + std::to_string(i);
@@ -138,12 +148,14 @@ std::string add_validation_json(const std::string& region_json_text, const Regio
   json doc = json::parse(region_json_text);
   auto& intervals = doc["intervals"];
   for (std::size_t i = 0; i < v.intervals.size() && i < intervals.size(); ++i)
-    if (v.intervals[i])
-      intervals[i]["validation"] = {{"pushes", v.intervals[i]->pushes}, {"seated", v.intervals[i]->seated}};
-  doc["validation"] = {
-      {"pushes", v.total.pushes}, {"seated", v.total.seated},          {"seed", v.seed},
-      {"model", v.model},         {"time", to_string(v.options.time)}, {"steps_per_h", v.options.steps_per_h},
-      {"engine", "Box2D 2.4"}};
+    if (v.intervals[i]) intervals[i]["validation"] = counts_json(*v.intervals[i]);
+  json total = counts_json(v.total);
+  total["seed"] = v.seed;
+  total["model"] = v.model;
+  total["time"] = to_string(v.options.time);
+  total["steps_per_h"] = v.options.steps_per_h;
+  total["engine"] = "Box2D 2.4";
+  doc["validation"] = total;
   return doc.dump(2) + "\n";
 }
 
@@ -152,10 +164,9 @@ std::string validation_text(const Region& region, const RegionValidation& v) {
   for (std::size_t i = 0; i < v.intervals.size() && i < region.intervals.size(); ++i)
     if (v.intervals[i])
       out << "  validated curve " << region.intervals[i].curve << " u in [" << to_string(region.intervals[i].u0) << ", "
-          << to_string(region.intervals[i].u1) << "]: " << v.intervals[i]->seated << " of " << v.intervals[i]->pushes
-          << " pushes seated\n";
+          << to_string(region.intervals[i].u1) << "]: " << counts_text(*v.intervals[i]) << "\n";
   out << "validation (Box2D 2.4, p/h held for " << to_string(v.options.time) << " h, seed " << v.seed
-      << "): " << v.total.seated << " of " << v.total.pushes << " pushes seated\n";
+      << "): " << counts_text(v.total) << "\n";
   return out.str();
 }
 

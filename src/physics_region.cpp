@@ -107,9 +107,15 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
       const PushResult r = push(scene, model(iv, u), options);
       ++v.pushes;
       v.seated += r.outcome == Outcome::kSeated;
+      v.jammed += r.outcome == Outcome::kJammed;
+      v.escaped += r.outcome == Outcome::kEscaped;
+      v.timeout += r.outcome == Outcome::kTimeout;
     }
     out.total.pushes += v.pushes;
     out.total.seated += v.seated;
+    out.total.jammed += v.jammed;
+    out.total.escaped += v.escaped;
+    out.total.timeout += v.timeout;
     out.intervals.push_back(v);
   }
   return out;

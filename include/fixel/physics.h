@@ -155,6 +155,7 @@ PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rat
 struct Validation {
   int pushes = 0;
   int seated = 0;
+  int jammed = 0, escaped = 0, timeout = 0;  ///< The other outcomes.
 };
 struct RegionValidation {
   std::vector<std::optional<Validation>> intervals;  ///< Per interval; set for IN ones.
