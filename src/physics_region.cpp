@@ -6,6 +6,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/physics.h"
+#include "fixel/seated_pose.h"
 
 namespace fixel::physics {
 
@@ -84,6 +85,15 @@ PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rat
     const Contact c = contact_at(scene, iv.curve, u, "interval");
     // The impulse τ (d, r ⊗ d) delivered as the constant force p / h.
     return Wrench{t * c.nx / h, t * c.ny / h, t * c.r_cross_n / h};
+  };
+}
+
+PushModel seated_push_model(const Scene& scene, double force) {
+  const auto q = seated_pose(scene).approx;
+  const Pose pose{q[0], q[1], q[2]};
+  return [&scene, pose, force](const RegionInterval& iv, const Rational& u) {
+    const Wrench w = push_wrench_at(scene, iv.curve, u, pose, "interval");
+    return Wrench{force * w.fx, force * w.fy, force * w.m};
   };
 }
 

@@ -77,6 +77,14 @@ expect 2 'has 2 components but the scene has dof 3' -- "$fixel" push "$tmp/squar
 expect 2 '--at: 0:9 is outside curve 0' -- "$fixel" push "$tmp/square0.json" --at 0:9
 expect 2 '--at: 4:0 names no curve' -- "$fixel" push "$tmp/square0.json" --at 4:0
 expect 2 '--at: "03" must be K:U' -- "$fixel" push "$tmp/square0.json" --at 03
+cat > "$tmp/bow.json" <<'EOF2'
+{"name": "bow", "time_step": "1", "body": {"dof": 3, "mass": "1", "velocity": ["0","0","0"],
+  "boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["4","3"],["1","3"],["1","-1"],["0","0"]]}]},
+ "fixels": [{"point": ["4","1"], "normal": ["-1","0"], "mu": "0", "gap": "0"},
+            {"point": ["3","3"], "normal": ["0","-1"], "mu": "0", "gap": "0"},
+            {"point": ["2","0"], "normal": ["0","1"], "mu": "0", "gap": "0"}]}
+EOF2
+expect 2 'body.boundary[0]: polygonised outline self-intersects (curve 0' -- "$fixel" push "$tmp/bow.json" --wrench 1,0,0
 expect 2 '--wrench: missing or --at is required' -- "$fixel" push "$tmp/square.json"
 expect 2 'body.boundary: is missing' -- "$fixel" push "$src/data/scenes/example2.json" --wrench -1,-1,-1
 expect 0 '"validation": {' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json

@@ -181,5 +181,23 @@ GTEST_TEST(Physics, UnitPushWrenchAtAPointHasTheNormalAndItsMoment) {
   EXPECT_DOUBLE_EQ(r.m, 0.5);
 }
 
+GTEST_TEST(Physics, ValidationRunsEveryPushOfEveryInIntervalWithAnyModel) {
+  const Scene s = square(R"("0", "0", "0")");
+  Region region;
+  RegionInterval in;
+  in.curve = 0, in.u0 = parse_rational("1/4"), in.u1 = parse_rational("3/4"), in.status = RegionStatus::kIn;
+  RegionInterval out = in;
+  out.u0 = 1, out.u1 = 2, out.status = RegionStatus::kOut;
+  region.intervals = {in, out};
+  // Pushing up on the bottom edge lifts the part off its bottom fixel.
+  const RegionValidation v = validate_region(s, region, seated_push_model(s, 2), 3, 7, short_run("2"));
+  ASSERT_EQ(v.intervals.size(), 2u);
+  ASSERT_TRUE(v.intervals[0].has_value());
+  EXPECT_FALSE(v.intervals[1].has_value());
+  EXPECT_EQ(v.total.pushes, 3);
+  EXPECT_EQ(v.total.seated, 0);
+  EXPECT_THROW(validate_region(s, region, seated_push_model(s), 0, 7), InputError);
+}
+
 }  // namespace
 }  // namespace fixel::physics

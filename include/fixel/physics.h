@@ -151,6 +151,11 @@ using PushModel = std::function<Wrench(const RegionInterval& interval, const Rat
 /// the point's own magnitudes when the interval has none.
 PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rational& pusher_mu);
 
+/// The sustained-push model (DESIGN §7): the frictionless push wrench of
+/// push_wrench_at at the seated pose q* (fixel::seated_pose, solved once
+/// here), scaled to |force| = `force` N. Throws what seated_pose throws.
+PushModel seated_push_model(const Scene& scene, double force = 1);
+
 /// Validation counts of one IN interval, or of the whole region.
 struct Validation {
   int pushes = 0;
