@@ -3,9 +3,10 @@
 // For each part (the bundled scenes with a boundary, then seeded random
 // convex polygons with 3 fixels), samples impulses p in S, impulses outside
 // S, and boundary points of the one-step pushing region (p = τ (d, r ⊗ d)),
-// and runs each in Box2D twice: p/h held for h ("at t = h": every gap below
-// 1e-4 of the part size at t = h), and p/h held until an outcome or 20 h
-// ("sustained": outcome seated). Prints a Markdown table.
+// and runs each in Box2D three times: p delivered at once then free for h,
+// and p/h held for h (both counted when every gap is below 1e-4 of the part
+// size at t = h), and p/h held until an outcome or 20 h ("sustained":
+// outcome seated). Prints a Markdown table.
 //
 //   physics_bench [--samples N] [--random K] [--seed S] [--time T]
 #include <algorithm>
@@ -31,8 +32,8 @@ using fixel::Rational;
 namespace {
 
 struct Count {
-  int n = 0, at_h = 0, sustained = 0;
-  void add(const Count& o) { n += o.n, at_h += o.at_h, sustained += o.sustained; }
+  int n = 0, at_once = 0, at_h = 0, sustained = 0;
+  void add(const Count& o) { n += o.n, at_once += o.at_once, at_h += o.at_h, sustained += o.sustained; }
 };
 
 std::string frac(int k, int n) {
@@ -40,6 +41,10 @@ std::string frac(int k, int n) {
   std::ostringstream o;
   o << k << "/" << n << " (" << std::lround(100.0 * k / n) << "%)";
   return o.str();
+}
+
+std::string row(const Count& c) {
+  return " | " + frac(c.at_once, c.n) + " | " + frac(c.at_h, c.n) + " | " + frac(c.sustained, c.n);
 }
 
 // Rational unit vector (cos φ, sin φ) rounded through t = tan(φ/2) = a/1000.
@@ -108,11 +113,17 @@ void run(const fixel::Scene& scene, const fp::Wrench& w, const fp::PushOptions& 
   one.time = 1;
   one.stop_at_outcome = false;
   one.trajectory_samples = 1;
-  const auto a = fp::push(scene, w, one);
-  bool closed = true;
-  for (double g : a.final_gaps) closed = closed && g < a.gap_tolerance;
+  auto closed = [](const fp::PushResult& r) {
+    bool all = true;
+    for (double g : r.final_gaps) all = all && g < r.gap_tolerance;
+    return all;
+  };
   ++c.n;
-  c.at_h += closed;
+  c.at_h += closed(fp::push(scene, w, one));
+  // The impulse p = h·w delivered at once, then no force.
+  const double h = fixel::to_double(scene.time_step);
+  one.impulse = std::array<double, 3>{h * w.fx, h * w.fy, h * w.m};
+  c.at_once += closed(fp::push(scene, fp::Wrench{}, one));
   c.sustained += fp::push(scene, w, sustained).outcome == fp::Outcome::kSeated;
 }
 
@@ -154,8 +165,9 @@ int main(int argc, char** argv) {
   for (int k = 0, added = 0; added < random_parts && k < 1000; ++k)
     if (auto s = random_part(rng, k)) parts.push_back(*s), ++added;
 
-  std::cout << "| part | in S: at t = h | in S: sustained | outside S: at t = h | outside S: sustained | "
-               "region points: at t = h | region points: sustained |\n|---|---|---|---|---|---|---|\n";
+  std::cout << "| part | in S: p at once | in S: p/h for h | in S: sustained | outside S: p at once | "
+               "outside S: p/h for h | outside S: sustained | region: p at once | region: p/h for h | "
+               "region: sustained |\n|---|---|---|---|---|---|---|---|---|---|\n";
   Count all_in, all_out, all_region;
   std::uniform_real_distribution<double> U(0, 1);
   for (const auto& scene : parts) {
@@ -194,14 +206,9 @@ int main(int argc, char** argv) {
       const Rational u = iv.u0 + (iv.u1 - iv.u0) * Rational(static_cast<long>(rng() >> 44), 1L << 20);
       run(scene, model(iv, u), sustained, region);
     }
-    std::cout << "| " << scene.name << " | " << frac(in.at_h, in.n) << " | " << frac(in.sustained, in.n) << " | "
-              << frac(out.at_h, out.n) << " | " << frac(out.sustained, out.n) << " | " << frac(region.at_h, region.n)
-              << " | " << frac(region.sustained, region.n) << " |\n"
-              << std::flush;
+    std::cout << "| " << scene.name << row(in) << row(out) << row(region) << " |\n" << std::flush;
     all_in.add(in), all_out.add(out), all_region.add(region);
   }
-  std::cout << "| **pooled** | " << frac(all_in.at_h, all_in.n) << " | " << frac(all_in.sustained, all_in.n) << " | "
-            << frac(all_out.at_h, all_out.n) << " | " << frac(all_out.sustained, all_out.n) << " | "
-            << frac(all_region.at_h, all_region.n) << " | " << frac(all_region.sustained, all_region.n) << " |\n";
+  std::cout << "| **pooled**" << row(all_in) << row(all_out) << row(all_region) << " |\n";
   return 0;
 }

@@ -223,6 +223,13 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   e.listener.events = &r.events;
   e.listener.max_events = options.max_events;
   build(scene, poly, e);
+  if (options.impulse) {
+    const auto& p = *options.impulse;
+    const double mass = to_double(scene.body.mass);
+    e.part->SetLinearVelocity(e.part->GetLinearVelocity() + b2Vec2(float(e.s * p[0] / mass), float(e.s * p[1] / mass)));
+    if (scene.body.dof == 3)
+      e.part->SetAngularVelocity(e.part->GetAngularVelocity() + float(p[2] / to_double(scene.body.inertia)));
+  }
 
   const double h = to_double(scene.time_step);
   const int nf = scene.num_contacts();

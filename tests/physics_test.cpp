@@ -103,6 +103,15 @@ GTEST_TEST(Physics, SquarePushedStraightIntoItsFixelsEndsSeated) {
   EXPECT_LE(0.005 / r.length_scale, 1e-4 * r.part_size);  // b2_linearSlop in metres
 }
 
+GTEST_TEST(Physics, ImpulseThatClosesTheGapsInOneStepDoesSoByTimeH) {
+  // Left gaps 1/20, bottom gap 1/10, m = 1, h = 1: ν⁺ = (−1/20, −1/10, 0).
+  PushOptions once = short_run("1");
+  once.stop_at_outcome = false;
+  once.impulse = std::array<double, 3>{-0.05, -0.1, 0};
+  const PushResult r = push(square(), Wrench{}, once);
+  for (double g : r.final_gaps) EXPECT_LT(std::abs(g), r.gap_tolerance);
+}
+
 GTEST_TEST(Physics, PureMomentDoesNotSeatTheSquare) {
   const PushResult r = push(square(), Wrench{0, 0, 1}, short_run());
   EXPECT_NE(r.outcome, Outcome::kSeated);

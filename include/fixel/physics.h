@@ -58,6 +58,9 @@ struct PushOptions {
   int trajectory_samples = 200;  ///< Poses kept for the SVG (about this many).
   int max_events = 2000;         ///< Contact events kept (later ones dropped).
   bool stop_at_outcome = true;   ///< Stop as soon as the outcome is decided.
+  /// An impulse p (N·s, N·s, N·m·s; world frame, about the centre of mass)
+  /// delivered at t = 0 on top of the wrench: ν ← ν^ℓ + M⁻¹ p.
+  std::optional<std::array<double, 3>> impulse;
 };
 
 /// One recorded pose of the trajectory.
