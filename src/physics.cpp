@@ -31,6 +31,13 @@ constexpr double kSlop = b2_linearSlop;
 constexpr double kFixelRadius = kSlop;
 constexpr double kContactOffset = kFixelRadius + 1.5 * kSlop;
 
+// Engine inputs are floats: a value outside float's range is bad input, not
+// a silent infinity (and converting it would be undefined behaviour).
+float engine_float(double x, const std::string& field) {
+  if (!(std::abs(x) < 1e30)) throw InputError(field, std::to_string(x), "is outside the engine's float range");
+  return static_cast<float>(x);
+}
+
 // Box2D asserts on degenerate polygons: weld like b2PolygonShape::Set does,
 // then keep only pieces with a safely positive area (a sliver thinner than
 // float resolution changes no contact).
@@ -119,8 +126,9 @@ void build(const Scene& scene, const PartPolygon& poly, Engine& e) {
   bd.allowSleep = false;
   bd.fixedRotation = scene.body.dof == 2;
   const VectorQ& v = scene.body.velocity;
-  bd.linearVelocity.Set(float(e.s * to_double(v[0])), float(e.s * to_double(v[1])));
-  if (scene.body.dof == 3) bd.angularVelocity = float(to_double(v[2]));
+  bd.linearVelocity.Set(engine_float(e.s * to_double(v[0]), "body.velocity"),
+                        engine_float(e.s * to_double(v[1]), "body.velocity"));
+  if (scene.body.dof == 3) bd.angularVelocity = engine_float(to_double(v[2]), "body.velocity");
   e.part = e.world.CreateBody(&bd);
   int kept = 0;
   for (const auto& piece : poly.pieces) {
@@ -146,9 +154,9 @@ void build(const Scene& scene, const PartPolygon& poly, Engine& e) {
   // Exact scene values, rounded for the engine; Box2D's I is about the body
   // origin, which is the centre of mass here.
   b2MassData md;
-  md.mass = float(to_double(scene.body.mass));
+  md.mass = engine_float(to_double(scene.body.mass), "body.mass");
   md.center.SetZero();
-  md.I = scene.body.dof == 3 ? float(e.s * e.s * to_double(scene.body.inertia)) : 0.0f;
+  md.I = scene.body.dof == 3 ? engine_float(e.s * e.s * to_double(scene.body.inertia), "body.inertia") : 0.0f;
   e.part->SetMassData(&md);
 
   e.listener.touching.assign(scene.fixels.size(), 0);
@@ -252,8 +260,8 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   const std::vector<P2> f = fixel_points(scene);
   const double m = to_double(scene.body.mass);
   const P2 accel{w.fx / m, w.fy / m};
-  const b2Vec2 force(float(e.s * w.fx), float(e.s * w.fy));
-  const float torque = scene.body.dof == 3 ? float(e.s * e.s * w.m) : 0.0f;
+  const b2Vec2 force(engine_float(e.s * w.fx, "--wrench"), engine_float(e.s * w.fy, "--wrench"));
+  const float torque = scene.body.dof == 3 ? engine_float(e.s * e.s * w.m, "--wrench") : 0.0f;
 
   std::vector<double> gaps(nf);
   auto measure = [&](Pose& pose, bool with_gaps) {

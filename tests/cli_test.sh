@@ -73,6 +73,7 @@ expect 0 '"wrench": [' -- "$fixel" push "$tmp/square0.json" --at 0:3/4 --time 2 
 expect 2 '--time: 0 must be > 0' -- "$fixel" push "$tmp/square.json" --wrench -1,-1,0 --time 0
 expect 2 '--time: -1 must be > 0' -- "$fixel" push "$tmp/square.json" --wrench -1,-1,0 --time -1
 expect 2 '--wrench[1]: "x" is not an exact number' -- "$fixel" push "$tmp/square.json" --wrench 1,x,0
+expect 2 "is outside the engine's float range" -- "$fixel" push "$tmp/square.json" --wrench 1e200,0,0
 expect 2 'has 2 components but the scene has dof 3' -- "$fixel" push "$tmp/square.json" --wrench 1,0
 expect 2 '--at: 0:9 is outside curve 0' -- "$fixel" push "$tmp/square0.json" --at 0:9
 expect 2 '--at: 4:0 names no curve' -- "$fixel" push "$tmp/square0.json" --at 4:0

@@ -156,6 +156,7 @@ GTEST_TEST(Physics, BadInputsThrowTypedErrors) {
   EXPECT_THROW(push(s, Wrench{-1, -1, 0}, short_run("0")), InputError);
   EXPECT_THROW(push(s, Wrench{-1, -1, 0}, short_run("-1")), InputError);
   EXPECT_THROW(parse_wrench("1,2", 3), InputError);
+  EXPECT_THROW(push(s, Wrench{1e200, 0, 0}, short_run()), InputError);
   EXPECT_THROW(parse_wrench("1,x,2", 3), ParseError);
   EXPECT_THROW(parse_curve_point(s, "0:5"), InputError);
   EXPECT_THROW(parse_curve_point(s, "3:0"), InputError);
