@@ -151,12 +151,14 @@ using PushModel = std::function<Wrench(const RegionInterval& interval, const Rat
 /// the scene pose, d the unit inward normal, held as the force p/h. τ is the
 /// midpoint of the interval's certified magnitudes when bounded, twice the
 /// lower end when unbounded (the apex norm |p_apex| when that end is 0), or
-/// the point's own magnitudes when the interval has none.
+/// the point's own magnitudes when the interval has none. The model keeps
+/// references to `scene` and `S`: both must outlive it.
 PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rational& pusher_mu);
 
 /// The sustained-push model (DESIGN §7): the frictionless push wrench of
 /// push_wrench_at at the seated pose q* (fixel::seated_pose, solved once
 /// here), scaled to |force| = `force` N. Throws what seated_pose throws.
+/// The model keeps a reference to `scene`, which must outlive it.
 PushModel seated_push_model(const Scene& scene, double force = 1);
 
 /// Validation counts of one IN interval, or of the whole region.
