@@ -52,7 +52,47 @@ expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/nonunique_part.js
 expect 0 '"magnitude_intervals"' -- "$fixel" sample "$src/data/scenes/nonunique_part.json" --guaranteed --points 8 --json
 expect 2 'with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
 expect 2 '--svg: ' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
-for cmd in seat dump verify simulate solutions region sample; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
+# push (Box2D) and region --validate: docs/physics.md.
+cat > "$tmp/square.json" <<'EOF2'
+{"name": "square", "time_step": "1",
+ "body": {"dof": 3, "mass": "1", "velocity": ["0","0","0"],
+  "boundary": [{"type": "polyline", "points": [["-1","-1"],["1","-1"],["1","1"],["-1","1"],["-1","-1"]]}]},
+ "fixels": [{"point": ["-1","1/2"], "normal": ["1","0"], "mu": "1/10", "gap": "1/20"},
+            {"point": ["-1","-1/2"], "normal": ["1","0"], "mu": "1/10", "gap": "1/20"},
+            {"point": ["1/2","-1"], "normal": ["0","1"], "mu": "1/10", "gap": "1/10"}]}
+EOF2
+sed 's/"gap": "1\/[0-9]*"/"gap": "0"/g' "$tmp/square.json" > "$tmp/square0.json"
+expect 0 '"outcome": "seated"' -- "$fixel" push "$tmp/square.json" --wrench -2,-1,0 --time 3 --json
+for field in time_to_seat final_pose final_gaps contacts_at_rest length_scale '"dt"'; do
+  expect 0 "$field" -- "$fixel" push "$tmp/square.json" --wrench -2,-1,0 --time 3 --json
+done
+expect 0 'outcome: escaped' -- "$fixel" push "$tmp/square.json" --wrench 1,1,0 --time 3
+expect 0 'wrote' -- "$fixel" push "$tmp/square.json" --wrench -2,-1,0 --time 3 --svg "$tmp/push.svg"
+grep -q "<svg" "$tmp/push.svg" || { echo "FAIL: no push svg"; fail=1; }
+expect 0 '"wrench": [' -- "$fixel" push "$tmp/square0.json" --at 0:3/4 --time 2 --json
+expect 2 '--time: 0 must be > 0' -- "$fixel" push "$tmp/square.json" --wrench -1,-1,0 --time 0
+expect 2 '--time: -1 must be > 0' -- "$fixel" push "$tmp/square.json" --wrench -1,-1,0 --time -1
+expect 2 '--wrench[1]: "x" is not an exact number' -- "$fixel" push "$tmp/square.json" --wrench 1,x,0
+expect 2 "is outside the engine's float range" -- "$fixel" push "$tmp/square.json" --wrench 1e200,0,0
+expect 2 'has 2 components but the scene has dof 3' -- "$fixel" push "$tmp/square.json" --wrench 1,0
+expect 2 '--at: 0:9 is outside curve 0' -- "$fixel" push "$tmp/square0.json" --at 0:9
+expect 2 '--at: 4:0 names no curve' -- "$fixel" push "$tmp/square0.json" --at 4:0
+expect 2 '--at: "03" must be K:U' -- "$fixel" push "$tmp/square0.json" --at 03
+cat > "$tmp/bow.json" <<'EOF2'
+{"name": "bow", "time_step": "1", "body": {"dof": 3, "mass": "1", "velocity": ["0","0","0"],
+  "boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["4","3"],["1","3"],["1","-1"],["0","0"]]}]},
+ "fixels": [{"point": ["4","1"], "normal": ["-1","0"], "mu": "0", "gap": "0"},
+            {"point": ["3","3"], "normal": ["0","-1"], "mu": "0", "gap": "0"},
+            {"point": ["2","0"], "normal": ["0","1"], "mu": "0", "gap": "0"}]}
+EOF2
+expect 2 'body.boundary[0]: polygonised outline self-intersects (curve 0' -- "$fixel" push "$tmp/bow.json" --wrench 1,0,0
+expect 2 '--wrench: missing or --at is required' -- "$fixel" push "$tmp/square.json"
+expect 2 'body.boundary: is missing' -- "$fixel" push "$src/data/scenes/example2.json" --wrench -1,-1,-1
+expect 0 '"validation": {' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
+expect 0 '"seated": 2' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
+expect 0 'validation (Box2D 2.4' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 1 --time 5
+expect 2 '--validate: -1 must be >= 1' -- "$fixel" region "$src/data/scenes/polygon.json" --validate -1
+for cmd in seat dump verify simulate solutions region sample push; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
 expect 2 '--impulse[1]: "x" is not an exact number' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,x,2

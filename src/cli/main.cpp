@@ -5,8 +5,10 @@
 
 #include "fixel/error.h"
 #include "fixel/io.h"
+#include "fixel/physics.h"
 #include "fixel/region_target.h"
 #include "fixel/scene.h"
+#include "fixel/seated_pose.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
 #include "fixel/svg.h"
@@ -86,6 +88,10 @@ int main(int argc, char** argv) {
       ->add_option("--push", push_text,
                    "Push model: step (default; one impulse, the set S) or sustained (a held wrench, the set J)")
       ->check(CLI::IsMember({"step", "sustained"}));
+  int validate = 0;
+  std::string time_text = "20";
+  region->add_option("--validate", validate, "Run N pushes per IN interval in Box2D (docs/physics.md)");
+  region->add_option("--time", time_text, "With --validate: hold each push for T time steps h (default 20)");
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
@@ -95,6 +101,17 @@ int main(int argc, char** argv) {
                      "Pusher friction M, or an interval lo,hi (judged at hi); overrides the scene's pusher.mu");
   sample->add_flag("--json", json_out, "Print one JSON document on stdout");
   sample->add_flag("--guaranteed", guaranteed, "Test against G instead of S (frictionless pusher only)");
+
+  std::string at_text, push_svg;
+  auto* push = app.add_subcommand("push", "Run a constant push in the Box2D physics engine (docs/physics.md)");
+  push->add_option("scene", scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
+  auto* wrench_opt =
+      push->add_option("--wrench", wrench_text, "World-frame wrench wx,wy,wm (force at the centre of mass)");
+  push->add_option("--at", at_text, "Frictionless unit push at parameter U of curve K, at the seated pose: K:U")
+      ->excludes(wrench_opt);
+  push->add_option("--time", time_text, "Hold the wrench for T time steps h (default 20)");
+  push->add_option("--svg", push_svg, "Draw the trajectory to this SVG file");
+  push->add_flag("--json", json_out, "Print one JSON document on stdout");
 
   auto* verify = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
   verify->add_flag("--json", json_out, "Print one JSON document on stdout");
@@ -125,6 +142,27 @@ int main(int argc, char** argv) {
       std::cout << (json_out ? fixel::outcomes_json(scene, p, outcomes) : fixel::outcomes_text(scene, p, outcomes));
       return 0;
     }
+    fixel::physics::PushOptions push_options;
+    push_options.time = fixel::parse_rational(time_text, "--time");
+    if (push_options.time <= 0) throw fixel::InputError("--time", time_text, "must be > 0");
+    if (*push) {
+      if (wrench_text.empty() && at_text.empty()) throw fixel::InputError("--wrench", "missing", "or --at is required");
+      fixel::physics::Wrench w;
+      if (!at_text.empty()) {
+        const auto at = fixel::physics::parse_curve_point(scene, at_text, "--at");
+        const auto q = fixel::seated_pose(scene).approx;
+        w = fixel::physics::push_wrench_at(scene, at.curve, at.u, {q[0], q[1], q[2]}, "--at");
+      } else {
+        w = fixel::physics::parse_wrench(wrench_text, scene.body.dof, "--wrench");
+      }
+      const auto r = fixel::physics::push(scene, w, push_options);
+      std::cout << (json_out ? fixel::physics::push_json(scene, w, r) : fixel::physics::push_text(scene, w, r));
+      if (!push_svg.empty()) {
+        fixel::physics::write_push_svg(push_svg, scene, r);
+        if (!json_out) std::cout << "wrote " << push_svg << "\n";
+      }
+      return 0;
+    }
     if (*seat && sustained) {
       if (guaranteed || stable || !seat_svg.empty() || !impulse_text.empty())
         throw fixel::InputError("--sustained", "",
@@ -149,8 +187,17 @@ int main(int argc, char** argv) {
       const fixel::SustainedSet J = fixel::sustained_set(scene);
       const auto target = fixel::sustained_target(J);
       const auto r = fixel::compute_region(scene, *target, options);
-      std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, r.pusher_mu)
-                             : fixel::region_text(scene, r, cone_text, options.resolution, r.pusher_mu));
+      std::optional<fixel::physics::RegionValidation> v;
+      if (validate != 0)  // the wrench at q*: what J judges (magnitude free)
+        v = fixel::physics::validate_region(scene, r, fixel::physics::seated_push_model(scene), validate, 1,
+                                            push_options);
+      if (json_out) {
+        const std::string doc = fixel::region_json(scene, r, cone_text, options.resolution, r.pusher_mu);
+        std::cout << (v ? fixel::physics::add_validation_json(doc, *v) : doc);
+      } else {
+        std::cout << fixel::region_text(scene, r, cone_text, options.resolution, r.pusher_mu);
+        if (v) std::cout << fixel::physics::validation_text(r, *v);
+      }
       if (!svg_path.empty()) {
         fixel::write_sustained_region_svg(svg_path, scene, J, r, cone_text, options.resolution, r.pusher_mu);
         if (!json_out) std::cout << "wrote " << svg_path << "\n";
@@ -165,6 +212,9 @@ int main(int argc, char** argv) {
       std::optional<fixel::VectorQ> impulse;
       if (!impulse_text.empty()) impulse = fixel::parse_impulse(impulse_text, scene.body.dof);
       if (!seat_svg.empty() && !g) throw fixel::InputError("--svg", seat_svg, "needs --guaranteed");
+      // Every input check before any output (the picture is a p_theta slice).
+      if (!seat_svg.empty() && scene.body.dof != 3)
+        throw fixel::InputError("--svg", seat_svg, "the S/G picture needs dof 3 (a slice at constant p_theta)");
       std::cout << (json_out ? fixel::seat_json(scene, S, impulse, g, stable)
                              : fixel::seat_text(scene, S, impulse, g, stable));
       if (!seat_svg.empty()) {
@@ -189,8 +239,18 @@ int main(int argc, char** argv) {
       options.pusher_mu = mu;
       options.guaranteed = g;
       const auto r = fixel::compute_region(scene, S, options);
-      std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, used_mu)
-                             : fixel::region_text(scene, r, cone_text, options.resolution, used_mu));
+      std::optional<fixel::physics::RegionValidation> v;
+      if (validate != 0) {
+        const auto model = fixel::physics::one_step_push_model(scene, S, used_mu);
+        v = fixel::physics::validate_region(scene, r, model, validate, 1, push_options);
+      }
+      if (json_out) {
+        const std::string doc = fixel::region_json(scene, r, cone_text, options.resolution, used_mu);
+        std::cout << (v ? fixel::physics::add_validation_json(doc, *v) : doc);
+      } else {
+        std::cout << fixel::region_text(scene, r, cone_text, options.resolution, used_mu);
+        if (v) std::cout << fixel::physics::validation_text(r, *v);
+      }
       if (!svg_path.empty()) {
         fixel::write_region_svg(svg_path, scene, S, r, cone_text + (g ? ", against G" : ""), options.resolution,
                                 used_mu);

@@ -1,0 +1,214 @@
+// What the paper's one-step model is worth in a real engine (docs/physics.md).
+//
+// For each part (the bundled scenes with a boundary, then seeded random
+// convex polygons with 3 fixels), samples impulses p in S, impulses outside
+// S, and boundary points of the one-step pushing region (p = τ (d, r ⊗ d)),
+// and runs each in Box2D three times: p delivered at once then free for h,
+// and p/h held for h (both counted when every gap is below 1e-4 of the part
+// size at t = h), and p/h held until an outcome or 20 h ("sustained":
+// outcome seated). Prints a Markdown table.
+//
+//   physics_bench [--samples N] [--random K] [--seed S] [--time T]
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "fixel/error.h"
+#include "fixel/physics.h"
+#include "fixel/region.h"
+#include "fixel/scene.h"
+#include "fixel/seating.h"
+
+namespace fp = fixel::physics;
+using fixel::Rational;
+
+namespace {
+
+struct Count {
+  int n = 0, at_once = 0, at_h = 0, sustained = 0;
+  void add(const Count& o) { n += o.n, at_once += o.at_once, at_h += o.at_h, sustained += o.sustained; }
+};
+
+std::string frac(int k, int n) {
+  if (n == 0) return "–";
+  std::ostringstream o;
+  o << k << "/" << n << " (" << std::lround(100.0 * k / n) << "%)";
+  return o.str();
+}
+
+std::string row(const Count& c) {
+  return " | " + frac(c.at_once, c.n) + " | " + frac(c.at_h, c.n) + " | " + frac(c.sustained, c.n);
+}
+
+// Rational unit vector (cos φ, sin φ) rounded through t = tan(φ/2) = a/1000.
+fixel::Vec2 unit(double phi) {
+  const Rational t(std::lround(std::tan(phi / 2) * 1000), 1000);
+  return {(1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)};
+}
+
+std::string q(const Rational& x) { return "\"" + fixel::to_string(x) + "\""; }
+
+// A random convex polygon as an intersection of half-planes u_k·x ≤ d_k with
+// exact rational unit normals, and 3 fixels on 3 of its edges.
+std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index) {
+  std::uniform_real_distribution<double> U(0, 1);
+  const int K = 5 + static_cast<int>(rng() % 3);
+  std::vector<fixel::Vec2> u;
+  std::vector<Rational> d;
+  for (int k = 0; k < K; ++k) {
+    u.push_back(unit(2 * M_PI * (k + 0.35 * (U(rng) - 0.5)) / K - M_PI));
+    d.push_back(Rational(800 + static_cast<long>(rng() % 400), 1000));
+  }
+  std::vector<fixel::Vec2> v;  // vertex k = line k ∩ line k+1
+  for (int k = 0; k < K; ++k) {
+    const auto &a = u[k], &b = u[(k + 1) % K];
+    const Rational det = a.x * b.y - a.y * b.x;
+    if (det <= 0) return std::nullopt;
+    v.push_back({(d[k] * b.y - d[(k + 1) % K] * a.y) / det, (a.x * d[(k + 1) % K] - b.x * d[k]) / det});
+  }
+  for (const auto& p : v)
+    for (int k = 0; k < K; ++k)
+      if (u[k].x * p.x + u[k].y * p.y > d[k]) return std::nullopt;  // a line cut off an edge
+  // Edge k runs from v[k-1] to v[k] on line k; inward normal −u_k.
+  std::vector<int> edges;
+  while (edges.size() < 3) {
+    const int e = static_cast<int>(rng() % K);
+    if (std::find(edges.begin(), edges.end(), e) == edges.end()) edges.push_back(e);
+  }
+  std::ostringstream s;
+  s << "{\"name\": \"random" << index << "\", \"time_step\": \"1\", \"body\": {\"dof\": 3, \"mass\": \"1\", "
+    << "\"velocity\": [\"0\",\"0\",\"0\"], \"boundary\": [{\"type\": \"polyline\", \"points\": [";
+  for (int k = 0; k <= K; ++k) s << (k ? "," : "") << "[" << q(v[k % K].x) << "," << q(v[k % K].y) << "]";
+  s << "]}]}, \"fixels\": [";
+  for (int i = 0; i < 3; ++i) {
+    const int e = edges[i];
+    const auto &a = v[(e + K - 1) % K], &b = v[e];
+    const Rational t(250 + static_cast<long>(rng() % 500), 1000);
+    const Rational gap(static_cast<long>(rng() % 100) + 1, 1000);
+    const Rational mu(static_cast<long>(rng() % 126), 1000);  // μ ≤ 1/8
+    s << (i ? "," : "") << "{\"point\": [" << q(a.x + t * (b.x - a.x)) << "," << q(a.y + t * (b.y - a.y))
+      << "], \"normal\": [" << q(-u[e].x) << "," << q(-u[e].y) << "], \"mu\": " << q(mu) << ", \"gap\": " << q(gap)
+      << "}";
+  }
+  s << "]}";
+  try {
+    fixel::Scene scene = fixel::parse_scene(s.str());
+    fixel::seating_set(scene);  // W_n must be nonsingular
+    return scene;
+  } catch (const fixel::Error&) {
+    return std::nullopt;
+  }
+}
+
+// Runs p as p/h for h and as a sustained push.
+void run(const fixel::Scene& scene, const fp::Wrench& w, const fp::PushOptions& sustained, Count& c) {
+  fp::PushOptions one;
+  one.time = 1;
+  one.stop_at_outcome = false;
+  one.trajectory_samples = 1;
+  auto closed = [](const fp::PushResult& r) {
+    bool all = true;
+    for (double g : r.final_gaps) all = all && g < r.gap_tolerance;
+    return all;
+  };
+  ++c.n;
+  c.at_h += closed(fp::push(scene, w, one));
+  // The impulse p = h·w delivered at once, then no force.
+  const double h = fixel::to_double(scene.time_step);
+  one.impulse = std::array<double, 3>{h * w.fx, h * w.fy, h * w.m};
+  c.at_once += closed(fp::push(scene, fp::Wrench{}, one));
+  c.sustained += fp::push(scene, w, sustained).outcome == fp::Outcome::kSeated;
+}
+
+fp::Wrench as_force(const fixel::Scene& scene, const std::array<double, 3>& p) {
+  const double h = fixel::to_double(scene.time_step);
+  return {p[0] / h, p[1] / h, p[2] / h};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int samples = 40, random_parts = 8;
+  std::uint64_t seed = 1;
+  std::string time = "20";
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--samples") samples = std::atoi(argv[i + 1]);
+    if (a == "--random") random_parts = std::atoi(argv[i + 1]);
+    if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
+    if (a == "--time") time = argv[i + 1];
+  }
+  fp::PushOptions sustained;
+  sustained.time = fixel::parse_rational(time);
+  sustained.trajectory_samples = 1;
+
+  std::vector<fixel::Scene> parts;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(FIXEL_SOURCE_DIR) + "/data/scenes"))
+    files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    try {
+      fixel::Scene s = fixel::load_scene(f);
+      if (s.body.boundary && s.body.dof == 3) parts.push_back(s);
+    } catch (const fixel::Error&) {
+    }
+  }
+  std::mt19937_64 rng(seed);
+  for (int k = 0, added = 0; added < random_parts && k < 1000; ++k)
+    if (auto s = random_part(rng, k)) parts.push_back(*s), ++added;
+
+  std::cout << "| part | in S: p at once | in S: p/h for h | in S: sustained | outside S: p at once | "
+               "outside S: p/h for h | outside S: sustained | region: p at once | region: p/h for h | "
+               "region: sustained |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  Count all_in, all_out, all_region;
+  std::uniform_real_distribution<double> U(0, 1);
+  for (const auto& scene : parts) {
+    const fixel::SeatingSet S = fixel::seating_set(scene);
+    const double apex = std::hypot(fixel::to_double(S.apex[0]), fixel::to_double(S.apex[1]));
+    Count in, out, region;
+    for (int k = 0; k < samples; ++k) {
+      std::array<double, 3> p{};
+      for (int j = 0; j < 3; ++j) p[j] = fixel::to_double(S.apex[j]);
+      for (const auto& ray : S.rays) {
+        const double lambda = U(rng) * apex;
+        for (int j = 0; j < 3; ++j) p[j] += lambda * fixel::to_double(ray[j]);
+      }
+      run(scene, as_force(scene, p), sustained, in);
+    }
+    for (int k = 0; k < samples;) {
+      std::array<double, 3> p{};
+      const double a = 2 * M_PI * U(rng), b = std::acos(2 * U(rng) - 1), r = 2 * apex * U(rng);
+      for (int j = 0; j < 3; ++j) p[j] = fixel::to_double(S.apex[j]);
+      p[0] += r * std::sin(b) * std::cos(a), p[1] += r * std::sin(b) * std::sin(a), p[2] += r * std::cos(b);
+      fixel::VectorQ pq(3);
+      for (int j = 0; j < 3; ++j) pq[j] = Rational(p[j]);  // exact value of the double
+      if (S.contains(pq)) continue;
+      run(scene, as_force(scene, p), sustained, out);
+      ++k;
+    }
+    fixel::RegionOptions ro;
+    ro.resolution = Rational(1, 256);
+    const fixel::Region reg = fixel::compute_region(scene, S, ro);
+    const auto model = fp::one_step_push_model(scene, S, scene.pusher_mu);
+    std::vector<const fixel::RegionInterval*> ins;
+    for (const auto& iv : reg.intervals)
+      if (iv.status == fixel::RegionStatus::kIn) ins.push_back(&iv);
+    for (int k = 0; k < samples && !ins.empty(); ++k) {
+      const auto& iv = *ins[rng() % ins.size()];
+      const Rational u = iv.u0 + (iv.u1 - iv.u0) * Rational(static_cast<long>(rng() >> 44), 1L << 20);
+      run(scene, model(iv, u), sustained, region);
+    }
+    std::cout << "| " << scene.name << row(in) << row(out) << row(region) << " |\n" << std::flush;
+    all_in.add(in), all_out.add(out), all_region.add(region);
+  }
+  std::cout << "| **pooled**" << row(all_in) << row(all_out) << row(all_region) << " |\n";
+  return 0;
+}

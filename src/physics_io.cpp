@@ -1,0 +1,173 @@
+// Reports of the physics check: JSON, text and the trajectory SVG.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "fixel/error.h"
+#include "fixel/physics.h"
+
+namespace fixel::physics {
+
+using fixel::to_string;  // physics::to_string(Outcome) would hide it
+
+namespace {
+
+using json = nlohmann::json;
+
+json pose_json(const Pose& p) { return json::array({p.x, p.y, p.theta}); }
+
+json counts_json(const Validation& v) {
+  return {
+      {"pushes", v.pushes}, {"seated", v.seated}, {"jammed", v.jammed}, {"escaped", v.escaped}, {"timeout", v.timeout}};
+}
+
+std::string counts_text(const Validation& v) {
+  return std::to_string(v.seated) + " of " + std::to_string(v.pushes) + " pushes seated (" + std::to_string(v.jammed) +
+         " jammed, " + std::to_string(v.escaped) + " escaped, " + std::to_string(v.timeout) + " timeout)";
+}
+
+std::string list(const std::vector<int>& v) {
+  std::string s;
+  for (int i : v) s += (s.empty() ? "" : ", ") + std::to_string(i);
+  return s.empty() ? "none" : s;
+}
+
+}  // namespace
+
+std::string push_json(const Scene& scene, const Wrench& w, const PushResult& r) {
+  json doc;
+  doc["scene"] = scene.name;
+  doc["engine"] = "Box2D 2.4";
+  doc["outcome"] = to_string(r.outcome);
+  doc["time_to_seat"] = r.time_to_seat ? json(*r.time_to_seat) : json(nullptr);
+  doc["final_pose"] = pose_json(r.final_pose);
+  doc["final_gaps"] = r.final_gaps;
+  doc["contacts_at_rest"] = r.contacts_at_rest;
+  doc["open_fixels"] = r.open_fixels;
+  doc["wrench"] = json::array({w.fx, w.fy, w.m});
+  doc["time"] = r.time_end;
+  doc["steps"] = r.steps;
+  doc["dt"] = r.dt;
+  doc["length_scale"] = r.length_scale;
+  doc["part_size"] = r.part_size;
+  doc["gap_tolerance"] = r.gap_tolerance;
+  doc["rest_speed"] = r.rest_speed;
+  json events = json::array();
+  for (const auto& e : r.events) events.push_back({{"t", e.t}, {"fixel", e.fixel}, {"begin", e.begin}});
+  doc["events"] = events;
+  return doc.dump(2) + "\n";
+}
+
+std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r) {
+  std::ostringstream out;
+  out << std::setprecision(6);
+  out << "Push on scene \"" << scene.name << "\" in Box2D 2.4: wrench (" << w.fx << ", " << w.fy << ", " << w.m
+      << ")\n";
+  out << "outcome: " << to_string(r.outcome);
+  if (r.time_to_seat) out << " at t = " << *r.time_to_seat << " s";
+  if (r.outcome == Outcome::kJammed) out << " (open: fixel " << list(r.open_fixels) << ")";
+  out << "\n";
+  out << "final pose (x, y, theta): (" << r.final_pose.x << ", " << r.final_pose.y << ", " << r.final_pose.theta
+      << ") after " << r.time_end << " s\n";
+  out << "final gaps:";
+  for (double g : r.final_gaps) out << " " << g;
+  out << "  (seated below " << r.gap_tolerance << ")\n";
+  out << "contacts at the end: " << list(r.contacts_at_rest) << "\n";
+  out << "engine: dt " << r.dt << " s, " << r.steps << " steps, length scale " << r.length_scale
+      << " units/m, part size " << r.part_size << " m\n";
+  return out.str();
+}
+
+void write_push_svg(const std::string& path, const Scene& scene, const PushResult& r) {
+  const PartPolygon poly = part_polygon(scene);
+  const double cx = to_double(scene.body.p_AoCm_A.x), cy = to_double(scene.body.p_AoCm_A.y);
+  auto place = [&](const Pose& p, const std::array<double, 2>& v) {
+    const double c = std::cos(p.theta), s = std::sin(p.theta), dx = v[0] - cx, dy = v[1] - cy;
+    return std::array<double, 2>{cx + p.x + c * dx - s * dy, cy + p.y + s * dx + c * dy};
+  };
+  std::vector<std::array<double, 2>> fixels;
+  for (const auto& f : scene.fixels)
+    fixels.push_back({to_double(f.p_AoF_A.x - f.gap * f.n_A.x), to_double(f.p_AoF_A.y - f.gap * f.n_A.y)});
+  // Fit everything drawn into the picture.
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  auto grow = [&](const std::array<double, 2>& q) {
+    x0 = std::min(x0, q[0]), x1 = std::max(x1, q[0]), y0 = std::min(y0, q[1]), y1 = std::max(y1, q[1]);
+  };
+  for (const auto& s : r.trajectory)
+    for (const auto& v : poly.outline) grow(place(s.pose, v));
+  for (const auto& f : fixels) grow(f);
+  const double W = 640, margin = 20, span = std::max({x1 - x0, y1 - y0, 1e-12});
+  const double k = (W - 2 * margin) / span, H = (y1 - y0) * k + 2 * margin + 60;
+  auto X = [&](double x) { return margin + (x - x0) * k; };
+  auto Y = [&](double y) { return margin + (y1 - y) * k; };
+  auto outline = [&](const Pose& p, const std::string& style) {
+    std::ostringstream o;
+    o << "<polygon style=\"" << style << "\" points=\"";
+    for (const auto& v : poly.outline) {
+      const auto q = place(p, v);
+      o << X(q[0]) << "," << Y(q[1]) << " ";
+    }
+    o << "\"/>\n";
+    return o.str();
+  };
+  std::ofstream out(path);
+  if (!out) throw InputError("--svg", path, "cannot be written");
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\">\n";
+  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  out << outline(Pose{}, "fill:#dde8f5;stroke:#6a8fbf;stroke-width:1");
+  const std::size_t every = std::max<std::size_t>(1, r.trajectory.size() / 25);
+  for (std::size_t i = every; i + 1 < r.trajectory.size(); i += every)
+    out << outline(r.trajectory[i].pose, "fill:none;stroke:#999;stroke-width:0.5;stroke-opacity:0.6");
+  out << outline(r.final_pose, std::string("fill:none;stroke:") +
+                                   (r.outcome == Outcome::kSeated ? "#1a7f37" : "#c62828") + ";stroke-width:1.5");
+  out << "<polyline style=\"fill:none;stroke:#333;stroke-dasharray:3,2\" points=\"";
+  for (const auto& s : r.trajectory) out << X(cx + s.pose.x) << "," << Y(cy + s.pose.y) << " ";
+  out << "\"/>\n";
+  for (const auto& e : r.events) {
+    const auto& f = fixels[e.fixel];
+    out << "<circle cx=\"" << X(f[0]) << "\" cy=\"" << Y(f[1])
+        << "\" r=\"7\" style=\"fill:none;stroke:" << (e.begin ? "#e69500" : "#8e24aa")
+        << ";stroke-opacity:0.4\"><title>t=" << e.t << " fixel " << e.fixel << (e.begin ? " touches" : " leaves")
+        << "</title></circle>\n";
+  }
+  for (std::size_t i = 0; i < fixels.size(); ++i)
+    out << "<circle cx=\"" << X(fixels[i][0]) << "\" cy=\"" << Y(fixels[i][1]) << "\" r=\"3\" fill=\"black\"/>"
+        << "<text x=\"" << X(fixels[i][0]) + 5 << "\" y=\"" << Y(fixels[i][1]) - 5 << "\" font-size=\"11\">" << i
+        << "</text>\n";
+  out << "<text x=\"" << margin << "\" y=\"" << H - 30 << "\" font-size=\"12\">" << scene.name << ": "
+      << to_string(r.outcome) << " after " << r.time_end << " s; " << r.events.size()
+      << " contact events (orange: touch, purple: leave); grey: every few steps</text>\n";
+  out << "</svg>\n";
+  if (!out) throw InputError("--svg", path, "cannot be written");
+}
+
+std::string add_validation_json(const std::string& region_json_text, const RegionValidation& v) {
+  json doc = json::parse(region_json_text);
+  auto& intervals = doc["intervals"];
+  for (std::size_t i = 0; i < v.intervals.size() && i < intervals.size(); ++i)
+    if (v.intervals[i]) intervals[i]["validation"] = counts_json(*v.intervals[i]);
+  json total = counts_json(v.total);
+  total["seed"] = v.seed;
+  total["model"] = v.model;
+  total["time"] = to_string(v.options.time);
+  total["steps_per_h"] = v.options.steps_per_h;
+  total["engine"] = "Box2D 2.4";
+  doc["validation"] = total;
+  return doc.dump(2) + "\n";
+}
+
+std::string validation_text(const Region& region, const RegionValidation& v) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < v.intervals.size() && i < region.intervals.size(); ++i)
+    if (v.intervals[i])
+      out << "  validated curve " << region.intervals[i].curve << " u in [" << to_string(region.intervals[i].u0) << ", "
+          << to_string(region.intervals[i].u1) << "]: " << counts_text(*v.intervals[i]) << "\n";
+  out << "validation (Box2D 2.4, p/h held for " << to_string(v.options.time) << " h, seed " << v.seed
+      << "): " << counts_text(v.total) << "\n";
+  return out.str();
+}
+
+}  // namespace fixel::physics

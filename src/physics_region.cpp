@@ -1,0 +1,134 @@
+// Push wrenches at boundary points, and the validation of a pushing region
+// through the engine (DESIGN §7, "region --validate").
+#include <cmath>
+#include <random>
+
+#include "fixel/curve.h"
+#include "fixel/error.h"
+#include "fixel/physics.h"
+#include "fixel/seated_pose.h"
+
+namespace fixel::physics {
+
+using fixel::to_string;  // physics::to_string(Outcome) would hide it
+
+namespace {
+
+// Unit inward normal and lever arm at (curve, u), in the body frame at the
+// scene pose. For a counter-clockwise loop the inside is to the left.
+struct Contact {
+  double nx, ny, r_cross_n;
+};
+
+Contact contact_at(const Scene& scene, int k, const Rational& u, const std::string& field) {
+  if (!scene.body.boundary)
+    throw SceneError("body.boundary", "", "is missing: a push at a boundary point needs the outline");
+  const auto& curves = scene.body.boundary->curves;
+  const std::string where = std::to_string(k) + ":" + to_string(u);
+  if (k < 0 || k >= static_cast<int>(curves.size()))
+    throw InputError(field, where, "names no curve (the boundary has " + std::to_string(curves.size()) + ")");
+  const Curve& c = curves[k];
+  if (u < c.u_begin() || u > c.u_end())
+    throw InputError(field, where,
+                     "is outside curve " + std::to_string(k) + "'s range [" + to_string(c.u_begin()) + ", " +
+                         to_string(c.u_end()) + "]");
+  const Vec2 b = c.point(u);
+  const Vec2 d = c.derivative(u);
+  if (d.x == 0 && d.y == 0) throw SceneError(field, where, "has a zero tangent (no normal)");
+  const double tx = to_double(d.x), ty = to_double(d.y), len = std::hypot(tx, ty);
+  const double nx = -ty / len, ny = tx / len;
+  const double rx = to_double(b.x - scene.body.p_AoCm_A.x), ry = to_double(b.y - scene.body.p_AoCm_A.y);
+  return {nx, ny, rx * ny - ry * nx};
+}
+
+// τ for the one-step model inside certified magnitudes (docs/physics.md).
+std::optional<double> pick_magnitude(const Magnitudes& m, double fallback) {
+  if (m.empty) return std::nullopt;
+  const double lo = to_double(m.lo);
+  if (m.hi) return (lo + to_double(*m.hi)) / 2;
+  return lo > 0 ? 2 * lo : fallback;
+}
+
+}  // namespace
+
+Wrench push_wrench_at(const Scene& scene, int curve, const Rational& u, const Pose& pose, const std::string& field) {
+  const Contact c = contact_at(scene, curve, u, field);
+  const double cs = std::cos(pose.theta), sn = std::sin(pose.theta);
+  // A rotation turns force and lever arm alike, so the moment is unchanged.
+  return {cs * c.nx - sn * c.ny, sn * c.nx + cs * c.ny, c.r_cross_n};
+}
+
+CurvePoint parse_curve_point(const Scene& scene, const std::string& text, const std::string& field) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos || colon == 0)
+    throw ParseError(field, "\"" + text + "\"", "must be K:U (curve index, exact parameter)");
+  const std::string k_text = text.substr(0, colon);
+  for (char ch : k_text)
+    if (ch < '0' || ch > '9') throw ParseError(field, "\"" + text + "\"", "curve index is not a whole number");
+  if (k_text.size() > 6) throw InputError(field, "\"" + text + "\"", "names no curve");
+  CurvePoint p{std::stoi(k_text), parse_rational(text.substr(colon + 1), field)};
+  contact_at(scene, p.curve, p.u, field);  // range checks
+  return p;
+}
+
+PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rational& pusher_mu) {
+  const double apex = std::hypot(to_double(S.apex[0]), to_double(S.apex[1]));
+  const double h = to_double(scene.time_step);
+  return [&scene, &S, pusher_mu, apex, h](const RegionInterval& iv, const Rational& u) {
+    auto tau = pick_magnitude(iv.magnitudes, apex);
+    if (!tau) {
+      Magnitudes own;
+      point_status(scene, S, iv.curve, u, pusher_mu, &own);
+      tau = pick_magnitude(own, apex);
+    }
+    const double t = tau.value_or(apex);
+    const Contact c = contact_at(scene, iv.curve, u, "interval");
+    // The impulse τ (d, r ⊗ d) delivered as the constant force p / h.
+    return Wrench{t * c.nx / h, t * c.ny / h, t * c.r_cross_n / h};
+  };
+}
+
+PushModel seated_push_model(const Scene& scene, double force) {
+  const auto q = seated_pose(scene).approx;
+  const Pose pose{q[0], q[1], q[2]};
+  return [&scene, pose, force](const RegionInterval& iv, const Rational& u) {
+    const Wrench w = push_wrench_at(scene, iv.curve, u, pose, "interval");
+    return Wrench{force * w.fx, force * w.fy, force * w.m};
+  };
+}
+
+RegionValidation validate_region(const Scene& scene, const Region& region, const PushModel& model, int pushes,
+                                 std::uint64_t seed, const PushOptions& options) {
+  if (pushes < 1) throw InputError("--validate", std::to_string(pushes), "must be >= 1");
+  RegionValidation out;
+  out.seed = seed;
+  out.options = options;
+  std::mt19937_64 rng(seed);
+  for (const auto& iv : region.intervals) {
+    if (iv.status != RegionStatus::kIn) {
+      out.intervals.emplace_back();
+      continue;
+    }
+    Validation v;
+    for (int k = 0; k < pushes; ++k) {
+      // An exact parameter: u0 + (u1 − u0) · j / 2^20, j pseudo-random.
+      const Rational frac(static_cast<long>(rng() >> 44), 1L << 20);
+      const Rational u = iv.u0 + (iv.u1 - iv.u0) * frac;
+      const PushResult r = push(scene, model(iv, u), options);
+      ++v.pushes;
+      v.seated += r.outcome == Outcome::kSeated;
+      v.jammed += r.outcome == Outcome::kJammed;
+      v.escaped += r.outcome == Outcome::kEscaped;
+      v.timeout += r.outcome == Outcome::kTimeout;
+    }
+    out.total.pushes += v.pushes;
+    out.total.seated += v.seated;
+    out.total.jammed += v.jammed;
+    out.total.escaped += v.escaped;
+    out.total.timeout += v.timeout;
+    out.intervals.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace fixel::physics

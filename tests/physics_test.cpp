@@ -1,0 +1,213 @@
+// The physics check on Box2D. Runs are short (a few h); longer studies are
+// in bench/physics_bench.cpp. Engine results are measurements, so tolerances
+// appear only where the issue allows them (the t = 0 mapping).
+#include "fixel/physics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fixel/error.h"
+#include "fixel/scene.h"
+
+namespace fixel::physics {
+namespace {
+
+// A 2 × 2 square about the origin: two fixels on its left side, one below.
+Scene square(const std::string& gaps = R"("1/20", "1/20", "1/10")") {
+  const std::string text = R"({"name": "square", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "velocity": ["0","0","0"],
+      "boundary": [{"type": "polyline", "points": [["-1","-1"],["1","-1"],["1","1"],["-1","1"],["-1","-1"]]}]},
+    "fixels": [{"point": ["-1","1/2"], "normal": ["1","0"], "mu": "1/10", "gap": "G0"},
+               {"point": ["-1","-1/2"], "normal": ["1","0"], "mu": "1/10", "gap": "G1"},
+               {"point": ["1/2","-1"], "normal": ["0","1"], "mu": "1/10", "gap": "G2"}]})";
+  std::string s = text;
+  std::vector<std::string> g;
+  std::string rest = gaps;
+  for (std::size_t pos; (pos = rest.find('"')) != std::string::npos;) {
+    const auto end = rest.find('"', pos + 1);
+    g.push_back(rest.substr(pos + 1, end - pos - 1));
+    rest = rest.substr(end + 1);
+  }
+  for (int i = 0; i < 3; ++i) s.replace(s.find("G" + std::to_string(i)), 2, g[i]);
+  return parse_scene(s);
+}
+
+PushOptions short_run(const char* T = "3") {
+  PushOptions o;
+  o.time = parse_rational(T);
+  return o;
+}
+
+// Euclidean distance from f_i to the exact curve, by dense sampling with
+// exact point evaluation (independent of the engine's polygon).
+double curve_distance(const Scene& scene, int i) {
+  const Fixel& f = scene.fixels[i];
+  const double fx = to_double(f.p_AoF_A.x - f.gap * f.n_A.x), fy = to_double(f.p_AoF_A.y - f.gap * f.n_A.y);
+  double best = INFINITY;
+  for (const auto& piece : scene.body.boundary->pieces) {
+    auto d = [&](const Rational& s) {
+      const Vec2 p = piece.point(s);
+      return std::hypot(to_double(p.x) - fx, to_double(p.y) - fy);
+    };
+    constexpr int kN = 400;
+    int k_best = 0;
+    for (int k = 1; k <= kN; ++k)
+      if (d(Rational(k, kN)) < d(Rational(k_best, kN))) k_best = k;
+    Rational lo(std::max(0, k_best - 1), kN), hi(std::min(kN, k_best + 1), kN);
+    for (int it = 0; it < 40; ++it) {
+      const Rational a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+      if (d(a) < d(b))
+        hi = b;
+      else
+        lo = a;
+      lo = Rational(to_double(lo)), hi = Rational(to_double(hi));  // keep the numbers short
+    }
+    best = std::min(best, d(lo));
+  }
+  return best;
+}
+
+GTEST_TEST(Physics, AtTimeZeroEachFixelIsItsGapAwayFromTheEnginePart) {
+  // The square's normals are its edge normals, so the distance is ψ_i; the
+  // blob's normals are rational roundings, so it is the distance to the curve.
+  const Scene sq = square();
+  const double sq_size = part_polygon(sq).size;
+  const auto sq_gaps = initial_engine_gaps(sq);
+  for (std::size_t i = 0; i < sq_gaps.size(); ++i)
+    EXPECT_NEAR(sq_gaps[i], to_double(sq.fixels[i].gap), 1e-6 * sq_size) << "square fixel " << i;
+  const Scene blob = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/blob.json");
+  const double size = part_polygon(blob).size;
+  const auto gaps = initial_engine_gaps(blob);
+  ASSERT_EQ(gaps.size(), blob.fixels.size());
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    EXPECT_NEAR(gaps[i], curve_distance(blob, static_cast<int>(i)), 1e-6 * size) << "blob fixel " << i;
+    EXPECT_NEAR(gaps[i], to_double(blob.fixels[i].gap), 1e-4 * size) << "blob fixel " << i;
+  }
+}
+
+GTEST_TEST(Physics, BSplinePolygonStaysWithinTheChordalTolerance) {
+  const Scene blob = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/blob.json");
+  const PartPolygon p = part_polygon(blob);
+  EXPECT_LT(p.chordal_tolerance, 1e-4 * p.size);
+  EXPECT_GT(p.pieces.size(), 0u);
+}
+
+GTEST_TEST(Physics, SquarePushedStraightIntoItsFixelsEndsSeated) {
+  const PushResult r = push(square(), Wrench{-2, -1, 0}, short_run());
+  EXPECT_EQ(r.outcome, Outcome::kSeated);
+  ASSERT_TRUE(r.time_to_seat.has_value());
+  for (double g : r.final_gaps) EXPECT_LT(g, r.gap_tolerance);
+  EXPECT_EQ(r.contacts_at_rest.size(), 3u);
+  EXPECT_LE(r.dt, 1.0 / 1000);
+  EXPECT_LE(0.005 / r.length_scale, 1e-4 * r.part_size);  // b2_linearSlop in metres
+}
+
+GTEST_TEST(Physics, ImpulseThatClosesTheGapsInOneStepDoesSoByTimeH) {
+  // Left gaps 1/20, bottom gap 1/10, m = 1, h = 1: ν⁺ = (−1/20, −1/10, 0).
+  PushOptions once = short_run("1");
+  once.stop_at_outcome = false;
+  once.impulse = std::array<double, 3>{-0.05, -0.1, 0};
+  const PushResult r = push(square(), Wrench{}, once);
+  for (double g : r.final_gaps) EXPECT_LT(std::abs(g), r.gap_tolerance);
+}
+
+GTEST_TEST(Physics, PureMomentDoesNotSeatTheSquare) {
+  const PushResult r = push(square(), Wrench{0, 0, 1}, short_run());
+  EXPECT_NE(r.outcome, Outcome::kSeated);
+}
+
+GTEST_TEST(Physics, PushAwayFromTheFixelsEscapes) {
+  const PushResult r = push(square(), Wrench{1, 1, 0}, short_run());
+  EXPECT_EQ(r.outcome, Outcome::kEscaped);
+}
+
+GTEST_TEST(Physics, SameRunGivesTheSameOutcomeTwice) {
+  const Scene s = square();
+  const PushResult a = push(s, Wrench{-1, -0.4, 0.1}, short_run());
+  const PushResult b = push(s, Wrench{-1, -0.4, 0.1}, short_run());
+  EXPECT_EQ(a.outcome, b.outcome);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.final_pose.theta, b.final_pose.theta);
+}
+
+GTEST_TEST(Physics, HalvingTheTimeStepChangesNoOutcomeOnFiftyPushes) {
+  const Scene s = square();
+  PushOptions coarse = short_run(), fine = short_run();
+  fine.steps_per_h = 2 * coarse.steps_per_h;
+  coarse.trajectory_samples = fine.trajectory_samples = 1;
+  int seated = 0, jammed = 0;
+  for (int k = 0; k < 50; ++k) {
+    // Force directions facing the fixels and beyond, with a small alternating
+    // moment: a mix of seated, jammed, escaped and timeout.
+    const double a = M_PI - 0.6 + (M_PI / 2 + 1.2) * (k + 0.5) / 50;
+    const Wrench w{2 * std::cos(a), 2 * std::sin(a), (k % 2 ? 0.1 : -0.1)};
+    const Outcome o = push(s, w, coarse).outcome;
+    EXPECT_EQ(to_string(o), to_string(push(s, w, fine).outcome)) << "push " << k;
+    seated += o == Outcome::kSeated;
+    jammed += o == Outcome::kJammed;
+  }
+  EXPECT_GT(seated, 0);  // not a vacuous comparison
+  EXPECT_GT(jammed, 0);
+}
+
+GTEST_TEST(Physics, BadInputsThrowTypedErrors) {
+  const Scene s = square();
+  EXPECT_THROW(push(s, Wrench{-1, -1, 0}, short_run("0")), InputError);
+  EXPECT_THROW(push(s, Wrench{-1, -1, 0}, short_run("-1")), InputError);
+  EXPECT_THROW(parse_wrench("1,2", 3), InputError);
+  EXPECT_THROW(push(s, Wrench{1e200, 0, 0}, short_run()), InputError);
+  EXPECT_THROW(parse_wrench("1,x,2", 3), ParseError);
+  EXPECT_THROW(parse_curve_point(s, "0:5"), InputError);
+  EXPECT_THROW(parse_curve_point(s, "3:0"), InputError);
+  EXPECT_THROW(parse_curve_point(s, "zero"), ParseError);
+  EXPECT_NO_THROW(parse_curve_point(s, "0:1/2"));
+  const Scene no_boundary = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/example2.json");
+  EXPECT_THROW(push(no_boundary, Wrench{-1, -1, 0}, short_run()), SceneError);
+  // A closed, counter-clockwise loop that crosses itself.
+  const std::string bow = R"({"name": "bow", "time_step": "1", "body": {"dof": 3, "mass": "1",
+    "velocity": ["0","0","0"], "boundary": [{"type": "polyline",
+    "points": [["0","0"],["4","0"],["4","3"],["1","3"],["1","-1"],["0","0"]]}]},
+    "fixels": [{"point": ["4","1"], "normal": ["-1","0"], "mu": "0", "gap": "0"},
+               {"point": ["3","3"], "normal": ["0","-1"], "mu": "0", "gap": "0"},
+               {"point": ["2","0"], "normal": ["0","1"], "mu": "0", "gap": "0"}]})";
+  try {  // rejected when the scene is read or when it is polygonised
+    push(parse_scene(bow), Wrench{-1, 0, 0}, short_run());
+    ADD_FAILURE() << "a self-intersecting part was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("body.boundary"), std::string::npos) << e.what();
+  }
+}
+
+GTEST_TEST(Physics, UnitPushWrenchAtAPointHasTheNormalAndItsMoment) {
+  const Scene s = square();
+  // Bottom edge u ∈ [0, 1] at u = 3/4: point (1/2, −1), inward normal (0, 1).
+  const Wrench w = push_wrench_at(s, 0, parse_rational("3/4"), Pose{});
+  EXPECT_DOUBLE_EQ(w.fx, 0);
+  EXPECT_DOUBLE_EQ(w.fy, 1);
+  EXPECT_DOUBLE_EQ(w.m, 0.5);
+  const Wrench r = push_wrench_at(s, 0, parse_rational("3/4"), Pose{0, 0, M_PI / 2});
+  EXPECT_NEAR(r.fx, -1, 1e-15);
+  EXPECT_DOUBLE_EQ(r.m, 0.5);
+}
+
+GTEST_TEST(Physics, ValidationRunsEveryPushOfEveryInIntervalWithAnyModel) {
+  const Scene s = square(R"("0", "0", "0")");
+  Region region;
+  RegionInterval in;
+  in.curve = 0, in.u0 = parse_rational("1/4"), in.u1 = parse_rational("3/4"), in.status = RegionStatus::kIn;
+  RegionInterval out = in;
+  out.u0 = 1, out.u1 = 2, out.status = RegionStatus::kOut;
+  region.intervals = {in, out};
+  // Pushing up on the bottom edge lifts the part off its bottom fixel.
+  const RegionValidation v = validate_region(s, region, seated_push_model(s, 2), 3, 7, short_run("2"));
+  ASSERT_EQ(v.intervals.size(), 2u);
+  ASSERT_TRUE(v.intervals[0].has_value());
+  EXPECT_FALSE(v.intervals[1].has_value());
+  EXPECT_EQ(v.total.pushes, 3);
+  EXPECT_EQ(v.total.seated, 0);
+  EXPECT_THROW(validate_region(s, region, seated_push_model(s), 0, 7), InputError);
+}
+
+}  // namespace
+}  // namespace fixel::physics
