@@ -21,8 +21,8 @@ Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, in
     const TimeSteppingLcp lcp = build_lcp(state);
     const LemkeResult solved = solve_lcp_lemke(lcp.B, lcp.b(p));
     if (solved.status != LemkeStatus::kSolved)
-      throw Error("step " + std::to_string(k + 1) + ": Lemke ended in " + to_string(solved.status) +
-                  "; no motion was computed");
+      throw UnsupportedError("step " + std::to_string(k + 1), "Lemke ended in " + to_string(solved.status),
+                             "and no motion was computed; fixel does not handle this contact situation");
     StepRecord rec;
     rec.p_n = solved.z.head(nc);
     rec.p_f = solved.z.segment(nc, 2 * nc);
