@@ -6,6 +6,7 @@
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -89,6 +90,7 @@ struct Context {
   Rational resolution;
   RegionStats stats;
   const GuaranteedSet* G = nullptr;
+  RunControl* control = nullptr;
 };
 
 bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens);
@@ -204,6 +206,7 @@ bool cone_misses(Context& ctx, const std::vector<VectorQ>& gens) {
 }
 
 RegionInterval classify(Context& ctx, const BezierPiece& seg) {
+  poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
   ++ctx.stats.cone_tests;
   RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}};
   // The tight cone needs no hull (min/max over all control points is the
@@ -415,8 +418,15 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
   check_inputs(scene, mu, options.guaranteed);
   if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{
-      scene, S, scene.background_impulse, mu, options.cone, options.resolution, RegionStats{}, options.guaranteed};
+  Context ctx{scene,
+              S,
+              scene.background_impulse,
+              mu,
+              options.cone,
+              options.resolution,
+              RegionStats{},
+              options.guaranteed,
+              options.control};
   const std::vector<Join> js = joins(b);
   std::vector<RegionInterval> raw;
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {
@@ -444,7 +454,7 @@ RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, co
 }
 
 Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve, std::optional<Rational> pusher_mu,
-                     const GuaranteedSet* guaranteed) {
+                     const GuaranteedSet* guaranteed, RunControl* control) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(scene.pusher_mu);
   check_inputs(scene, mu, guaranteed);
@@ -452,10 +462,12 @@ Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_cur
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, S, scene.background_impulse, mu, ConeMethod::kTight, Rational(1), RegionStats{}, guaranteed};
   const std::vector<Join> js = joins(b);
+  const long total = static_cast<long>(b.curves.size()) * points_per_curve;
   Region region;
   for (std::size_t c = 0; c < b.curves.size(); ++c) {
     const Curve& curve = b.curves[c];
     for (int k = 0; k < points_per_curve; ++k) {
+      poll(control, "sample", static_cast<long>(region.intervals.size()), total, "points");
       const Rational u = curve.u_begin() + (curve.u_end() - curve.u_begin()) * Rational(k, points_per_curve);
       RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}, {}};
       r.status = status_at(ctx, b, js, static_cast<int>(c), u, &r.magnitudes, &r.magnitude_set);

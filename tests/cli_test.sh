@@ -65,4 +65,30 @@ sed 's/"normal": \["1", "0"\]/"normal": ["3\/5", "3\/5"]/' "$src/data/scenes/exa
 expect 2 'fixels[0].normal: (3/5, 3/5) is not of unit length' -- "$fixel" seat "$tmp/nonunit.json"
 expect 2 '--length: -1 must be > 0' -- "$fixel" dump "$src/data/scenes/example2.json" --off "$tmp/o2" --length -1
 
+# A self-intersecting part is bad input naming both curves and the point.
+cat > "$tmp/bowtie.json" <<'JSON'
+{"name": "bowtie", "time_step": "1",
+ "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"],
+          "boundary": [{"type": "polyline", "points": [["0","0"], ["3","0"], ["3","2"], ["1","-1"], ["0","2"], ["0","0"]]}]},
+ "fixels": [{"point": ["0", "0"], "normal": ["0", "1"], "mu": "0", "gap": "0"},
+            {"point": ["0", "1"], "normal": ["1", "0"], "mu": "0", "gap": "0"},
+            {"point": ["3", "1"], "normal": ["-1", "0"], "mu": "0", "gap": "0"}]}
+JSON
+expect 2 'body.boundary[0] at u = 2/9 and body.boundary[0] at u = 10/3 cross at (2/3, 0): the boundary crosses itself' -- "$fixel" region "$tmp/bowtie.json"
+
+# A bug in fixel (a broken invariant, or any non-fixel exception) exits 3 and asks for a report.
+expect 3 'this is a bug in fixel, please report it' -- env FIXEL_TEST_FAULT=internal "$fixel" seat "$src/data/scenes/example2.json"
+expect 3 'this is a bug in fixel, please report it' -- env FIXEL_TEST_FAULT=std "$fixel" seat "$src/data/scenes/example2.json"
+
+# Long runs are bounded: --max-seconds stops with exit 4, Ctrl-C with exit 130, both saying what was done.
+P2=-1,-1,-1
+expect 4 'simulate: time limit reached after' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 --max-seconds 1
+expect 4 'sample: time limit reached after' -- "$fixel" sample "$src/data/scenes/blob.json" --points 100000000 --max-seconds 0.5 --quiet
+expect 2 '--max-seconds' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --max-seconds -1
+"$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 > "$tmp/int.out" 2>&1 &
+pid=$!; sleep 1; kill -INT "$pid"; wait "$pid"; rc=$?
+if [ "$rc" -ne 130 ] || ! grep -qE 'simulate: interrupted after [0-9]+ of 100000000 steps' "$tmp/int.out"; then
+  echo "FAIL: SIGINT to simulate -> exit $rc (want 130), output:"; head -3 "$tmp/int.out"; fail=1
+fi
+
 exit $fail

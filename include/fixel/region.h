@@ -16,6 +16,7 @@
 namespace fixel {
 
 struct GuaranteedSet;
+struct RunControl;
 
 /// An interval of positive reals with optional infinite upper end.
 struct Magnitudes {
@@ -89,6 +90,9 @@ struct RegionOptions {
   /// Classify against the guaranteed set G instead of S (frictionless
   /// pusher only; G must belong to the same scene and S).
   const GuaranteedSet* guaranteed = nullptr;
+  /// Polled once per segment classified: cancellation, time limit and
+  /// progress (may be null). Stopping throws StoppedError.
+  RunControl* control = nullptr;
 };
 
 /// The pushing region by recursive subdivision (DESIGN §4). Throws
@@ -99,8 +103,11 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
 /// The point-sampling baseline: N uniformly spaced parameters per curve,
 /// u = u_begin + k (u_end − u_begin) / N, k = 0..N−1, each an interval
 /// [u, u] with status in or out (partial where the normal is undefined).
+/// `control` (may be null) is polled once per point; stopping throws
+/// StoppedError.
 Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve,
-                     std::optional<Rational> pusher_mu = std::nullopt, const GuaranteedSet* guaranteed = nullptr);
+                     std::optional<Rational> pusher_mu = std::nullopt, const GuaranteedSet* guaranteed = nullptr,
+                     RunControl* control = nullptr);
 
 /// Exact point test at parameter u of curve k (a corner uses its whole fan of
 /// push directions). kPartial when the contact normal is undefined there.

@@ -1,10 +1,17 @@
 // The fixel command line: parses arguments and calls the library.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 
 #include "fixel/error.h"
 #include "fixel/io.h"
+#include "fixel/progress.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
 #include "fixel/svg.h"
@@ -12,8 +19,59 @@
 
 namespace {
 
-// Exit codes: 0 success, 1 a verification failed, 2 bad input or usage.
+// Exit codes: 0 success, 1 a verification failed, 2 bad input or usage,
+// 3 a bug in fixel, 4 --max-seconds reached, 130 interrupted (Ctrl-C).
 constexpr int kExitBadInput = 2;
+constexpr int kExitBug = 3;
+constexpr int kExitTimeLimit = 4;
+constexpr int kExitInterrupted = 130;
+constexpr const char* kReportLine =
+    "fixel: this is a bug in fixel, please report it with the command line and the scene file\n";
+
+// The run's control block; the SIGINT handler only sets its lock-free flag.
+fixel::RunControl g_run;
+bool g_progress_shown = false;
+
+extern "C" void on_sigint(int) {
+  g_run.cancel.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+// Progress on stderr, rewriting one line (only installed on a terminal).
+void show_progress(const char* task, long done, long total, const char* unit) {
+  const double seconds = std::chrono::duration<double>(fixel::RunControl::Clock::now() - g_run.start).count();
+  if (total > 0)
+    std::fprintf(stderr, "\r%s: %ld of %ld %s (%.1f%%), %.0f s", task, done, total, unit, 100.0 * done / total,
+                 seconds);
+  else
+    std::fprintf(stderr, "\r%s: %ld %s, %.0f s", task, done, unit, seconds);
+  std::fflush(stderr);
+  g_progress_shown = true;
+}
+
+void end_progress() {
+  if (g_progress_shown) std::fputs("\n", stderr);
+  g_progress_shown = false;
+}
+
+// Arms g_run for a long command: deadline, progress, Ctrl-C.
+void arm_run_control(double max_seconds, bool quiet) {
+  if (max_seconds < 0 || !std::isfinite(max_seconds))
+    throw fixel::InputError("--max-seconds", std::to_string(max_seconds), "must be > 0");
+  if (max_seconds > 0)
+    g_run.deadline = g_run.start + std::chrono::duration_cast<fixel::RunControl::Clock::duration>(
+                                       std::chrono::duration<double>(max_seconds));
+  if (!quiet && isatty(STDERR_FILENO)) g_run.on_progress = show_progress;
+  std::signal(SIGINT, on_sigint);
+}
+
+// Test hook for the exit-3 path: FIXEL_TEST_FAULT=internal or =std.
+void maybe_inject_fault() {
+  const char* fault = std::getenv("FIXEL_TEST_FAULT");
+  if (!fault) return;
+  if (std::string(fault) == "internal") throw fixel::InternalError("injected by FIXEL_TEST_FAULT=internal");
+  if (std::string(fault) == "std") throw std::runtime_error("injected by FIXEL_TEST_FAULT=std");
+}
 
 }  // namespace
 
@@ -47,6 +105,14 @@ int main(int argc, char** argv) {
   simulate->add_option("--impulse", impulse_text, "External impulse of step 1: px,py[,ptheta]")->required();
   simulate->add_option("--steps", steps, "Number of steps (default 1); later steps get no impulse");
   simulate->add_flag("--json", json_out, "Print one JSON document on stdout");
+  double max_seconds = 0;
+  bool quiet = false;
+  auto add_run_options = [&](CLI::App* cmd) {
+    cmd->add_option("--max-seconds", max_seconds, "Stop with exit 4 after this many seconds (default: no limit)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--quiet", quiet, "No progress line on stderr (shown on a terminal after 1 s)");
+  };
+  add_run_options(simulate);
 
   auto* solutions = app.add_subcommand("solutions", "Every outcome of one step (all LCP solutions, by contact mode)");
   solutions->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
@@ -63,6 +129,7 @@ int main(int argc, char** argv) {
   region->add_option("--svg", svg_path, "Also draw the region to this SVG file");
   region->add_flag("--json", json_out, "Print one JSON document on stdout");
   region->add_flag("--guaranteed", guaranteed, "Classify against G instead of S (frictionless pusher only)");
+  add_run_options(region);
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
@@ -71,6 +138,7 @@ int main(int argc, char** argv) {
   sample->add_option("--pusher-mu", pusher_mu_text, "Pusher friction; overrides the scene's pusher.mu");
   sample->add_flag("--json", json_out, "Print one JSON document on stdout");
   sample->add_flag("--guaranteed", guaranteed, "Test against G instead of S (frictionless pusher only)");
+  add_run_options(sample);
 
   auto* verify = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
   verify->add_flag("--json", json_out, "Print one JSON document on stdout");
@@ -82,6 +150,8 @@ int main(int argc, char** argv) {
   }
 
   try {
+    maybe_inject_fault();
+    if (*simulate || *region || *sample) arm_run_control(max_seconds, quiet);
     if (*verify) {
       const auto checks = fixel::run_verification();
       std::cout << (json_out ? fixel::verification_json(checks) : fixel::verification_text(checks));
@@ -91,7 +161,8 @@ int main(int argc, char** argv) {
     }
     const fixel::Scene scene = fixel::load_scene(scene_path);
     if (*simulate) {
-      const auto sim = fixel::simulate(scene, {fixel::parse_impulse(impulse_text, scene.body.dof)}, steps);
+      const auto sim = fixel::simulate(scene, {fixel::parse_impulse(impulse_text, scene.body.dof)}, steps, &g_run);
+      end_progress();
       std::cout << (json_out ? fixel::simulation_json(scene, sim) : fixel::simulation_text(scene, sim));
       return 0;
     }
@@ -122,7 +193,8 @@ int main(int argc, char** argv) {
       if (!pusher_mu_text.empty()) mu = fixel::parse_rational(pusher_mu_text, "--pusher-mu");
       const fixel::Rational used_mu = mu.value_or(scene.pusher_mu);
       if (*sample) {
-        const auto r = fixel::sample_region(scene, S, points, mu, g);
+        const auto r = fixel::sample_region(scene, S, points, mu, g, &g_run);
+        end_progress();
         std::cout << (json_out ? fixel::region_json(scene, r, "sample", std::nullopt, used_mu)
                                : fixel::region_text(scene, r, "sample", std::nullopt, used_mu));
         return 0;
@@ -132,7 +204,9 @@ int main(int argc, char** argv) {
       options.cone = cone_text == "paper" ? fixel::ConeMethod::kPaper : fixel::ConeMethod::kTight;
       options.pusher_mu = mu;
       options.guaranteed = g;
+      options.control = &g_run;
       const auto r = fixel::compute_region(scene, S, options);
+      end_progress();
       std::cout << (json_out ? fixel::region_json(scene, r, cone_text, options.resolution, used_mu)
                              : fixel::region_text(scene, r, cone_text, options.resolution, used_mu));
       if (!svg_path.empty()) {
@@ -147,12 +221,22 @@ int main(int argc, char** argv) {
       for (const auto& path : fixel::dump_off(scene, S, off_dir, length, g)) std::cout << "wrote " << path << "\n";
       return 0;
     }
+  } catch (const fixel::StoppedError& e) {
+    end_progress();
+    std::cerr << "fixel: stopped: " << e.what() << "\n";
+    return e.reason() == fixel::StopReason::kInterrupted ? kExitInterrupted : kExitTimeLimit;
+  } catch (const fixel::InternalError& e) {
+    end_progress();
+    std::cerr << "fixel: internal error: " << e.what() << "\n" << kReportLine;
+    return kExitBug;
   } catch (const fixel::Error& e) {
+    end_progress();
     std::cerr << "fixel: error: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "fixel: internal error: " << e.what() << "\n";
-    return 3;
+    end_progress();
+    std::cerr << "fixel: internal error: " << e.what() << "\n" << kReportLine;
+    return kExitBug;
   }
   return 0;
 }
