@@ -1,6 +1,7 @@
 // Is the boundary loop simple? Segments exactly (CGAL's O(n log n) sweep, and
 // an exact pairwise classification to name a witness); curved pieces by
 // exact de Casteljau refinement of their control-polygon hulls.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Simple_cartesian.h>
@@ -19,10 +20,11 @@ namespace fixel {
 namespace {
 
 // is_simple_2 uses predicates only, so both kernels decide exactly: Epick
-// (filtered, fast) when the coordinates scaled by a common denominator are
-// exactly doubles, otherwise plain rationals (several times slower).
+// (statically filtered, fastest) when the coordinates scaled by a common
+// denominator are exactly doubles, otherwise Epeck (interval-filtered GMP
+// rationals).
 using DoubleKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using RationalKernel = CGAL::Simple_cartesian<Rational>;
+using RationalKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
 constexpr int kMaxDepth = 24;          // refinements of one pair before "undecided"
 constexpr int kMaxMonotoneDepth = 16;  // splits of one piece into monotone sub-pieces
@@ -307,7 +309,8 @@ bool cgal_says_simple(const std::vector<BezierPiece>& pieces) {
   if (!fast.empty()) return CGAL::is_simple_2(fast.begin(), fast.end(), DoubleKernel());
   std::vector<RationalKernel::Point_2> pts;
   pts.reserve(pieces.size());
-  for (const auto& p : pieces) pts.emplace_back(p.control[0].x, p.control[0].y);
+  auto lazy = [](const Rational& v) { return RationalKernel::FT(RationalKernel::FT::ET(v.backend().data())); };
+  for (const auto& p : pieces) pts.emplace_back(lazy(p.control[0].x), lazy(p.control[0].y));
   return CGAL::is_simple_2(pts.begin(), pts.end(), RationalKernel());
 }
 
