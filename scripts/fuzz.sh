@@ -15,10 +15,10 @@
 #
 # Measured execution counts per 30 s (2 shared cores, load about 2, -O1,
 # ASan + UBSan; docs/performance.md): scene_fuzz 29,000-57,000 (950-1,850/s),
-# structured_fuzz 350-375 (11-12/s: the exact pipeline takes about 85 ms per
+# structured_fuzz 150-375 (5-12/s: the exact pipeline takes 80-200 ms per
 # input under the sanitizers). That is far below 10^6 per 60 s CI run, so run
 # a nightly-style campaign for that: FUZZ_SECONDS=3600 scripts/fuzz.sh
-# (about 1.7-3.3 million + 21,000 executions at these rates).
+# (about 1.7-3.3 million + 9,000-22,000 executions at these rates).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-60}"
