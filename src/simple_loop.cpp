@@ -146,8 +146,8 @@ class Checker {
   // Two pieces that are not consecutive along the loop.
   Finding general(const BezierPiece& a, const BezierPiece& b, int depth) {
     if (--budget_ < 0) return near(Kind::kUndecided, a, b);
-    if (separated(a.control, b.control)) return {};
     if (a.degree() == 1 && b.degree() == 1) return segments(a, b);
+    if (separated(a.control, b.control)) return {};
     if (proves_crossing(a, b) || proves_crossing(b, a)) return near(Kind::kCross, a, b);
     if (depth >= kMaxDepth) return near(Kind::kUndecided, a, b);
     // Off-centre, so that a crossing at a symmetric parameter (often s = 1/2)
