@@ -118,6 +118,7 @@ int main(int argc, char** argv) {
   solutions->add_option("scene", scene_path, "Scene file (JSON, DESIGN §5)")->required();
   solutions->add_option("--impulse", impulse_text, "External impulse: px,py[,ptheta]")->required();
   solutions->add_flag("--json", json_out, "Print one JSON document on stdout");
+  add_run_options(solutions);
 
   std::string resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path;
   auto* region = app.add_subcommand("region", "The pushing region by exact recursive subdivision (paper §5)");
@@ -151,7 +152,7 @@ int main(int argc, char** argv) {
 
   try {
     maybe_inject_fault();
-    if (*simulate || *region || *sample) arm_run_control(max_seconds, quiet);
+    if (*simulate || *solutions || *region || *sample) arm_run_control(max_seconds, quiet);
     if (*verify) {
       const auto checks = fixel::run_verification();
       std::cout << (json_out ? fixel::verification_json(checks) : fixel::verification_text(checks));
@@ -168,7 +169,8 @@ int main(int argc, char** argv) {
     }
     if (*solutions) {
       const fixel::VectorQ p = fixel::parse_impulse(impulse_text, scene.body.dof);
-      const auto outcomes = fixel::enumerate_outcomes(scene, p);
+      const auto outcomes = fixel::enumerate_outcomes(scene, p, &g_run);
+      end_progress();
       std::cout << (json_out ? fixel::outcomes_json(scene, p, outcomes) : fixel::outcomes_text(scene, p, outcomes));
       return 0;
     }
