@@ -12,7 +12,7 @@
 namespace fixel::fuzz {
 
 // Runs the pipeline on `text`. Returns normally, or throws fixel::Error for
-// bad input; any other exception is a defect.
+// bad input; InternalError or any other exception is a defect.
 inline void run_pipeline(const std::string& text) {
   const Scene scene = parse_scene(text, "fuzz");
   const SeatingSet S = seating_set(scene);

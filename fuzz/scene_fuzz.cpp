@@ -12,6 +12,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
     fixel::fuzz::run_pipeline(std::string(reinterpret_cast<const char*>(data), size));
+  } catch (const fixel::InternalError& e) {
+    std::cerr << "broken invariant: " << e.what() << "\n";
+    std::terminate();
   } catch (const fixel::Error&) {
     // Bad input, reported with field and value: fine.
   } catch (const std::exception& e) {

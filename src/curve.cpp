@@ -265,6 +265,7 @@ Boundary make_boundary(std::vector<Curve> curves, const std::string& path) {
                        next == 0 ? "does not close the loop: the last curve ends at " + text(end)
                                  : "does not start where the previous curve ends, " + text(end));
   }
+  check_simple_loop(b.pieces, path);
   b.mass = mass_properties(b.pieces);
   if (b.mass.area == 0) throw SceneError(path, "area 0", "encloses no area");
   if (b.mass.area < 0)

@@ -172,7 +172,7 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) 
   T.extract(result.w, result.z);
   // Never report a wrong "solved": the checker is independent of the tableau.
   if (!is_solution(B, b, result.w, result.z))
-    throw std::logic_error("fixel: Lemke produced a non-solution (internal error)");
+    throw InternalError("solve_lcp_lemke: the final basis fails the independent is_solution check");
   result.status = LemkeStatus::kSolved;
   return result;
 }

@@ -129,7 +129,8 @@ std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& 
   }
   std::ostringstream off;
   off.precision(17);
-  if (!CGAL::IO::write_OFF(off, points, faces)) throw Error("OFF writer failed");
+  if (!CGAL::IO::write_OFF(off, points, faces))
+    throw InternalError("CGAL::IO::write_OFF failed on an in-memory stream");
   out << with_comments(off.str(), comments);
   return points.size();
 }

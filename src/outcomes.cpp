@@ -4,6 +4,7 @@
 #include "fixel/internal/exact_lp.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -128,7 +129,7 @@ ModeSystem mode_system(const Scene& scene, const std::vector<ContactMode>& modes
   return {eq.matrix(n), eq.vector(), in.matrix(n), in.vector()};
 }
 
-std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext) {
+std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext, RunControl* control) {
   check_impulse(scene, p_ext);
   const int nc = scene.num_contacts(), n = scene.body.dof + 2 * nc;
   const ContactMatrices W = contact_matrices(scene);
@@ -136,6 +137,7 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
   long total = 1;
   for (int i = 0; i < nc; ++i) total *= 4;
   for (long code = 0; code < total; ++code) {
+    poll(control, "solutions", code, total, "contact modes");
     const std::vector<ContactMode> modes = contact_modes(code, nc);
     const ModeSystem sys = mode_system(scene, modes, p_ext);
 

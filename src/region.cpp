@@ -6,6 +6,7 @@
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 #include "fixel/region_target.h"
 
 namespace fixel {
@@ -215,6 +216,7 @@ struct Context {
   ConeMethod method;
   Rational resolution;
   RegionStats stats;
+  RunControl* control = nullptr;
 };
 
 // No ray of the cone (τ > 0) meets the convex piece Q: the set
@@ -249,6 +251,7 @@ RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, c
 // target, OUT when one family's cone misses it (that edge direction then
 // misses at every point), else PARTIAL.
 RegionInterval classify(Context& ctx, const BezierPiece& seg) {
+  poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
   ++ctx.stats.cone_tests;
   RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}};
   // The tight cone needs no hull (min/max over all control points is the
@@ -409,7 +412,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   check_inputs(scene, mu, target);
   if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
   const Boundary& b = *scene.body.boundary;
-  Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}};
+  Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
   target.stats = &ctx.stats;
   const std::vector<Join> js = joins(b);
   std::vector<RegionInterval> raw;
@@ -454,8 +457,8 @@ RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, co
   return point_status(scene, *target, curve, u, mu, magnitudes);
 }
 
-Region sample_region(const Scene& scene, RegionTarget& target, int points_per_curve,
-                     std::optional<Rational> pusher_mu) {
+Region sample_region(const Scene& scene, RegionTarget& target, int points_per_curve, std::optional<Rational> pusher_mu,
+                     RunControl* control) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(default_pusher_mu(scene, target));
   check_inputs(scene, mu, target);
@@ -464,10 +467,12 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = &ctx.stats;
   const std::vector<Join> js = joins(b);
+  const long total = static_cast<long>(b.curves.size()) * points_per_curve;
   Region region;
   for (std::size_t c = 0; c < b.curves.size(); ++c) {
     const Curve& curve = b.curves[c];
     for (int k = 0; k < points_per_curve; ++k) {
+      poll(control, "sample", static_cast<long>(region.intervals.size()), total, "points");
       const Rational u = curve.u_begin() + (curve.u_end() - curve.u_begin()) * Rational(k, points_per_curve);
       RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}, {}};
       r.status = status_at(ctx, b, js, static_cast<int>(c), u, &r.magnitudes, &r.magnitude_set);
@@ -484,9 +489,9 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
 }
 
 Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve, std::optional<Rational> pusher_mu,
-                     const GuaranteedSet* guaranteed) {
+                     const GuaranteedSet* guaranteed, RunControl* control) {
   const auto target = step_target(scene, S, guaranteed);
-  return sample_region(scene, *target, points_per_curve, pusher_mu);
+  return sample_region(scene, *target, points_per_curve, pusher_mu, control);
 }
 
 }  // namespace fixel

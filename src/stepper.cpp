@@ -2,10 +2,11 @@
 
 #include "fixel/error.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
-Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps) {
+Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps, RunControl* control) {
   const int dof = scene.body.dof, nc = scene.num_contacts();
   if (steps <= 0) throw InputError("--steps", std::to_string(steps), "must be >= 1");
   for (std::size_t k = 0; k < impulses.size(); ++k)
@@ -17,12 +18,13 @@ Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, in
   VectorQ q = VectorQ::Zero(dof);
   Simulation sim;
   for (int k = 0; k < steps; ++k) {
+    poll(control, "simulate", k, steps, "steps");
     const VectorQ p = k < static_cast<int>(impulses.size()) ? impulses[k] : VectorQ(VectorQ::Zero(dof));
     const TimeSteppingLcp lcp = build_lcp(state);
     const LemkeResult solved = solve_lcp_lemke(lcp.B, lcp.b(p));
     if (solved.status != LemkeStatus::kSolved)
-      throw Error("step " + std::to_string(k + 1) + ": Lemke ended in " + to_string(solved.status) +
-                  "; no motion was computed");
+      throw UnsupportedError("step " + std::to_string(k + 1), "Lemke ended in " + to_string(solved.status),
+                             "and no motion was computed; fixel does not handle this contact situation");
     StepRecord rec;
     rec.p_n = solved.z.head(nc);
     rec.p_f = solved.z.segment(nc, 2 * nc);

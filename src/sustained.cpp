@@ -100,7 +100,7 @@ bool feasible(std::vector<Row<NT>> rows) {
     }
     if (j < 0) return true;
     if (pos.size() * neg.size() + next.size() > kMaxRows)
-      throw Error("sustained set: Fourier-Motzkin exceeded " + std::to_string(kMaxRows) + " rows");
+      throw InternalError("sustained set: Fourier-Motzkin exceeded " + std::to_string(kMaxRows) + " rows");
     for (const auto& P : pos)
       for (const auto& N : neg) {
         const NT wp = -N.a[j], wn = P.a[j];  // both > 0

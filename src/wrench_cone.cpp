@@ -140,7 +140,7 @@ Vec2 unit_direction_outward(const Vec2& d_raw, bool cw) {
     if (cw ? cross(u, d) >= 0 : cross(d, u) >= 0) return u;
     t += cw ? -step : step;  // tan(θ/2) is increasing: move the angle outward
   }
-  throw Error("unit_direction_outward: no rational direction found (internal error)");
+  throw InternalError("unit_direction_outward: no rational direction found within 4096 steps");
 }
 
 Rational cos_half_angle_lower(const Vec2& a_raw, const Vec2& b_raw) {

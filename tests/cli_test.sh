@@ -130,5 +130,33 @@ sed 's/"mu": "1\/10"/"mu": ["1\/5", "1\/10"]/' "$P" > "$tmp/badinterval.json"
 expect 2 'has lo > hi' -- "$fixel" seat "$tmp/badinterval.json" --sustained
 sed 's/"mu": "1\/10"/"mu": "3"/; s/"gap": "[0-9\/]*"/"gap": "0"/g' "$P" > "$tmp/sticky.json"
 expect 0 'J is EMPTY' -- "$fixel" seat "$tmp/sticky.json" --sustained
+# A self-intersecting part is bad input naming both curves and the point.
+cat > "$tmp/bowtie.json" <<'JSON'
+{"name": "bowtie", "time_step": "1",
+ "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"],
+          "boundary": [{"type": "polyline", "points": [["0","0"], ["3","0"], ["3","2"], ["1","-1"], ["0","2"], ["0","0"]]}]},
+ "fixels": [{"point": ["0", "0"], "normal": ["0", "1"], "mu": "0", "gap": "0"},
+            {"point": ["0", "1"], "normal": ["1", "0"], "mu": "0", "gap": "0"},
+            {"point": ["3", "1"], "normal": ["-1", "0"], "mu": "0", "gap": "0"}]}
+JSON
+expect 2 'body.boundary[0] at u = 2/9 and body.boundary[0] at u = 10/3 cross at (2/3, 0): the boundary crosses itself' -- "$fixel" region "$tmp/bowtie.json"
+
+# A bug in fixel (a broken invariant, or any non-fixel exception) exits 3 and asks for a report.
+expect 3 'this is a bug in fixel, please report it' -- env FIXEL_TEST_FAULT=internal "$fixel" seat "$src/data/scenes/example2.json"
+expect 3 'this is a bug in fixel, please report it' -- env FIXEL_TEST_FAULT=std "$fixel" seat "$src/data/scenes/example2.json"
+
+# Long runs are bounded: --max-seconds stops with exit 4, Ctrl-C with exit 130, both saying what was done.
+P2=-1,-1,-1
+expect 4 'simulate: time limit reached after' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 --max-seconds 1
+expect 4 'sample: time limit reached after' -- "$fixel" sample "$src/data/scenes/blob.json" --points 100000000 --max-seconds 0.5 --quiet
+expect 2 '--max-seconds' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --max-seconds -1
+# (--max-seconds is only a safety net: a missed SIGINT then fails with exit 4 instead of hanging.)
+"$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 --max-seconds 60 > "$tmp/int.out" 2>&1 &
+pid=$!; sleep 1
+for _ in 1 2 3 4 5 6 7 8 9 10; do kill -INT "$pid" 2>/dev/null || break; sleep 0.5; done
+wait "$pid"; rc=$?
+if [ "$rc" -ne 130 ] || ! grep -qE 'simulate: interrupted after [0-9]+ of 100000000 steps' "$tmp/int.out"; then
+  echo "FAIL: SIGINT to simulate -> exit $rc (want 130), output:"; head -3 "$tmp/int.out"; fail=1
+fi
 
 exit $fail

@@ -5,9 +5,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "../fuzz/pipeline.h"
+#include "../fuzz/structured.h"
 
 namespace fixel {
 namespace {
@@ -22,6 +25,8 @@ TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
     text << in.rdbuf();
     try {
       fuzz::run_pipeline(text.str());
+    } catch (const InternalError& e) {
+      ADD_FAILURE() << entry.path() << ": broken invariant: " << e.what();
     } catch (const Error&) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << entry.path() << ": " << e.what();
@@ -29,6 +34,31 @@ TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
     ++replayed;
   }
   EXPECT_GE(replayed, 6);
+}
+
+// The structured target's inputs (raw bytes, *.bin) and, as in its seed
+// corpus, the bundled scenes' bytes.
+TEST(FuzzRegressions, EveryStructuredInputAndBundledSceneRunsCleanly) {
+  std::vector<std::filesystem::path> inputs;
+  for (const auto& dir : {std::filesystem::path(FIXEL_SOURCE_DIR) / "tests" / "fuzz_regressions" / "structured",
+                          std::filesystem::path(FIXEL_SOURCE_DIR) / "data" / "scenes"})
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) inputs.push_back(entry.path());
+  int ran_through = 0;
+  for (const auto& path : inputs) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    try {
+      fuzz::run_structured(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+      ++ran_through;
+    } catch (const InternalError& e) {
+      ADD_FAILURE() << path << ": broken invariant: " << e.what();
+    } catch (const Error&) {
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << path << ": " << e.what();
+    }
+  }
+  EXPECT_GE(inputs.size(), 10u);
+  std::cout << ran_through << " of " << inputs.size() << " structured inputs ran the whole pipeline\n";
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "fixel/error.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 #include "fixel/seating.h"
 #include "test_scenes.h"
 
@@ -56,6 +57,39 @@ TEST(Simulate, RejectsBadStepsAndImpulseLength) {
     EXPECT_EQ(std::string(e.what()), "--steps: 0 must be >= 1");
   }
   EXPECT_THROW(simulate(scene, {vec({-1, -1})}, 1), InputError);
+}
+
+TEST(Simulate, ACancelledRunStopsAtTheNextStepAndSaysWhatWasDone) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  RunControl control;
+  control.cancel = true;
+  try {
+    simulate(scene, {vec({-1, -1, -1})}, 1000000000, &control);
+    FAIL();
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(e.reason(), StopReason::kInterrupted);
+    EXPECT_EQ(std::string(e.what()), "simulate: interrupted after 0 of 1000000000 steps; no result");
+  }
+}
+
+TEST(Simulate, ARunPastItsDeadlineStopsAndReportsProgressOnTheWay) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  RunControl control;
+  control.deadline = RunControl::Clock::now() + std::chrono::milliseconds(300);
+  control.interval = std::chrono::milliseconds(50);
+  long reports = 0;
+  control.on_progress = [&](const char*, long, long total, const char*) {
+    EXPECT_EQ(total, 1000000000);
+    ++reports;
+  };
+  try {
+    simulate(scene, {vec({-1, -1, -1})}, 1000000000, &control);
+    FAIL();
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(e.reason(), StopReason::kTimeLimit);
+    EXPECT_GT(e.done(), 0);
+  }
+  EXPECT_GE(reports, 1);
 }
 
 }  // namespace

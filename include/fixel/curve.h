@@ -73,9 +73,21 @@ struct Boundary {
 };
 
 /// Validates and assembles a boundary: every curve valid, consecutive
-/// curves joined exactly, the loop closed and counter-clockwise with
-/// non-zero area. Throws SceneError naming `path` (e.g. "body.boundary[1]").
+/// curves joined exactly, the loop closed and simple (check_simple_loop),
+/// counter-clockwise with non-zero area. Throws SceneError naming `path`
+/// (e.g. "body.boundary[1]").
 Boundary make_boundary(std::vector<Curve> curves, const std::string& path = "body.boundary");
+
+/// Checks that a closed loop of Bézier pieces (in loop order, each ending
+/// where the next begins) is simple: no two points of the loop coincide
+/// except the shared endpoints of consecutive pieces. Segments are decided
+/// exactly (a CGAL sweep, O(n log n), when every piece is a segment); curved
+/// pieces by their control-polygon hulls, refined by exact de Casteljau
+/// splits until they are separated or a crossing is proven. Throws
+/// SceneError naming `path`, the two curves, their parameters and the point:
+/// "crosses itself", "touches itself", or, when the bounded refinement
+/// cannot decide, a message saying so.
+void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string& path = "body.boundary");
 
 /// Exact mass properties of a closed loop of Bézier pieces.
 MassProperties mass_properties(const std::vector<BezierPiece>& pieces);

@@ -47,4 +47,12 @@ class UnsupportedError : public InputError {
   using InputError::InputError;
 };
 
+/// A broken internal invariant: a bug in fixel, not a problem with the
+/// input. Deliberately not an InputError; the CLI exits 3 on it and asks the
+/// user to report it.
+class InternalError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace fixel

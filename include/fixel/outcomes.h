@@ -11,6 +11,8 @@
 
 namespace fixel {
 
+struct RunControl;
+
 /// What a contact does during the step.
 enum class ContactMode { kOpen, kSlidePlus, kSlideMinus, kStick };
 
@@ -53,8 +55,9 @@ ModeSystem mode_system(const Scene& scene, const std::vector<ContactMode>& modes
 
 /// Every distinct physical outcome of the step LCP at p_ext, by exact
 /// enumeration of the 4^n_c contact modes. Throws InputError if p_ext has the
-/// wrong length.
-std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext);
+/// wrong length. `control` (may be null) is polled once per mode; stopping
+/// throws StoppedError.
+std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext, RunControl* control = nullptr);
 
 /// The physical outcome of an LCP solution z = (p_n, p_f, s) at p_ext.
 Outcome outcome_from_lcp_solution(const Scene& scene, const VectorQ& p_ext, const VectorQ& z);

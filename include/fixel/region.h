@@ -18,6 +18,7 @@ namespace fixel {
 
 struct GuaranteedSet;
 class RegionTarget;
+struct RunControl;
 
 /// Status of a stretch of boundary.
 enum class RegionStatus {
@@ -77,6 +78,9 @@ struct RegionOptions {
   /// Classify against the guaranteed set G instead of S (frictionless
   /// pusher only; G must belong to the same scene and S).
   const GuaranteedSet* guaranteed = nullptr;
+  /// Polled once per segment classified: cancellation, time limit and
+  /// progress (may be null). Stopping throws StoppedError.
+  RunControl* control = nullptr;
 };
 
 /// The pushing region by recursive subdivision (DESIGN §4). Throws
@@ -87,8 +91,11 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
 /// The point-sampling baseline: N uniformly spaced parameters per curve,
 /// u = u_begin + k (u_end − u_begin) / N, k = 0..N−1, each an interval
 /// [u, u] with status in or out (partial where the normal is undefined).
+/// `control` (may be null) is polled once per point; stopping throws
+/// StoppedError.
 Region sample_region(const Scene& scene, const SeatingSet& S, int points_per_curve,
-                     std::optional<Rational> pusher_mu = std::nullopt, const GuaranteedSet* guaranteed = nullptr);
+                     std::optional<Rational> pusher_mu = std::nullopt, const GuaranteedSet* guaranteed = nullptr,
+                     RunControl* control = nullptr);
 
 /// The region against any target (S, G, J: see region_target.h); the
 /// algorithm is the same for every target. The pusher μ defaults to the
@@ -97,7 +104,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
 
 /// The sampling baseline against any target.
 Region sample_region(const Scene& scene, RegionTarget& target, int points_per_curve,
-                     std::optional<Rational> pusher_mu = std::nullopt);
+                     std::optional<Rational> pusher_mu = std::nullopt, RunControl* control = nullptr);
 
 /// Exact point test against any target.
 RegionStatus point_status(const Scene& scene, RegionTarget& target, int curve, const Rational& u,

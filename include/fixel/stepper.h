@@ -10,6 +10,8 @@
 
 namespace fixel {
 
+struct RunControl;
+
 /// The state after one step.
 struct StepRecord {
   VectorQ q;         ///< Configuration (x, y[, θ]) relative to the analysis configuration.
@@ -30,7 +32,9 @@ struct Simulation {
 /// applies impulses[k] when k < impulses.size() and zero afterwards. W_n, W_t
 /// and M stay those of the analysis configuration (docs/theory.md §6).
 /// Throws InputError for steps <= 0 or an impulse of the wrong length, and
-/// Error if Lemke does not solve a step (ray termination or pivot limit).
-Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps);
+/// UnsupportedError if Lemke does not solve a step (ray termination or pivot
+/// limit). `control` (may be null) is polled once per step; stopping throws
+/// StoppedError.
+Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps, RunControl* control = nullptr);
 
 }  // namespace fixel

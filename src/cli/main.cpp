@@ -1,11 +1,18 @@
 // The fixel command line: parses arguments and calls the library.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 
 #include "fixel/error.h"
 #include "fixel/io.h"
 #include "fixel/physics.h"
+#include "fixel/progress.h"
 #include "fixel/region_target.h"
 #include "fixel/scene.h"
 #include "fixel/seated_pose.h"
@@ -16,8 +23,59 @@
 
 namespace {
 
-// Exit codes: 0 success, 1 a verification failed, 2 bad input or usage.
+// Exit codes: 0 success, 1 a verification failed, 2 bad input or usage,
+// 3 a bug in fixel, 4 --max-seconds reached, 130 interrupted (Ctrl-C).
 constexpr int kExitBadInput = 2;
+constexpr int kExitBug = 3;
+constexpr int kExitTimeLimit = 4;
+constexpr int kExitInterrupted = 130;
+constexpr const char* kReportLine =
+    "fixel: this is a bug in fixel, please report it with the command line and the scene file\n";
+
+// The run's control block; the SIGINT handler only sets its lock-free flag.
+fixel::RunControl g_run;
+bool g_progress_shown = false;
+
+extern "C" void on_sigint(int) {
+  g_run.cancel.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+// Progress on stderr, rewriting one line (only installed on a terminal).
+void show_progress(const char* task, long done, long total, const char* unit) {
+  const double seconds = std::chrono::duration<double>(fixel::RunControl::Clock::now() - g_run.start).count();
+  if (total > 0)
+    std::fprintf(stderr, "\r%s: %ld of %ld %s (%.1f%%), %.0f s", task, done, total, unit, 100.0 * done / total,
+                 seconds);
+  else
+    std::fprintf(stderr, "\r%s: %ld %s, %.0f s", task, done, unit, seconds);
+  std::fflush(stderr);
+  g_progress_shown = true;
+}
+
+void end_progress() {
+  if (g_progress_shown) std::fputs("\n", stderr);
+  g_progress_shown = false;
+}
+
+// Arms g_run for a long command: deadline, progress, Ctrl-C.
+void arm_run_control(double max_seconds, bool quiet) {
+  if (max_seconds < 0 || !std::isfinite(max_seconds))
+    throw fixel::InputError("--max-seconds", std::to_string(max_seconds), "must be > 0");
+  if (max_seconds > 0)
+    g_run.deadline = g_run.start + std::chrono::duration_cast<fixel::RunControl::Clock::duration>(
+                                       std::chrono::duration<double>(max_seconds));
+  if (!quiet && isatty(STDERR_FILENO)) g_run.on_progress = show_progress;
+  std::signal(SIGINT, on_sigint);
+}
+
+// Test hook for the exit-3 path: FIXEL_TEST_FAULT=internal or =std.
+void maybe_inject_fault() {
+  const char* fault = std::getenv("FIXEL_TEST_FAULT");
+  if (!fault) return;
+  if (std::string(fault) == "internal") throw fixel::InternalError("injected by FIXEL_TEST_FAULT=internal");
+  if (std::string(fault) == "std") throw std::runtime_error("injected by FIXEL_TEST_FAULT=std");
+}
 
 // A pusher μ, or an interval "lo,hi": the region shrinks as the pusher's μ
 // grows (docs/theory.md §10), so an interval is judged at its upper end.
@@ -67,11 +125,20 @@ int main(int argc, char** argv) {
   simulate->add_option("--impulse", impulse_text, "External impulse of step 1: px,py[,ptheta]")->required();
   simulate->add_option("--steps", steps, "Number of steps (default 1); later steps get no impulse");
   simulate->add_flag("--json", json_out, "Print one JSON document on stdout");
+  double max_seconds = 0;
+  bool quiet = false;
+  auto add_run_options = [&](CLI::App* cmd) {
+    cmd->add_option("--max-seconds", max_seconds, "Stop with exit 4 after this many seconds (default: no limit)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--quiet", quiet, "No progress line on stderr (shown on a terminal after 1 s)");
+  };
+  add_run_options(simulate);
 
   auto* solutions = app.add_subcommand("solutions", "Every outcome of one step (all LCP solutions, by contact mode)");
   solutions->add_option("scene", scene_path, "Scene file (JSON, docs/formats.md)")->required();
   solutions->add_option("--impulse", impulse_text, "External impulse: px,py[,ptheta]")->required();
   solutions->add_flag("--json", json_out, "Print one JSON document on stdout");
+  add_run_options(solutions);
 
   std::string resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path, push_text = "step";
   auto* region = app.add_subcommand("region", "The pushing region by exact recursive subdivision (paper §5)");
@@ -92,6 +159,7 @@ int main(int argc, char** argv) {
   std::string time_text = "20";
   region->add_option("--validate", validate, "Run N pushes per IN interval in Box2D (docs/physics.md)");
   region->add_option("--time", time_text, "With --validate: hold each push for T time steps h (default 20)");
+  add_run_options(region);
 
   int points = 64;
   auto* sample = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
@@ -101,6 +169,7 @@ int main(int argc, char** argv) {
                      "Pusher friction M, or an interval lo,hi (judged at hi); overrides the scene's pusher.mu");
   sample->add_flag("--json", json_out, "Print one JSON document on stdout");
   sample->add_flag("--guaranteed", guaranteed, "Test against G instead of S (frictionless pusher only)");
+  add_run_options(sample);
 
   std::string at_text, push_svg;
   auto* push = app.add_subcommand("push", "Run a constant push in the Box2D physics engine (docs/physics.md)");
@@ -123,6 +192,8 @@ int main(int argc, char** argv) {
   }
 
   try {
+    maybe_inject_fault();
+    if (*simulate || *solutions || *region || *sample) arm_run_control(max_seconds, quiet);
     if (*verify) {
       const auto checks = fixel::run_verification();
       std::cout << (json_out ? fixel::verification_json(checks) : fixel::verification_text(checks));
@@ -132,13 +203,15 @@ int main(int argc, char** argv) {
     }
     const fixel::Scene scene = fixel::load_scene(scene_path);
     if (*simulate) {
-      const auto sim = fixel::simulate(scene, {fixel::parse_impulse(impulse_text, scene.body.dof)}, steps);
+      const auto sim = fixel::simulate(scene, {fixel::parse_impulse(impulse_text, scene.body.dof)}, steps, &g_run);
+      end_progress();
       std::cout << (json_out ? fixel::simulation_json(scene, sim) : fixel::simulation_text(scene, sim));
       return 0;
     }
     if (*solutions) {
       const fixel::VectorQ p = fixel::parse_impulse(impulse_text, scene.body.dof);
-      const auto outcomes = fixel::enumerate_outcomes(scene, p);
+      const auto outcomes = fixel::enumerate_outcomes(scene, p, &g_run);
+      end_progress();
       std::cout << (json_out ? fixel::outcomes_json(scene, p, outcomes) : fixel::outcomes_text(scene, p, outcomes));
       return 0;
     }
@@ -184,9 +257,11 @@ int main(int argc, char** argv) {
       options.resolution = fixel::parse_rational(resolution_text, "--resolution");
       options.cone = cone_text == "paper" ? fixel::ConeMethod::kPaper : fixel::ConeMethod::kTight;
       if (!pusher_mu_text.empty()) options.pusher_mu = parse_pusher_mu(pusher_mu_text);
+      options.control = &g_run;
       const fixel::SustainedSet J = fixel::sustained_set(scene);
       const auto target = fixel::sustained_target(J);
       const auto r = fixel::compute_region(scene, *target, options);
+      end_progress();
       std::optional<fixel::physics::RegionValidation> v;
       if (validate != 0)  // the wrench at q*: what J judges (magnitude free)
         v = fixel::physics::validate_region(scene, r, fixel::physics::seated_push_model(scene), validate, 1,
@@ -228,7 +303,8 @@ int main(int argc, char** argv) {
       if (!pusher_mu_text.empty()) mu = parse_pusher_mu(pusher_mu_text);
       const fixel::Rational used_mu = mu.value_or(scene.pusher_mu_upper());
       if (*sample) {
-        const auto r = fixel::sample_region(scene, S, points, mu, g);
+        const auto r = fixel::sample_region(scene, S, points, mu, g, &g_run);
+        end_progress();
         std::cout << (json_out ? fixel::region_json(scene, r, "sample", std::nullopt, used_mu)
                                : fixel::region_text(scene, r, "sample", std::nullopt, used_mu));
         return 0;
@@ -238,7 +314,9 @@ int main(int argc, char** argv) {
       options.cone = cone_text == "paper" ? fixel::ConeMethod::kPaper : fixel::ConeMethod::kTight;
       options.pusher_mu = mu;
       options.guaranteed = g;
+      options.control = &g_run;
       const auto r = fixel::compute_region(scene, S, options);
+      end_progress();
       std::optional<fixel::physics::RegionValidation> v;
       if (validate != 0) {
         const auto model = fixel::physics::one_step_push_model(scene, S, used_mu);
@@ -263,12 +341,22 @@ int main(int argc, char** argv) {
       for (const auto& path : fixel::dump_off(scene, S, off_dir, length, g)) std::cout << "wrote " << path << "\n";
       return 0;
     }
+  } catch (const fixel::StoppedError& e) {
+    end_progress();
+    std::cerr << "fixel: stopped: " << e.what() << "\n";
+    return e.reason() == fixel::StopReason::kInterrupted ? kExitInterrupted : kExitTimeLimit;
+  } catch (const fixel::InternalError& e) {
+    end_progress();
+    std::cerr << "fixel: internal error: " << e.what() << "\n" << kReportLine;
+    return kExitBug;
   } catch (const fixel::Error& e) {
+    end_progress();
     std::cerr << "fixel: error: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "fixel: internal error: " << e.what() << "\n";
-    return 3;
+    end_progress();
+    std::cerr << "fixel: internal error: " << e.what() << "\n" << kReportLine;
+    return kExitBug;
   }
   return 0;
 }

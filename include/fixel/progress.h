@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// Cancellation, time limit and progress for loops whose length comes from
+/// the input (simulate's steps, sample's points, region's subdivision). The
+/// library only polls; installing signal handlers and exiting is the
+/// caller's business (the CLI sets `cancel` from its SIGINT handler).
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "fixel/error.h"
+
+namespace fixel {
+
+/// Why a run stopped early.
+enum class StopReason { kInterrupted, kTimeLimit };
+
+/// Thrown by RunControl::poll when the run is cancelled or past its
+/// deadline. Not an InputError (the input was fine) and not an
+/// InternalError; `what()` says what was done, e.g. "simulate: interrupted
+/// after 1200 of 100000000 steps".
+class StoppedError : public Error {
+ public:
+  StoppedError(StopReason reason, const std::string& message, long done, long total)
+      : Error(message), reason_(reason), done_(done), total_(total) {}
+  StopReason reason() const { return reason_; }
+  long done() const { return done_; }    ///< Units of work completed.
+  long total() const { return total_; }  ///< Units asked for (0 if unknown).
+
+ private:
+  StopReason reason_;
+  long done_, total_;
+};
+
+/// The hook a long loop polls once per unit of work.
+struct RunControl {
+  using Clock = std::chrono::steady_clock;
+
+  /// Set (from any thread or a signal handler: std::atomic<bool> is
+  /// lock-free) to stop the run at the next poll.
+  std::atomic<bool> cancel{false};
+  /// Stop at the first poll after this time.
+  std::optional<Clock::time_point> deadline;
+  /// Called with (task, done, total, unit) at most every `interval`,
+  /// starting one `interval` after `start`; total is 0 when unknown.
+  std::function<void(const char* task, long done, long total, const char* unit)> on_progress;
+  std::chrono::milliseconds interval{1000};
+  Clock::time_point start = Clock::now();
+
+  /// Throws StoppedError if cancelled or past the deadline; reports progress
+  /// when due. `unit` names the work ("steps", "points", "segments").
+  void poll(const char* task, long done, long total, const char* unit) {
+    if (cancel.load(std::memory_order_relaxed)) stop(StopReason::kInterrupted, task, done, total, unit);
+    const auto now = Clock::now();
+    if (deadline && now >= *deadline) stop(StopReason::kTimeLimit, task, done, total, unit);
+    if (on_progress && now - start >= interval && now >= next_report_) {
+      next_report_ = now + interval;
+      on_progress(task, done, total, unit);
+    }
+  }
+
+ private:
+  [[noreturn]] static void stop(StopReason reason, const char* task, long done, long total, const char* unit) {
+    std::string msg = std::string(task) + ": " +
+                      (reason == StopReason::kInterrupted ? "interrupted" : "time limit reached") + " after " +
+                      std::to_string(done) + (total > 0 ? " of " + std::to_string(total) : "") + " " + unit +
+                      "; no result";
+    throw StoppedError(reason, msg, done, total);
+  }
+  Clock::time_point next_report_{};
+};
+
+/// Polls `control` if there is one.
+inline void poll(RunControl* control, const char* task, long done, long total, const char* unit) {
+  if (control) control->poll(task, done, total, unit);
+}
+
+}  // namespace fixel
