@@ -85,7 +85,7 @@ cat > "$tmp/bow.json" <<'EOF2'
             {"point": ["3","3"], "normal": ["0","-1"], "mu": "0", "gap": "0"},
             {"point": ["2","0"], "normal": ["0","1"], "mu": "0", "gap": "0"}]}
 EOF2
-expect 2 'body.boundary[0]: polygonised outline self-intersects (curve 0' -- "$fixel" push "$tmp/bow.json" --wrench 1,0,0
+expect 2 'the boundary crosses itself' -- "$fixel" push "$tmp/bow.json" --wrench 1,0,0
 expect 2 '--wrench: missing or --at is required' -- "$fixel" push "$tmp/square.json"
 expect 2 'body.boundary: is missing' -- "$fixel" push "$src/data/scenes/example2.json" --wrench -1,-1,-1
 expect 0 '"validation": {' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
