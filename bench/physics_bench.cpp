@@ -25,6 +25,7 @@
 #include "fixel/region.h"
 #include "fixel/scene.h"
 #include "fixel/seating.h"
+#include "random_parts.h"
 
 namespace fp = fixel::physics;
 using fixel::Rational;
@@ -45,66 +46,6 @@ std::string frac(int k, int n) {
 
 std::string row(const Count& c) {
   return " | " + frac(c.at_once, c.n) + " | " + frac(c.at_h, c.n) + " | " + frac(c.sustained, c.n);
-}
-
-// Rational unit vector (cos φ, sin φ) rounded through t = tan(φ/2) = a/1000.
-fixel::Vec2 unit(double phi) {
-  const Rational t(std::lround(std::tan(phi / 2) * 1000), 1000);
-  return {(1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)};
-}
-
-std::string q(const Rational& x) { return "\"" + fixel::to_string(x) + "\""; }
-
-// A random convex polygon as an intersection of half-planes u_k·x ≤ d_k with
-// exact rational unit normals, and 3 fixels on 3 of its edges.
-std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index) {
-  std::uniform_real_distribution<double> U(0, 1);
-  const int K = 5 + static_cast<int>(rng() % 3);
-  std::vector<fixel::Vec2> u;
-  std::vector<Rational> d;
-  for (int k = 0; k < K; ++k) {
-    u.push_back(unit(2 * M_PI * (k + 0.35 * (U(rng) - 0.5)) / K - M_PI));
-    d.push_back(Rational(800 + static_cast<long>(rng() % 400), 1000));
-  }
-  std::vector<fixel::Vec2> v;  // vertex k = line k ∩ line k+1
-  for (int k = 0; k < K; ++k) {
-    const auto &a = u[k], &b = u[(k + 1) % K];
-    const Rational det = a.x * b.y - a.y * b.x;
-    if (det <= 0) return std::nullopt;
-    v.push_back({(d[k] * b.y - d[(k + 1) % K] * a.y) / det, (a.x * d[(k + 1) % K] - b.x * d[k]) / det});
-  }
-  for (const auto& p : v)
-    for (int k = 0; k < K; ++k)
-      if (u[k].x * p.x + u[k].y * p.y > d[k]) return std::nullopt;  // a line cut off an edge
-  // Edge k runs from v[k-1] to v[k] on line k; inward normal −u_k.
-  std::vector<int> edges;
-  while (edges.size() < 3) {
-    const int e = static_cast<int>(rng() % K);
-    if (std::find(edges.begin(), edges.end(), e) == edges.end()) edges.push_back(e);
-  }
-  std::ostringstream s;
-  s << "{\"name\": \"random" << index << "\", \"time_step\": \"1\", \"body\": {\"dof\": 3, \"mass\": \"1\", "
-    << "\"velocity\": [\"0\",\"0\",\"0\"], \"boundary\": [{\"type\": \"polyline\", \"points\": [";
-  for (int k = 0; k <= K; ++k) s << (k ? "," : "") << "[" << q(v[k % K].x) << "," << q(v[k % K].y) << "]";
-  s << "]}]}, \"fixels\": [";
-  for (int i = 0; i < 3; ++i) {
-    const int e = edges[i];
-    const auto &a = v[(e + K - 1) % K], &b = v[e];
-    const Rational t(250 + static_cast<long>(rng() % 500), 1000);
-    const Rational gap(static_cast<long>(rng() % 100) + 1, 1000);
-    const Rational mu(static_cast<long>(rng() % 126), 1000);  // μ ≤ 1/8
-    s << (i ? "," : "") << "{\"point\": [" << q(a.x + t * (b.x - a.x)) << "," << q(a.y + t * (b.y - a.y))
-      << "], \"normal\": [" << q(-u[e].x) << "," << q(-u[e].y) << "], \"mu\": " << q(mu) << ", \"gap\": " << q(gap)
-      << "}";
-  }
-  s << "]}";
-  try {
-    fixel::Scene scene = fixel::parse_scene(s.str());
-    fixel::seating_set(scene);  // W_n must be nonsingular
-    return scene;
-  } catch (const fixel::Error&) {
-    return std::nullopt;
-  }
 }
 
 // Runs p as p/h for h and as a sustained push.
@@ -163,7 +104,7 @@ int main(int argc, char** argv) {
   }
   std::mt19937_64 rng(seed);
   for (int k = 0, added = 0; added < random_parts && k < 1000; ++k)
-    if (auto s = random_part(rng, k)) parts.push_back(*s), ++added;
+    if (auto s = bench::random_part(rng, k)) parts.push_back(*s), ++added;
 
   std::cout << "| part | in S: p at once | in S: p/h for h | in S: sustained | outside S: p at once | "
                "outside S: p/h for h | outside S: sustained | region: p at once | region: p/h for h | "

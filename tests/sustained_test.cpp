@@ -8,6 +8,7 @@
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/region.h"
+#include "fixel/physics.h"
 #include "fixel/region_target.h"
 #include "test_scenes.h"
 
@@ -297,6 +298,29 @@ GTEST_TEST(SustainedRegion, AFrictionalPusherInIsInForTheWholeFan) {
     const Rational u = (r.u0 + r.u1) / 2;
     EXPECT_EQ(point_status(scene, *target, r.curve, u, Rational(0)), RegionStatus::kIn);
   }
+}
+
+}  // namespace
+}  // namespace fixel
+
+namespace fixel {
+namespace {
+
+// The engine check of the central claim, kept short: a few pushes from the
+// polygon's sustained IN interval must seat in Box2D (docs/physics.md).
+GTEST_TEST(SustainedRegion, PushesFromItsInIntervalSeatInBox2D) {
+  const Scene scene = scene_file("polygon");
+  const SustainedSet J = sustained_set(scene);
+  auto target = sustained_target(J);
+  RegionOptions options;
+  options.resolution = Rational(1, 64);
+  const Region region = compute_region(scene, *target, options);
+  physics::PushOptions push;
+  push.time = 10;
+  push.trajectory_samples = 1;
+  const auto v = physics::validate_region(scene, region, physics::seated_push_model(scene), 3, 1, push);
+  ASSERT_GT(v.total.pushes, 0);
+  EXPECT_EQ(v.total.seated, v.total.pushes);
 }
 
 }  // namespace
