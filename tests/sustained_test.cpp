@@ -7,8 +7,8 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
-#include "fixel/region.h"
 #include "fixel/physics.h"
+#include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "test_scenes.h"
 

@@ -13,7 +13,6 @@
 namespace fixel {
 namespace {
 
-
 // The exact contact wrench (d, r ⊗ d) at local parameter s of a segment.
 VectorQ exact_wrench(const BezierPiece& seg, const Rational& s, const Vec2& com, const Vec2& d) {
   return contact_wrench(sub(seg.point(s), com), d, 3);
