@@ -1,4 +1,4 @@
-// The physics check on Box2D 2.4 (DESIGN §7; definitions in docs/physics.md).
+// The physics check on Box2D 2.4.
 // The engine is a measuring instrument: its floats never feed an exact
 // decision, they only produce an outcome that we report.
 #include "fixel/physics.h"

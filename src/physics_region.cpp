@@ -1,5 +1,5 @@
 // Push wrenches at boundary points, and the validation of a pushing region
-// through the engine (DESIGN §7, "region --validate").
+// through the engine ("region --validate", docs/physics.md).
 #include <cmath>
 #include <random>
 

@@ -1,9 +1,13 @@
 // The part as a polygon for the physics engine: curves flattened within a
 // chordal tolerance, then split into convex pieces with CGAL's 2-D partition.
-// Everything here is an engine input, so doubles are fine (DESIGN §1 (b)).
+// Everything here is an engine input, so doubles are fine (docs/physics.md).
+// GCC 12 reports a false -Wmaybe-uninitialized inside CGAL's Epic_converter.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
+#pragma GCC diagnostic pop
 
 #include <algorithm>
 #include <cmath>

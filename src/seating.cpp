@@ -33,7 +33,7 @@ SeatingSet seating_set(const Scene& scene) {
     const int sigma = sign(S.tangential_velocity[i]);
     S.sliding.push_back(sigma);
     if (sigma == 0) {
-      // Sticking (DESIGN §3): the friction impulse may lie anywhere in the
+      // Sticking: the friction impulse may lie anywhere in the
       // cone, so both edges W_n ± μ W_t generate (one when μ = 0).
       for (int s : {1, -1}) {
         const VectorQ g = W.Wn.col(i) + Rational(s) * scene.fixels[i].mu * W.Wt.col(i);

@@ -30,7 +30,6 @@ constexpr int kMaxDepth = 24;          // refinements of one pair before "undeci
 constexpr int kMaxMonotoneDepth = 16;  // splits of one piece into monotone sub-pieces
 constexpr long kBudget = 400000;       // pair evaluations for the whole loop
 
-bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 int orient(const Vec2& a, const Vec2& b, const Vec2& c) { return sign(cross(sub(b, a), sub(c, a))); }
 Vec2 along(const Vec2& p, const Vec2& d, const Rational& t) { return {p.x + t * d.x, p.y + t * d.y}; }
 Rational at(const BezierPiece& piece, const Rational& s) { return piece.u0 + s * (piece.u1 - piece.u0); }

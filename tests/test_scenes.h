@@ -119,15 +119,21 @@ inline Scene random_blob_scene(std::mt19937_64& rng, const Rational& pusher_mu =
   };
   const Rational y1 = random_rational(rng, -1, 0, 8), x2 = random_rational(rng, -1, 0, 8),
                  x3 = random_rational(rng, 0, 1, 8) + Rational(1, 4);
-  s.fixels = {
-      Fixel{
-          {Rational(-3, 2), y1}, tilt({1, 0}), random_rational(rng, 0, 1, 10) / 3, random_rational(rng, 1, 3, 20) / 10},
-      Fixel{
-          {x2, Rational(-3, 2)}, tilt({0, 1}), random_rational(rng, 0, 1, 10) / 3, random_rational(rng, 1, 3, 20) / 10},
-      Fixel{{x3, Rational(-3, 2)},
-            tilt({0, 1}),
-            random_rational(rng, 0, 1, 10) / 3,
-            random_rational(rng, 1, 3, 20) / 10}};
+  s.fixels = {Fixel{{Rational(-3, 2), y1},
+                    tilt({1, 0}),
+                    random_rational(rng, 0, 1, 10) / 3,
+                    random_rational(rng, 1, 3, 20) / 10,
+                    std::nullopt},
+              Fixel{{x2, Rational(-3, 2)},
+                    tilt({0, 1}),
+                    random_rational(rng, 0, 1, 10) / 3,
+                    random_rational(rng, 1, 3, 20) / 10,
+                    std::nullopt},
+              Fixel{{x3, Rational(-3, 2)},
+                    tilt({0, 1}),
+                    random_rational(rng, 0, 1, 10) / 3,
+                    random_rational(rng, 1, 3, 20) / 10,
+                    std::nullopt}};
   s.pusher_mu = pusher_mu;
   s.background_impulse = VectorQ::Zero(3);
   return s;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The part's boundary: polylines and B-splines with exact rational control
-/// points, their exact Bézier pieces, and exact mass properties (DESIGN §4, §5).
+/// points, their exact Bézier pieces, and exact mass properties.
 
 #include <string>
 #include <utility>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Result documents: the JSON contract of DESIGN §5 and readable reports.
+/// Result documents: the JSON contract of docs/formats.md and readable reports.
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The physics check (DESIGN §7): a push run in a real engine (Box2D), not
+/// The physics check: a push run in a real engine (Box2D), not
 /// in fixel's own model. Everything here is a *measurement*: the engine works
 /// in floating point, so its outcome is evidence about a plan, never a
 /// decision of fixel's exact analysis. No engine type appears in this header.
@@ -155,7 +155,7 @@ using PushModel = std::function<Wrench(const RegionInterval& interval, const Rat
 /// references to `scene` and `S`: both must outlive it.
 PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rational& pusher_mu);
 
-/// The sustained-push model (DESIGN §7): the frictionless push wrench of
+/// The sustained-push model: the frictionless push wrench of
 /// push_wrench_at at the seated pose q* (fixel::seated_pose, solved once
 /// here), scaled to |force| = `force` N. Throws what seated_pose throws.
 /// The model keeps a reference to `scene`, which must outlive it.

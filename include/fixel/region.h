@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The pushing region (paper §5; DESIGN §4): where on the boundary a single
+/// The pushing region (paper §5): where on the boundary a single
 /// push seats the part, and how hard to push.
 
 #include <optional>
@@ -83,7 +83,7 @@ struct RegionOptions {
   RunControl* control = nullptr;
 };
 
-/// The pushing region by recursive subdivision (DESIGN §4). Throws
+/// The pushing region by recursive subdivision. Throws
 /// InputError for a non-positive resolution or negative μ, and SceneError if
 /// the scene has no boundary.
 Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options);

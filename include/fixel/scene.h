@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The scene: a planar part (or point mass) near its fixels. DESIGN §2, §5.
+/// The scene: a planar part (or point mass) near its fixels (docs/formats.md).
 
 #include <memory>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The set S of external impulses that seat the part in one time step
-/// (paper §3, eqs. (19)–(27); DESIGN §3).
+/// (paper §3, eqs. (19)–(27)).
 
 #include <string>
 #include <vector>

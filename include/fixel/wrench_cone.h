@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Conservative cones of the contact wrenches a boundary segment can deliver
-/// (paper §4; DESIGN §4).
+/// (paper §4).
 
 #include <optional>
 #include <string>
