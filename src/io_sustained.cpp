@@ -80,6 +80,7 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
   sustained["empty"] = J.pieces_decided ? json(J.empty) : json(nullptr);
   if (J.empty) sustained["empty_reason"] = J.empty_reason;
   sustained["strongly_stable"] = J.strongly_stable;
+  sustained["stability_checks"] = J.stability_checks;
   json mu = json::array();
   for (const auto& m : J.mu) mu.push_back(to_string(m));
   sustained["mu"] = mu;
@@ -166,7 +167,8 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
     out << "J is EMPTY: no single sustained push can be trusted to seat this part: " << J.empty_reason << ".\n";
   } else {
     out << "J: " << J.pieces.size() << " convex cone piece(s); any push magnitude works (J is a cone).\n";
-    out << "strongly stable at the seat for every w in J: " << (J.strongly_stable ? "yes" : "no") << "\n";
+    out << "strongly stable at the seat for every w in J: " << (J.strongly_stable ? "yes" : "no")
+        << " (theorem; contact-mode enumeration checked " << J.stability_checks << " wrench(es))\n";
   }
   out << "cone {w : -w in int cone(W_n*)}: rays (fx, fy, m) ~";
   for (const auto& r : J.cone.rays)

@@ -4,8 +4,7 @@
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
-#include "fixel/internal/interval_arith.h"
-#include "fixel/internal/quadratic_field.h"
+#include "fixel/internal/cone3.h"
 #include "fixel/region_target.h"
 
 namespace fixel {
@@ -40,169 +39,6 @@ struct SustainedData {
 };
 
 namespace {
-
-template <class NT>
-using A3 = std::array<NT, 3>;
-
-template <class NT>
-NT dot3(const A3<NT>& a, const A3<NT>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-template <class NT>
-A3<NT> cross3(const A3<NT>& a, const A3<NT>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-template <class NT>
-A3<NT> neg3(const A3<NT>& a) {
-  return {-a[0], -a[1], -a[2]};
-}
-
-Q2 lift_number(const Rational& x, const Q2*) { return Q2(x); }
-IV lift_number(const Rational& x, const IV*) { return enclose(x); }
-template <class NT>
-A3<NT> lift3(const VectorQ& v) {
-  const NT* tag = nullptr;
-  return {lift_number(v[0], tag), lift_number(v[1], tag), lift_number(v[2], tag)};
-}
-
-// a·x ≥ b (or > b when strict).
-template <class NT>
-struct Row {
-  A3<NT> a;
-  NT b;
-  bool strict = false;
-};
-
-constexpr std::size_t kMaxRows = 200000;  // bounds Fourier–Motzkin on any input
-
-// Feasibility of a system in three unknowns by Fourier–Motzkin with
-// strictness tracking (docs/theory.md §10.2). Exact over Q(√d); over
-// intervals it throws Undecided when a sign is not certain.
-template <class NT>
-bool feasible(std::vector<Row<NT>> rows) {
-  for (int j = 2; j >= -1; --j) {
-    std::vector<Row<NT>> pos, neg, next;
-    for (auto& r : rows) {
-      bool zero = true;
-      for (int k = 0; k <= std::max(j, 0) && zero; ++k) zero = sign(r.a[k]) == 0;
-      if (j < 0 || zero) {  // no unknown left in this row: 0 ≥ b or 0 > b decides itself
-        bool all_zero = true;
-        for (int k = 0; k < 3; ++k) all_zero = all_zero && sign(r.a[k]) == 0;
-        if (all_zero) {
-          const int sb = sign(r.b);
-          if (r.strict ? sb >= 0 : sb > 0) return false;
-          continue;
-        }
-      }
-      if (j < 0) continue;
-      const int s = sign(r.a[j]);
-      (s > 0 ? pos : (s < 0 ? neg : next)).push_back(r);
-    }
-    if (j < 0) return true;
-    if (pos.size() * neg.size() + next.size() > kMaxRows)
-      throw InternalError("sustained set: Fourier-Motzkin exceeded " + std::to_string(kMaxRows) + " rows");
-    for (const auto& P : pos)
-      for (const auto& N : neg) {
-        const NT wp = -N.a[j], wn = P.a[j];  // both > 0
-        Row<NT> r;
-        for (int k = 0; k < 3; ++k) r.a[k] = wp * P.a[k] + wn * N.a[k];
-        r.a[j] = NT(0);
-        r.b = wp * P.b + wn * N.b;
-        r.strict = P.strict || N.strict;
-        next.push_back(r);
-      }
-    rows = std::move(next);
-  }
-  return true;
-}
-
-template <class NT>
-bool is_zero3(const A3<NT>& a) {
-  return sign(a[0]) == 0 && sign(a[1]) == 0 && sign(a[2]) == 0;
-}
-
-// Duplicate rows only cost time: an undecidable comparison keeps both.
-template <class NT>
-void add_unique(std::vector<A3<NT>>& out, const A3<NT>& a) {
-  for (const auto& q : out) try {
-      if (is_zero3(cross3(q, a)) && sign(dot3(q, a)) > 0) return;
-    } catch (const Undecided&) {
-    }
-  out.push_back(a);
-}
-
-// +1 if a·g >= 0 for all g, −1 if <= 0 for all, 0 otherwise; the generators
-// `skip_i`, `skip_j` (those a was built from) are on the plane by construction.
-template <class NT>
-int supporting_side(const A3<NT>& a, const std::vector<A3<NT>>& gens, std::size_t skip_i, std::size_t skip_j) {
-  bool nonneg = true, nonpos = true;
-  for (std::size_t k = 0; k < gens.size(); ++k) {
-    if (k == skip_i || k == skip_j) continue;
-    const int s = sign(dot3(a, gens[k]));
-    nonneg = nonneg && s >= 0;
-    nonpos = nonpos && s <= 0;
-  }
-  return nonneg ? 1 : (nonpos ? -1 : 0);
-}
-
-// Closed rows of cone(gens) ⊂ R³. `planar` (known exactly: both fixels
-// frictionless) gives the plane as two opposite rows plus its edge rows.
-template <class NT>
-std::vector<A3<NT>> facets_of(const std::vector<A3<NT>>& gens, bool planar) {
-  std::vector<A3<NT>> out;
-  if (planar) {
-    const A3<NT> n = cross3(gens[0], gens[1]);
-    out.push_back(n);
-    out.push_back(neg3(n));
-    for (std::size_t k = 0; k < gens.size(); ++k) {
-      const A3<NT> e = cross3(n, gens[k]);  // in the plane, normal to gens[k]
-      const int side = supporting_side(e, gens, k, k);
-      if (side != 0) add_unique(out, side > 0 ? e : neg3(e));
-    }
-    return out;
-  }
-  for (std::size_t i = 0; i < gens.size(); ++i)
-    for (std::size_t j = i + 1; j < gens.size(); ++j) {
-      const A3<NT> c = cross3(gens[i], gens[j]);
-      const int side = supporting_side(c, gens, i, j);
-      if (side != 0) add_unique(out, side > 0 ? c : neg3(c));
-    }
-  return out;
-}
-
-template <class NT>
-bool satisfies(const A3<NT>& x, const std::vector<A3<NT>>& closed, const std::vector<A3<NT>>& strict) {
-  for (const auto& a : closed)
-    if (sign(dot3(a, x)) < 0) return false;
-  for (const auto& a : strict)
-    if (sign(dot3(a, x)) <= 0) return false;
-  return true;
-}
-
-// Extreme rays of the pointed cone {a·x ≥ 0 for every row}.
-template <class NT>
-std::vector<A3<NT>> rays_of(const std::vector<A3<NT>>& rows) {
-  std::vector<A3<NT>> out;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    for (std::size_t j = i + 1; j < rows.size(); ++j) {
-      const A3<NT> c = cross3(rows[i], rows[j]);
-      if (is_zero3(c)) continue;
-      for (const A3<NT>& r : {c, neg3(c)}) {
-        bool ok = true;
-        for (std::size_t k = 0; k < rows.size() && ok; ++k)
-          if (k != i && k != j) ok = sign(dot3(rows[k], r)) >= 0;
-        if (ok) add_unique(out, r);
-      }
-    }
-  return out;
-}
-
-template <class NT>
-std::vector<Row<NT>> homogeneous(const std::vector<A3<NT>>& rows, bool strict) {
-  std::vector<Row<NT>> out;
-  for (const auto& a : rows) out.push_back({a, NT(0), strict});
-  return out;
-}
 
 // J's convex pieces: int K minus each jam cone, choosing for each jam cone
 // the first facet it violates (so the pieces are disjoint); empty ones are
@@ -527,6 +363,7 @@ SustainedSet sustained_set(const Scene& scene) {
   }
   std::visit([&](const auto& data) { internal::fill_public(J, data); }, d->data);
   J.data = d;
+  J.stability_checks = check_strong_stability(scene, J);
   return J;
 }
 

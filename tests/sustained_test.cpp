@@ -227,6 +227,9 @@ GTEST_TEST(SustainedSet, FrictionIntervalsAreJudgedAtTheirUpperEnds) {
 GTEST_TEST(SustainedSet, PiecesAreDisjointAndTheirUnionIsJ) {
   const SustainedSet J = sustained_set(square());
   ASSERT_FALSE(J.pieces.empty());
+  // Strong stability, checked by contact-mode enumeration at the (rational) seat.
+  EXPECT_EQ(J.stability_checks, static_cast<int>(J.pieces.size()));
+  EXPECT_TRUE(J.strongly_stable);
   std::mt19937_64 rng(5);
   const MatrixQ Wn = normal_matrix(square());
   int in = 0;

@@ -60,9 +60,12 @@ struct SustainedSet {
   std::string empty_reason;
   /// Every solution of the acceleration-level contact LCP at the seat keeps
   /// the part at rest with every contact loaded, for every w in J
-  /// (docs/theory.md §10: true by the theorem there whenever the seat is
-  /// non-degenerate; vacuous when J is empty).
+  /// (docs/theory.md §10.3: true by the theorem there whenever the seat is
+  /// non-degenerate; vacuous when J is empty), and checked by enumerating
+  /// every contact mode of the step LCP at the seat for one wrench inside
+  /// each piece when q* is rational (`stability_checks` counts them).
   bool strongly_stable = false;
+  int stability_checks = 0;
   /// Friction used per fixel (the upper end of an interval: J shrinks as μ
   /// grows, so J at the upper ends is the robust set).
   std::vector<Rational> mu;
@@ -76,6 +79,12 @@ struct SustainedSet {
   /// ("can escape: ..." or "fixels[0] and fixels[1] can hold the part ...").
   std::string why_not(const VectorQ& w_W) const;
 };
+
+/// Checks strong stability by contact-mode enumeration at the seat, for one
+/// wrench inside each piece of J, when q* is rational; clears
+/// J.strongly_stable if an outcome moves. Returns the number of wrenches
+/// checked (0 when q* is irrational or J is empty).
+int check_strong_stability(const Scene& scene, SustainedSet& J);
 
 /// Computes q* and J. Throws what seated_pose throws, SceneError when W_n*
 /// is singular (a degenerate seat), and InputError for dof != 3.
