@@ -1,5 +1,6 @@
 // The one-step targets of the pushing region: the seating set S and the
 // guaranteed set G (docs/theory.md §8, §9), behind RegionTarget.
+#include <algorithm>
 #include <memory>
 
 #include "fixel/error.h"
@@ -73,8 +74,10 @@ class SeatingTarget final : public RegionTarget {
                      RegionInterval* detail) override {
     std::vector<Magnitudes> T;
     bool all_half = true;
+    hits_.clear();
     for (const auto& g : gens) {
       T.push_back(ray_magnitudes(S_, b0_, g));
+      hits_.emplace_back(g, !T.back().empty);
       if (T.back().empty) return false;
       all_half = all_half && T.back().half_line();
     }
@@ -90,7 +93,12 @@ class SeatingTarget final : public RegionTarget {
   // cone from b0, so a cap would also cap the push magnitude.)
   bool misses(const std::vector<VectorQ>& gens) override {
     bool some_miss = false;
-    for (const auto& g : gens) some_miss = some_miss || ray_magnitudes(S_, b0_, g).empty;
+    for (const auto& g : gens) {
+      // The region asks misses() right after contains_cone() on the same
+      // generators: reuse those ray tests.
+      const auto cached = std::find_if(hits_.begin(), hits_.end(), [&](const auto& h) { return h.first == g; });
+      some_miss = some_miss || (cached != hits_.end() ? !cached->second : ray_magnitudes(S_, b0_, g).empty);
+    }
     if (!some_miss) return false;
     if (stats) ++stats->lp_tests;
     const int n = static_cast<int>(gens.size());
@@ -110,6 +118,7 @@ class SeatingTarget final : public RegionTarget {
  private:
   const SeatingSet& S_;
   VectorQ b0_;
+  std::vector<std::pair<VectorQ, bool>> hits_;  // generators of the last contains_cone call
 };
 
 // The guaranteed set G: a disjoint union of convex pieces.
