@@ -159,4 +159,9 @@ if [ "$rc" -ne 130 ] || ! grep -qE 'simulate: interrupted after [0-9]+ of 100000
   echo "FAIL: SIGINT to simulate -> exit $rc (want 130), output:"; head -3 "$tmp/int.out"; fail=1
 fi
 
+# Input checks run before any output: a dof-2 scene cannot have the S/G slice picture.
+out=$("$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1.svg" 2>/dev/null); rc=$?
+if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: seat example1 --guaranteed --svg -> exit $rc, stdout '$out'"; fail=1; fi
+expect 2 'the S/G picture needs dof 3' -- "$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1.svg"
+
 exit $fail

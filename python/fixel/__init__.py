@@ -24,7 +24,7 @@ __all__ = [
     "Error", "InputError", "ParseError", "SceneError", "UnsupportedError",
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
-    "to_off", "to_svg", "SustainedSet", "sustained_set",
+    "to_off", "to_svg", "SustainedSet", "sustained_set", "push",
 ]  # fmt: skip
 
 
@@ -279,6 +279,22 @@ class SustainedSet:
 
     def __contains__(self, w):
         return self.contains(w)
+
+
+def push(scene, wrench=None, at=None, time=20):
+    """Run a held push in Box2D (``fixel push``): a measurement, not a
+    decision. ``wrench`` (exact, world frame: force through the centre of
+    mass, moment about it) or ``at="K:U"`` (a frictionless unit push at
+    parameter U of curve K, at the seated pose). Returns the ``fixel push
+    --json`` document as a dict: "outcome" is "seated", "jammed", "escaped"
+    or "timeout"."""
+    scene = _scene(scene)
+    if (wrench is None) == (at is None):
+        raise InputError.make("wrench", repr(wrench), "give exactly one of wrench= and at=")
+    w = None if wrench is None else vector(wrench, "wrench")
+    if at is not None and not isinstance(at, str):
+        raise TypeError(f"at: {at!r} is not a string 'K:U'")
+    return json.loads(_fixel.push(scene._impl, w, at, text(time, "time")))
 
 
 def sustained_set(scene):

@@ -8,6 +8,7 @@
 
 #include "bindings.h"
 #include "fixel/io.h"
+#include "fixel/physics.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
@@ -40,6 +41,27 @@ void bind_sustained(py::module_& m) {
   });
   m.def("sustained_json", [](const ScenePtr& scene, const SustainedPtr& J) {
     return sustained_json(checked(scene, "scene"), checked(J, "sustained"), std::nullopt);
+  });
+  // The Box2D check: the `fixel push --json` document (a measurement).
+  m.def("push", [](const ScenePtr& scene, const std::optional<std::vector<std::string>>& wrench,
+                   const std::optional<std::string>& at, const std::string& time) {
+    const Scene& s = checked(scene, "scene");
+    physics::PushOptions options;
+    options.time = parse_rational(time, "time");
+    if (options.time <= 0) throw InputError("time", time, "must be > 0");
+    physics::Wrench w;
+    if (at) {
+      const auto point = physics::parse_curve_point(s, *at, "at");
+      const auto q = seated_pose(s).approx;
+      w = physics::push_wrench_at(s, point.curve, point.u, {q[0], q[1], q[2]}, "at");
+    } else if (wrench) {
+      w = physics::to_wrench(exact_vector(*wrench, s.body.dof, "wrench"), s.body.dof, "wrench");
+    } else {
+      throw InputError("wrench", "None", "or at= is required");
+    }
+    py::gil_scoped_release release;
+    const auto r = physics::push(s, w, options);
+    return physics::push_json(s, w, r);
   });
   m.def("compute_region_sustained", [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution,
                                        const std::string& cone, const std::optional<std::string>& pusher_mu) {

@@ -220,3 +220,15 @@ def test_sustained_region_matches_the_cli():
         (d["curve"], F(d["u0"]), F(d["u1"]), d["status"]) for d in cli["intervals"]
     ]
     assert any(i.status == "in" for i in r.intervals)
+
+
+def test_push_runs_the_engine_and_agrees_with_the_cli():
+    path = SCENE_DIR / "polygon.json"
+    r = fixel.push(fixel.Scene.load(path), wrench=[-1, -1, 0], time=5)
+    code, out, err = run_cli("push", path, "--wrench", "-1,-1,0", "--time", "5", "--json")
+    assert code == 0, err
+    assert r["outcome"] == json.loads(out)["outcome"] == "seated"
+    with pytest.raises(TypeError):
+        fixel.push(fixel.Scene.load(path), wrench=[-1.0, -1, 0])
+    with pytest.raises(fixel.InputError):
+        fixel.push(fixel.Scene.load(path))
