@@ -271,8 +271,7 @@ void write_sustained_region_svg(const std::string& path, const Scene& scene, con
     jams.push_back(jam.cone.exact ? rows(jam.cone.closed) : mids(jam.cone.closed_enclosure));
   Picture pic;
   pic.in_label = "in: sustained push seats and stays (J)";
-  pic.shade_caption =
-      "shaded blue: wrench directions in J; orange: driven into the seat but a pair of fixels can hold it";
+  pic.shade_caption = "blue: directions in J; orange: into the seat, but two fixels can hold it";
   pic.push_caption = "push model: sustained (a held wrench, judged at the seated pose q*; dashed: the part at q*)";
   pic.ghost = J.pose.approx;
   pic.shade = [=](double fx, double fy, double m) {
