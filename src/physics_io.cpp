@@ -165,7 +165,7 @@ std::string validation_text(const Region& region, const RegionValidation& v) {
     if (v.intervals[i])
       out << "  validated curve " << region.intervals[i].curve << " u in [" << to_string(region.intervals[i].u0) << ", "
           << to_string(region.intervals[i].u1) << "]: " << counts_text(*v.intervals[i]) << "\n";
-  out << "validation (Box2D 2.4, p/h held for " << to_string(v.options.time) << " h, seed " << v.seed
+  out << "validation (Box2D 2.4, " << v.model << ", T = " << to_string(v.options.time) << " h, seed " << v.seed
       << "): " << counts_text(v.total) << "\n";
   return out.str();
 }

@@ -266,6 +266,7 @@ int main(int argc, char** argv) {
       if (validate != 0)  // the wrench at q*: what J judges (magnitude free)
         v = fixel::physics::validate_region(scene, r, fixel::physics::seated_push_model(scene), validate, 1,
                                             push_options);
+      if (v) v->model = "sustained push: the unit wrench at q* held for T";
       if (json_out) {
         const std::string doc = fixel::region_json(scene, r, cone_text, options.resolution, r.pusher_mu);
         std::cout << (v ? fixel::physics::add_validation_json(doc, *v) : doc);
