@@ -90,18 +90,7 @@ int main(int argc, char** argv) {
   sustained.time = fixel::parse_rational(time);
   sustained.trajectory_samples = 1;
 
-  std::vector<fixel::Scene> parts;
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(FIXEL_SOURCE_DIR) + "/data/scenes"))
-    files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
-    try {
-      fixel::Scene s = fixel::load_scene(f);
-      if (s.body.boundary && s.body.dof == 3) parts.push_back(s);
-    } catch (const fixel::Error&) {
-    }
-  }
+  std::vector<fixel::Scene> parts = bench::bundled_parts(std::string(FIXEL_SOURCE_DIR) + "/data/scenes");
   std::mt19937_64 rng(seed);
   for (int k = 0, added = 0; added < random_parts && k < 1000; ++k)
     if (auto s = bench::random_part(rng, k)) parts.push_back(*s), ++added;

@@ -3,6 +3,7 @@
 // gaps up to 1/10, mu <= 1/8), shared by the physics studies.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -75,6 +76,20 @@ inline std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index) 
   } catch (const fixel::Error&) {
     return std::nullopt;
   }
+}
+
+// The bundled scenes with a boundary (dof 3), in file-name order.
+inline std::vector<fixel::Scene> bundled_parts(const std::string& scene_dir) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(scene_dir)) files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  std::vector<fixel::Scene> parts;
+  for (const auto& f : files) try {
+      fixel::Scene s = fixel::load_scene(f);
+      if (s.body.boundary && s.body.dof == 3) parts.push_back(s);
+    } catch (const fixel::Error&) {
+    }
+  return parts;
 }
 
 }  // namespace bench

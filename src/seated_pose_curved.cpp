@@ -134,6 +134,21 @@ void residual(const std::vector<Contact>& cs, const P2<T>& cm, const std::array<
   }
 }
 
+// The Newton step −J(z)⁻¹ F(z) in double; F(z) is returned in `F`.
+Eigen::Matrix<double, kUnknowns, 1> newton_step(const std::vector<Contact>& cs, const P2<double>& cm,
+                                                const std::array<double, kUnknowns>& z,
+                                                std::array<double, kUnknowns>& F) {
+  std::array<std::array<double, kUnknowns>, kUnknowns> J;
+  residual<double>(cs, cm, z, &F, &J);
+  Eigen::Matrix<double, kUnknowns, kUnknowns> A;
+  Eigen::Matrix<double, kUnknowns, 1> rhs;
+  for (int r = 0; r < kUnknowns; ++r) {
+    rhs[r] = -F[r];
+    for (int k = 0; k < kUnknowns; ++k) A(r, k) = J[r][k];
+  }
+  return A.fullPivLu().solve(rhs);
+}
+
 std::string fixel_path(int i) { return "fixels[" + std::to_string(i) + "]"; }
 
 }  // namespace
@@ -196,15 +211,7 @@ SeatedPose seated_pose_curved(const Scene& scene) {
   };
   for (int it = 0; it < 400; ++it) {
     std::array<double, kUnknowns> F;
-    std::array<std::array<double, kUnknowns>, kUnknowns> J;
-    residual<double>(cs, cm, z, &F, &J);
-    Eigen::Matrix<double, kUnknowns, kUnknowns> A;
-    Eigen::Matrix<double, kUnknowns, 1> rhs;
-    for (int r = 0; r < kUnknowns; ++r) {
-      rhs[r] = -F[r];
-      for (int k = 0; k < kUnknowns; ++k) A(r, k) = J[r][k];
-    }
-    const Eigen::Matrix<double, kUnknowns, 1> dz = A.fullPivLu().solve(rhs);
+    const auto dz = newton_step(cs, cm, z, F);
     if (!dz.allFinite()) throw SceneError("fixels", "", "have no seated pose (singular contact conditions)");
     const double before = norm(F);
     double step = 1;
@@ -230,15 +237,7 @@ SeatedPose seated_pose_curved(const Scene& scene) {
   switch_pieces(0);  // the enclosure must lie on the piece's own parameter range
   for (int it = 0; it < 20; ++it) {
     std::array<double, kUnknowns> F;
-    std::array<std::array<double, kUnknowns>, kUnknowns> J;
-    residual<double>(cs, cm, z, &F, &J);
-    Eigen::Matrix<double, kUnknowns, kUnknowns> A;
-    Eigen::Matrix<double, kUnknowns, 1> rhs;
-    for (int r = 0; r < kUnknowns; ++r) {
-      rhs[r] = -F[r];
-      for (int k = 0; k < kUnknowns; ++k) A(r, k) = J[r][k];
-    }
-    const Eigen::Matrix<double, kUnknowns, 1> dz = A.fullPivLu().solve(rhs);
+    const auto dz = newton_step(cs, cm, z, F);
     for (int k = 0; k < kUnknowns; ++k) z[k] += dz[k];
   }
   for (int i = 0; i < nc; ++i)
