@@ -11,7 +11,9 @@ namespace fixel {
 
 namespace internal {
 std::vector<VerificationCheck> sustained_checks();  // verify_sustained.cpp
-}
+VerificationCheck run_check(const std::string& name, const std::string& what,
+                            const std::function<std::string()>& check);
+}  // namespace internal
 
 namespace {
 
@@ -58,6 +60,11 @@ Rational round_decimal(const Rational& x, int decimals) {
   Integer rounded = (2 * q + d) / (2 * d);  // floor(scaled + 1/2)
   if (x < 0) rounded = -rounded;
   return Rational(rounded, scale);
+}
+
+VerificationCheck internal::run_check(const std::string& name, const std::string& what,
+                                      const std::function<std::string()>& check) {
+  return run(name, what, check);
 }
 
 std::vector<VerificationCheck> run_verification() {

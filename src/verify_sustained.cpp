@@ -7,6 +7,10 @@
 
 namespace fixel::internal {
 
+// The check runner of verify.cpp (a check returns "" or what differed).
+VerificationCheck run_check(const std::string& name, const std::string& what,
+                            const std::function<std::string()>& check);
+
 namespace {
 
 // The square [−1, 1]² with fixels at (−1, y0) and (x1, −1), (x2, −1).
@@ -36,18 +40,6 @@ std::string square(const std::string& mu, const std::string& y0, const std::stri
   return s;
 }
 
-VerificationCheck run(const std::string& name, const std::string& what, const std::function<std::string()>& check) {
-  VerificationCheck result{name, false, what};
-  try {
-    const std::string diff = check();
-    result.passed = diff.empty();
-    if (!diff.empty()) result.detail = diff;
-  } catch (const std::exception& e) {
-    result.detail = std::string("threw: ") + e.what();
-  }
-  return result;
-}
-
 // A wrench strictly inside a piece: the sum of its closure's rays.
 VectorQ inside(const AlgebraicCone& piece) {
   VectorQ w = VectorQ::Zero(3);
@@ -61,7 +53,7 @@ VectorQ inside(const AlgebraicCone& piece) {
 std::vector<VerificationCheck> sustained_checks() {
   std::vector<VerificationCheck> out;
   out.push_back(
-      run("sustained.seat", "a square turned by cos 24/25, sin 7/25 and moved by (-1/10, -1/5): q* exact", [] {
+      run_check("sustained.seat", "a square turned by cos 24/25, sin 7/25 and moved by (-1/10, -1/5): q* exact", [] {
         const Scene scene = parse_scene(square("0", "-12/25", "-3/10", "33/50", "3/50", "3/10", "1/50"), "square");
         const SeatedPose q = seated_pose(scene);
         const std::array<Rational, 4> want = {Rational(-1, 10), Rational(-1, 5), Rational(24, 25), Rational(7, 25)};
@@ -70,7 +62,7 @@ std::vector<VerificationCheck> sustained_checks() {
             return "component " + std::to_string(k) + " is " + (*q.exact)[k].text();
         return std::string();
       }));
-  out.push_back(run("sustained.residual", "polygon: R (g_i - c) + c + t = f_i exactly at q* (in Q(sqrt d))", [] {
+  out.push_back(run_check("sustained.residual", "polygon: R (g_i - c) + c + t = f_i exactly at q* (in Q(sqrt d))", [] {
     const Scene scene = parse_scene(kPolygon, "polygon");
     const SeatedPose q = seated_pose(scene);
     const auto& e = *q.exact;
@@ -87,7 +79,7 @@ std::vector<VerificationCheck> sustained_checks() {
     return std::string();
   }));
   out.push_back(
-      run("sustained.frictionless", "square, mu = 0: J is the open cone {-w in int cone(W_n)}, one piece", [] {
+      run_check("sustained.frictionless", "square, mu = 0: J is the open cone {-w in int cone(W_n)}, one piece", [] {
         const SustainedSet J = sustained_set(parse_scene(square("0", "0", "-1/2", "1/2", "0", "0", "0"), "square"));
         if (J.pieces.size() != 1) return "J has " + std::to_string(J.pieces.size()) + " pieces";
         // −W_n = rows (−1, 0, 0), (0, −1, 1/2), (0, −1, −1/2): their sum is inside, each column is on the boundary.
@@ -95,7 +87,7 @@ std::vector<VerificationCheck> sustained_checks() {
         if (J.contains(VectorQ(Eigen::Matrix<Rational, 3, 1>(0, -2, 0)))) return std::string("(0, -2, 0) is in J");
         return std::string();
       }));
-  out.push_back(run("sustained.monotone", "square: every piece of J(mu = 1/5) lies in J(mu = 1/10)", [] {
+  out.push_back(run_check("sustained.monotone", "square: every piece of J(mu = 1/5) lies in J(mu = 1/10)", [] {
     const SustainedSet J1 = sustained_set(parse_scene(square("1/10", "0", "-1/2", "1/2", "0", "0", "0"), "square"));
     const SustainedSet J2 = sustained_set(parse_scene(square("1/5", "0", "-1/2", "1/2", "0", "0", "0"), "square"));
     if (J2.empty) return std::string("J(1/5) is empty");
@@ -103,7 +95,7 @@ std::vector<VerificationCheck> sustained_checks() {
       if (!J1.contains(inside(p))) return std::string("a wrench of J(1/5) is not in J(1/10)");
     return std::string();
   }));
-  out.push_back(run("sustained.polygon", "bundled polygon: J is non-empty and strongly stable", [] {
+  out.push_back(run_check("sustained.polygon", "bundled polygon: J is non-empty and strongly stable", [] {
     const SustainedSet J = sustained_set(parse_scene(kPolygon, "polygon"));
     if (J.empty) return "J is empty: " + J.empty_reason;
     if (!J.strongly_stable) return std::string("not strongly stable");
