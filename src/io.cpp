@@ -1,5 +1,5 @@
-#include "fixel/internal/json_approx.h"
 #include "fixel/io.h"
+#include "fixel/internal/json_approx.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -114,8 +114,9 @@ std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
     out << "  lost fraction of S (grid sample, docs/theory.md §9): " << to_string(*report.lost_fraction) << "\n";
     if (report.impulse)
       out << "Impulse p = " << text(report.impulse->impulse)
-          << (*report.impulse->guaranteed ? " is IN G (one-step: guaranteed): every one-step outcome seats.\n"
-                                          : " is NOT in G: not every one-step outcome seats (one-step: not guaranteed).\n");
+          << (*report.impulse->guaranteed
+                  ? " is IN G (one-step: guaranteed): every one-step outcome seats.\n"
+                  : " is NOT in G: not every one-step outcome seats (one-step: not guaranteed).\n");
   }
   if (report.stable) {
     out << "Seat-and-stay set S ∩ h·C_stab (one-step: can seat, and the same wrench, sustained, is weakly stable at "
@@ -171,8 +172,8 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport&
 static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const SeatReport& report) {
   std::ostringstream out;
   out << "Seating set S of scene \"" << scene.name << "\" (dof " << S.dof << ", " << scene.num_contacts()
-      << " fixels; the one-step model: one impulse, one backward-Euler step of h = " << internal::readable(scene.time_step)
-      << " s)\n";
+      << " fixels; the one-step model: one impulse, one backward-Euler step of h = "
+      << internal::readable(scene.time_step) << " s)\n";
   out << "  units: impulses in N*s (px, py) and N*m*s (ptheta); velocities in m/s and rad/s; frame A\n";
   out << "  seating velocity nu+ = " << text(S.nu_plus) << "\n";
   for (int i = 0; i < scene.num_contacts(); ++i)
@@ -221,8 +222,9 @@ std::string simulation_json(const Scene& scene, const Simulation& sim, const Out
 
 std::string simulation_text(const Scene& scene, const Simulation& sim, const OutcomeCount* first_step) {
   std::ostringstream out;
-  out << "Simulation of scene \"" << scene.name << "\", " << sim.steps.size() << " step(s) of h = "
-      << internal::readable(scene.time_step) << " s, exact Lemke per step (one outcome per step: the one Lemke finds)\n";
+  out << "Simulation of scene \"" << scene.name << "\", " << sim.steps.size()
+      << " step(s) of h = " << internal::readable(scene.time_step)
+      << " s, exact Lemke per step (one outcome per step: the one Lemke finds)\n";
   out << "  units: q in m, m, rad; velocity in m/s, m/s, rad/s; gaps in m; impulses in N*s\n";
   for (std::size_t k = 0; k < sim.steps.size(); ++k) {
     const auto& s = sim.steps[k];
@@ -267,8 +269,8 @@ std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::v
 
 std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
   std::ostringstream out;
-  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " N*s (" << outcomes.size()
-      << " distinct, by exact enumeration of contact modes)\n";
+  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " N*s ("
+      << outcomes.size() << " distinct, by exact enumeration of contact modes)\n";
   out << "  units: velocity in m/s, m/s, rad/s; gaps in m; impulses in N*s\n";
   int seating = 0;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {

@@ -70,8 +70,8 @@ std::string region_json(const Scene& scene, const Region& region) {
       j["start"] = point_json(at.start_A);
       j["end"] = point_json(at.end_A);
       j["arc_length"] = at.arc_length;
-      j["push_direction"] = at.push_direction_A ? json::array({(*at.push_direction_A)[0], (*at.push_direction_A)[1]})
-                                                : json(nullptr);
+      j["push_direction"] =
+          at.push_direction_A ? json::array({(*at.push_direction_A)[0], (*at.push_direction_A)[1]}) : json(nullptr);
     }
     if (!r.magnitude_set.empty()) {
       json set = json::array();
@@ -109,9 +109,10 @@ std::string region_text(const Scene& scene, const Region& region) {
       << method_of(region);
   if (region.resolution) out << ", resolution " << to_string(*region.resolution);
   out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
-  out << "  IN means \"" << meaning << "\"" << (region.target == "S" ? ": some outcome of the one-step model seats"
-                                               : region.target == "G" ? ": every outcome of the one-step model seats"
-                                                                      : ": the held push drives the part into its seat")
+  out << "  IN means \"" << meaning << "\""
+      << (region.target == "S"   ? ": some outcome of the one-step model seats"
+          : region.target == "G" ? ": every outcome of the one-step model seats"
+                                 : ": the held push drives the part into its seat")
       << "; what it is worth in a physics engine: docs/physics.md\n";
   out << "  each line: curve and parameter span, status, where it is on the part (m, frame A), outline length, the "
          "frictionless push direction\n";

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "fixel/internal/json_approx.h"
 #include "fixel/error.h"
+#include "fixel/internal/json_approx.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
 

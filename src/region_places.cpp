@@ -19,8 +19,7 @@ double speed(const BezierPiece& piece, double s) {
     d.push_back({n * to_double(piece.control[k + 1].x - piece.control[k].x),
                  n * to_double(piece.control[k + 1].y - piece.control[k].y)});
   for (int r = 1; r < n; ++r)
-    for (int k = 0; k + r < n; ++k)
-      d[k] = {(1 - s) * d[k][0] + s * d[k + 1][0], (1 - s) * d[k][1] + s * d[k + 1][1]};
+    for (int k = 0; k + r < n; ++k) d[k] = {(1 - s) * d[k][0] + s * d[k + 1][0], (1 - s) * d[k][1] + s * d[k + 1][1]};
   return std::hypot(d[0][0], d[0][1]);
 }
 

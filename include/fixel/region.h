@@ -32,7 +32,7 @@ std::string to_string(RegionStatus status);
 /// A stretch [u0, u1] of curve `curve` (u0 == u1 for a corner point).
 /// Where a region interval lies on the part, in frame A at the scene pose.
 struct IntervalPlace {
-  Vec2 start_A, end_A;  ///< Exact boundary points at u0 and u1 (m).
+  Vec2 start_A, end_A;    ///< Exact boundary points at u0 and u1 (m).
   double arc_length = 0;  ///< Length of outline covered, m (display: Gauss–Legendre quadrature).
   /// Unit inward normal at the interval's middle: the frictionless push
   /// direction (display); unset where the normal is undefined (a corner).
