@@ -51,7 +51,8 @@ expect 0 'guaranteed_0.off' -- "$fixel" dump "$src/data/scenes/nonunique.json" -
 expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --json
 expect 0 '"magnitude_intervals"' -- "$fixel" sample "$src/data/scenes/nonunique_part.json" --guaranteed --points 8 --json
 expect 2 'with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
-expect 2 '--svg: ' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
+expect 0 'wrote' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
+grep -q "seating set S (one-step: can seat)" "$tmp/x.svg" || { echo "FAIL: seat --svg without G"; fail=1; }
 # push (Box2D) and region --validate: docs/physics.md.
 cat > "$tmp/square.json" <<'EOF2'
 {"name": "square", "time_step": "1",
@@ -190,6 +191,22 @@ expect 0 '(1.763, 1.104) to (0.3793, 1.748), 1.57 m, push along (-0.44, -0.898)'
 expect 0 'outline 12.54 m: IN (one-step: can seat) 12.5%' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
 expect 0 '"push_direction": [' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --json
 expect 0 '"arc_lengths": {' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --json
+
+# The region picture: axes, a scale bar, curve numbers, push arrows on IN stretches, labels by model;
+# and it rasterises (librsvg, as a viewer would) to a PNG of the stated size.
+"$fixel" region "$src/data/scenes/example2_rounded.json" --resolution 1/256 --svg "$tmp/rr.svg" > /dev/null
+for element in "id='axes'" "id='scale-bar'" "class='curve-label'" "class='push-arrow'" "in: one-step: can seat"; do
+  grep -qF "$element" "$tmp/rr.svg" || { echo "FAIL: region svg lacks $element"; fail=1; }
+done
+[ "$(grep -c "class='push-arrow'" "$tmp/rr.svg")" -eq 2 ] || { echo "FAIL: want one arrow per IN stretch (2)"; fail=1; }
+"$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --pusher-mu 1/10 --svg "$tmp/rf.svg" > /dev/null
+grep -q "stroke-dasharray='7,3'" "$tmp/rf.svg" || { echo "FAIL: frictional pusher edges not drawn"; fail=1; }
+"$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --svg "$tmp/rg.svg" > /dev/null
+grep -q "ray meets G" "$tmp/rg.svg" || { echo "FAIL: --guaranteed picture not shaded by G"; fail=1; }
+if command -v rsvg-convert > /dev/null; then
+  rsvg-convert -w 1100 "$tmp/rr.svg" -o "$tmp/rr.png" || { echo "FAIL: svg does not rasterise"; fail=1; }
+  head -c 8 "$tmp/rr.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "FAIL: not a PNG"; fail=1; }
+fi
 
 # An unwritable picture path is refused before any report is printed.
 for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polygon.json --push sustained" \
