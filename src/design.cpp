@@ -188,7 +188,7 @@ Vec2 unit_near(const Vec2& n, double* angle_error) {
 // The sustained score of a scene with three fixels: J and, if J is not
 // empty, the region against it.
 void score_sustained(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out) {
-  const SustainedSet J = sustained_set(scene);
+  const SustainedSet J = sustained_set(scene, false);  // strong stability: by the theorem
   out.sustained_empty = J.empty;
   if (J.empty) {
     out.sustained_score = Rational(0);
@@ -591,7 +591,7 @@ Region layout_region(const Scene& part, const std::vector<DesignCandidate>& cand
                      const DesignOptions& o) {
   if (o.push == DesignPush::kSustained) {
     const Scene s = layout_scene(part, cands, f, o, false);
-    const SustainedSet J = sustained_set(s);
+    const SustainedSet J = sustained_set(s, false);
     const auto target = sustained_target(J);
     return compute_region(s, *target, region_options(o, o.pusher_mu));
   }
