@@ -521,8 +521,7 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1, tbb::info::default_concurrency());
   result.stats.jobs = jobs;
   if (n < 3) {
-    result.no_layout =
-        "only " + std::to_string(n) + " candidate" + (n == 1 ? "" : "s") + ": a layout needs three fixels";
+    result.no_layout = no_layout_reason(result.stats, 0);
     return result;
   }
   const long T = result.stats.triples;
@@ -555,12 +554,28 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
   }
   rank_layouts(result.layouts, o.top);
   complete_layouts(part, cands, o, result.layouts);
-  if (result.layouts.empty())
-    result.no_layout = "every one of the " + std::to_string(T) + " triples was dropped (" +
-                       std::to_string(result.stats.singular) + " with W_n singular, " +
-                       std::to_string(result.stats.no_form_closure) + " without form closure)";
+  result.no_layout = no_layout_reason(result.stats, result.layouts.size());
   result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+std::string no_layout_reason(const DesignStats& stats, std::size_t layouts) {
+  if (stats.candidates < 3)
+    return "only " + std::to_string(stats.candidates) + " candidate" + (stats.candidates == 1 ? "" : "s") +
+           ": a layout needs three fixels";
+  if (layouts > 0) return "";
+  return "every one of the " + std::to_string(stats.triples) + " triples was dropped (" +
+         std::to_string(stats.singular) + " with W_n singular, " + std::to_string(stats.no_form_closure) +
+         " without form closure)";
+}
+
+std::optional<DesignLayout> shipped_layout(const Scene& scene, const DesignOptions& options) {
+  if (scene.num_contacts() != 3) return std::nullopt;
+  try {
+    return score_scene_layout(scene, options);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
 }
 
 DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& o) {

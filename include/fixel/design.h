@@ -176,6 +176,14 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& candi
 /// fraction at the seat. Throws what the analyses throw for its fixels.
 DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& options);
 
+/// score_scene_layout of the scene's own fixels when it has three and they
+/// can be scored; none otherwise (nothing to compare with).
+std::optional<DesignLayout> shipped_layout(const Scene& scene, const DesignOptions& options);
+
+/// Why a run has no layout: fewer than three candidates, or every triple
+/// dropped (empty when there are layouts to report).
+std::string no_layout_reason(const DesignStats& stats, std::size_t layouts);
+
 /// `fixel design --json` (docs/formats.md): {"part", "push", "resolution",
 /// "mu", "pusher_mu", "gap", "candidates", "layouts": [{"rank", "triple",
 /// "fixels": [{"curve", "u", "point", "normal"}], "score", ...}],
