@@ -14,6 +14,7 @@
 
 #include "fixel/design.h"
 #include "fixel/region_target.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
 

@@ -73,6 +73,7 @@ class FormClosureTarget final : public RegionTarget {
  public:
   explicit FormClosureTarget(const std::array<VectorQ, 3>& rows) : rows_(rows) {}
   const char* push_model() const override { return "form closure"; }
+  const char* name() const override { return "K"; }
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
     for (const auto& g : gens)
       if (!in_open_k(rows_, g)) return false;
@@ -374,7 +375,7 @@ DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, co
 
 std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::optional<Rational>& spacing) {
   const Boundary& b = boundary_of(part);
-  if (spacing && *spacing <= 0) throw InputError("--spacing", to_string(*spacing), "must be > 0");
+  if (spacing && *spacing <= 0) throw InputError("boundary_candidates(spacing)", to_string(*spacing), "must be > 0");
   // Arc length by chords of 128 points per piece (placement only).
   struct Sample {
     int curve;
@@ -397,7 +398,7 @@ std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::o
   const double perimeter = s;
   const double step = spacing ? to_double(*spacing) : perimeter / 24;
   if (!(step > 0) || perimeter / step > kMaxCandidates)
-    throw InputError("--spacing", spacing ? to_string(*spacing) : "default",
+    throw InputError("boundary_candidates(spacing)", spacing ? to_string(*spacing) : "default",
                      "gives more than " + std::to_string(kMaxCandidates) + " candidates on a boundary of length " +
                          std::to_string(perimeter));
   std::vector<DesignCandidate> out;
@@ -417,7 +418,7 @@ std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::o
     Rational ur(static_cast<long long>(std::llround(u * 1024)), 1024);
     ur = std::max(c.u_begin(), std::min(c.u_end(), ur));
     try {
-      DesignCandidate d = candidate_at(part, curve, ur, "--spacing");
+      DesignCandidate d = candidate_at(part, curve, ur, "boundary_candidates(spacing)");
       if (seen.insert({d.point.x, d.point.y}).second) out.push_back(std::move(d));
     } catch (const InputError&) {
       // a corner or a vanishing tangent: no fixel there
@@ -429,16 +430,17 @@ std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::o
 void check_design(const Scene& part, const DesignOptions& o) {
   if (part.body.dof != 3) throw SceneError("body.dof", "2", "fixture design needs a rigid body (dof 3)");
   boundary_of(part);
-  if (o.resolution <= 0) throw InputError("--resolution", to_string(o.resolution), "must be > 0");
-  if (o.mu < 0) throw InputError("--mu", to_string(o.mu), "must be >= 0");
-  if (o.mu_hi && *o.mu_hi < o.mu) throw InputError("--mu", to_string(o.mu) + "," + to_string(*o.mu_hi), "has lo > hi");
-  if (o.pusher_mu < 0) throw InputError("--pusher-mu", to_string(o.pusher_mu), "must be >= 0");
-  if (o.gap < 0) throw InputError("--gap", to_string(o.gap), "must be >= 0");
-  if (o.top <= 0) throw InputError("--top", std::to_string(o.top), "must be > 0");
+  if (o.resolution <= 0) throw InputError("DesignOptions.resolution", to_string(o.resolution), "must be > 0");
+  if (o.mu < 0) throw InputError("DesignOptions.mu", to_string(o.mu), "must be >= 0");
+  if (o.mu_hi && *o.mu_hi < o.mu)
+    throw InputError("DesignOptions.mu", to_string(o.mu) + "," + to_string(*o.mu_hi), "has lo > hi");
+  if (o.pusher_mu < 0) throw InputError("DesignOptions.pusher_mu", to_string(o.pusher_mu), "must be >= 0");
+  if (o.gap < 0) throw InputError("DesignOptions.gap", to_string(o.gap), "must be >= 0");
+  if (o.top <= 0) throw InputError("DesignOptions.top", std::to_string(o.top), "must be > 0");
   if (o.jobs < 0 || o.jobs > kMaxJobs)
-    throw InputError("--jobs", std::to_string(o.jobs), "must be between 0 (one per core) and 256");
+    throw InputError("DesignOptions.jobs", std::to_string(o.jobs), "must be between 0 (one per core) and 256");
   if (o.push == DesignPush::kStep && o.mu_hi)
-    throw UnsupportedError("--mu", to_string(o.mu) + "," + to_string(*o.mu_hi),
+    throw UnsupportedError("DesignOptions.mu", to_string(o.mu) + "," + to_string(*o.mu_hi),
                            "is an interval: the one-step ranking (--push step) needs one value");
 }
 

@@ -104,7 +104,7 @@ std::vector<DesignCandidate> parse_candidates(const Scene& part, const std::stri
 
 std::vector<DesignCandidate> load_candidates(const Scene& part, const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw InputError("--candidates", path, "cannot be read");
+  if (!in) throw InputError("load_candidates(path)", path, "cannot be read");
   std::stringstream buffer;
   buffer << in.rdbuf();
   return parse_candidates(part, buffer.str(), path);
@@ -236,9 +236,9 @@ void write_design_svg(const std::string& path, const Scene& part, const DesignRe
   }
   s << "</svg>\n";
   std::ofstream out(path);
-  if (!out) throw InputError("--svg", path, "cannot be written");
+  if (!out) throw InputError("svg(path)", path, "cannot be written");
   out << s.str();
-  if (!out) throw InputError("--svg", path, "cannot be written");
+  if (!out) throw InputError("svg(path)", path, "cannot be written");
 }
 
 }  // namespace fixel

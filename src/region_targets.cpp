@@ -6,6 +6,7 @@
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region_target.h"
 #include "fixel/wrench_cone.h"
 
@@ -69,6 +70,7 @@ class SeatingTarget final : public RegionTarget {
  public:
   SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0) {}
   const char* push_model() const override { return "step"; }
+  const char* name() const override { return "S"; }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
                      RegionInterval* detail) override {
@@ -126,10 +128,11 @@ class GuaranteedTarget final : public RegionTarget {
  public:
   GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {}
   const char* push_model() const override { return "step"; }
+  const char* name() const override { return "G"; }
 
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)
-      throw UnsupportedError("--pusher-mu", to_string(mu),
+      throw UnsupportedError("RegionOptions.pusher_mu", to_string(mu),
                              "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
                              "does not make every push direction between them hit G (use a frictionless pusher)");
   }

@@ -6,12 +6,13 @@
 
 #include "fixel/error.h"
 #include "fixel/progress.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::scene_file;
+using test::scene_file;
 
 // The "house": the rectangle [−1, 1] × [−1, 0] under the roof (1, 0),
 // (0, 1), (−1, 0), mirror-symmetric about x = 0. Curve parameters: bottom
@@ -188,7 +189,7 @@ GTEST_TEST(Design, BadInputNamesTheFieldAndValue) {
     boundary_candidates(part, Rational(0));
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.field(), "--spacing");
+    EXPECT_EQ(e.field(), "boundary_candidates(spacing)");
     EXPECT_EQ(e.value(), "0");
   }
   try {
@@ -217,7 +218,7 @@ GTEST_TEST(Design, BadInputNamesTheFieldAndValue) {
     design(part, house_candidates(part), o);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.field(), "--top");
+    EXPECT_EQ(e.field(), "DesignOptions.top");
     EXPECT_EQ(e.value(), "0");
   }
   const Scene no_outline = scene_file("example2");

@@ -104,35 +104,34 @@ void bind_design(py::module_& m) {
   // The report of a distributed run: re-scores the chosen triples (their
   // scores are a pure function of the triple), completes them and writes
   // the `fixel design --json` document with the run's counts.
-  m.def("design_report", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts,
-                            const std::vector<long>& indices, const std::vector<long>& counts, double seconds,
-                            int jobs) {
-    const Scene& s = checked(scene, "scene");
-    const auto cands = candidates_of(s, list);
-    DesignOptions o = options_of(opts);
-    if (counts.size() != 4) throw InputError("counts", std::to_string(counts.size()), "must have 4 entries");
-    py::gil_scoped_release release;
-    DesignResult r;
-    r.candidates = cands;
-    r.stats.candidates = static_cast<long>(cands.size());
-    r.stats.triples = triple_count(r.stats.candidates);
-    r.stats.singular = counts[0];
-    r.stats.no_form_closure = counts[1];
-    r.stats.j_empty = counts[2];
-    r.stats.regions = counts[3];
-    r.stats.seconds = seconds;
-    r.stats.jobs = jobs;
-    DesignStats ignored;
-    for (long index : indices)
-      for (auto& l : design_batch(s, cands, o, index, 1, ignored)) r.layouts.push_back(std::move(l));
-    rank_layouts(r.layouts, o.top);
-    complete_layouts(s, cands, o, r.layouts);
-    r.no_layout = no_layout_reason(r.stats, r.layouts.size());
-    return design_json(s, r, o, shipped_layout(s, o));
-  });
-  m.def("design_check_options", [](const ScenePtr& scene, const py::dict& opts) {
-    check_design(checked(scene, "scene"), options_of(opts));
-  });
+  m.def("design_report",
+        [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, const std::vector<long>& indices,
+           const std::vector<long>& counts, double seconds, int jobs) {
+          const Scene& s = checked(scene, "scene");
+          const auto cands = candidates_of(s, list);
+          DesignOptions o = options_of(opts);
+          if (counts.size() != 4) throw InputError("counts", std::to_string(counts.size()), "must have 4 entries");
+          py::gil_scoped_release release;
+          DesignResult r;
+          r.candidates = cands;
+          r.stats.candidates = static_cast<long>(cands.size());
+          r.stats.triples = triple_count(r.stats.candidates);
+          r.stats.singular = counts[0];
+          r.stats.no_form_closure = counts[1];
+          r.stats.j_empty = counts[2];
+          r.stats.regions = counts[3];
+          r.stats.seconds = seconds;
+          r.stats.jobs = jobs;
+          DesignStats ignored;
+          for (long index : indices)
+            for (auto& l : design_batch(s, cands, o, index, 1, ignored)) r.layouts.push_back(std::move(l));
+          rank_layouts(r.layouts, o.top);
+          complete_layouts(s, cands, o, r.layouts);
+          r.no_layout = no_layout_reason(r.stats, r.layouts.size());
+          return design_json(s, r, o, shipped_layout(s, o));
+        });
+  m.def("design_check_options",
+        [](const ScenePtr& scene, const py::dict& opts) { check_design(checked(scene, "scene"), options_of(opts)); });
 }
 
 }  // namespace fixel::python
