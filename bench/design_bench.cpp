@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
     o.resolution = fixel::parse_rational(resolution, "--resolution");
     o.top = top;
     if (want_parts) {
-      // Best layout (24 boundary candidates) against the shipped layout, same μ.
+      // Best layout (n of the 24 default boundary candidates) against the shipped layout, same μ.
       std::cout << "| part | candidates | triples | kept | best sustained | best one-step | shipped sustained | "
                    "shipped one-step | seconds ("
                 << jobs << " threads) |\n|---|---|---|---|---|---|---|---|---|\n";
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
         p.mu = part.fixels.at(0).mu_upper();
         for (const auto& f : part.fixels) p.mu = std::max(p.mu, f.mu_upper());
         p.pusher_mu = part.pusher_mu_upper();
-        const auto c = fixel::boundary_candidates(part, std::nullopt);
+        const auto c = candidates(part, n);
         const auto r = fixel::design(part, c, p);
         auto pct = [](const std::optional<fixel::Rational>& q) {
           std::ostringstream s;
