@@ -483,6 +483,7 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
   if (first < 0 || count < 0 || first + count > total)
     throw InputError("batch", std::to_string(first) + "+" + std::to_string(count),
                      "is outside the " + std::to_string(total) + " triples");
+  if (count == 0) return {};
   long done = 0;
   return run_range(part, cands, o, first, count, stats, [&] { poll(o.control, "design", ++done, count, "layouts"); });
 }

@@ -13,6 +13,7 @@ import json
 import os
 import threading
 import time
+import uuid
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import List, Optional, Tuple
@@ -273,6 +274,7 @@ def _design_dask(scene, cands, options, client, batch_size, output, progress, re
     futures = {}
     if todo:
         fail = fail_once if isinstance(fail_once, tuple) else None
+        nonce = uuid.uuid4().hex[:8]
         futures_list = client.map(
             _run_batch,
             [scene_dict] * len(todo),
@@ -281,7 +283,9 @@ def _design_dask(scene, cands, options, client, batch_size, output, progress, re
             [first for _, first, _ in todo],
             [count for _, _, count in todo],
             [fail[1] if fail and fail[0] == b else None for b, _, _ in todo],
-            key=[f"fixel-design-{key}-{b}" for b, _, _ in todo],
+            # A fresh suffix per call: a rerun must not meet an erred task the
+            # scheduler still remembers under the same key.
+            key=[f"fixel-design-{key}-{b}-{nonce}" for b, _, _ in todo],
             retries=retries,
             pure=False,
         )

@@ -58,7 +58,7 @@ def test_the_house_ranks_its_mirror_pair_first_with_equal_exact_scores():
 
 def test_the_python_thread_pool_agrees_with_the_cli(tmp_path, polygon_candidates):
     path = tmp_path / "candidates.json"
-    path.write_text(json.dumps({"candidates": [{"curve": c, "u": u} for c, u in polygon_candidates]}))
+    path.write_text(json.dumps({"candidates": [{"curve": c, "u": str(u)} for c, u in polygon_candidates]}))
     doc = cli_json("design", SCENE_DIR / "polygon.json", "--candidates", path, "--resolution", "1/32", "--top", 5)
     d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, **SMALL)
     assert [(tuple(l["triple"]), Fraction(l["score"])) for l in doc["layouts"]] == d.ranking()
