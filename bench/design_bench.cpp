@@ -155,6 +155,7 @@ int main(int argc, char** argv) {
           const auto sh = fixel::score_scene_layout(part, p);
           shipped_s = pct(sh.sustained_score) + (sh.sustained_empty.value_or(false) ? " (J empty)" : "");
           shipped_t = pct(sh.step_score);
+          if (!sh.note.empty()) shipped_s += " [" + sh.note + "]";
         } catch (const fixel::Error& e) {
           shipped_s = std::string("error: ") + e.what();
         }

@@ -593,15 +593,19 @@ DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& o) {
   s.pusher_mu_hi.reset();
   DesignLayout out;
   out.index = -1;
-  score_sustained(s, o, total, out);
+  try {
+    score_sustained(s, o, total, out);
+  } catch (const InputError& e) {
+    out.note = std::string("no sustained score: ") + e.what();
+  }
   if (!o.mu_hi) {
     try {
       score_step(s, o, total, out);
-    } catch (const Error& e) {
-      out.note = std::string("one-step score: ") + e.what();
+    } catch (const InputError& e) {
+      out.note += std::string(out.note.empty() ? "" : "; ") + "no one-step score: " + e.what();
     }
   }
-  out.score = o.push == DesignPush::kSustained ? *out.sustained_score : out.step_score.value_or(Rational(0));
+  out.score = (o.push == DesignPush::kSustained ? out.sustained_score : out.step_score).value_or(Rational(0));
   return out;
 }
 

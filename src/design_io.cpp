@@ -167,7 +167,8 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
   }
   if (shipped)
     s << "shipped layout: sustained " << score_text(shipped->sustained_score) << ", one-step "
-      << score_text(shipped->step_score) << "\n";
+      << score_text(shipped->step_score) << "\n"
+      << (shipped->note.empty() ? "" : "   note: " + shipped->note + "\n");
   return s.str();
 }
 

@@ -172,8 +172,10 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
 DesignResult design(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
 
 /// The score of the scene's own three fixels with the same options (for
-/// comparison with the designed layouts): the sustained (or one-step) IN
-/// fraction at the seat. Throws what the analyses throw for its fixels.
+/// comparison with the designed layouts): the sustained and one-step IN
+/// fractions at the scene's seat and gaps, with the design's friction. A
+/// score the analyses refuse (e.g. a seated pose that cannot be solved) is
+/// left empty and `note` says why.
 DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& options);
 
 /// score_scene_layout of the scene's own fixels when it has three and they
