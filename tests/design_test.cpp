@@ -104,6 +104,26 @@ GTEST_TEST(Design, TheHousesBestLayoutsAreTheMirrorPairInCandidateOrder) {
   ASSERT_TRUE(r.layouts[0].step_score.has_value());  // completed for the reported layouts
 }
 
+// By hand, on the square [−1, 1]² with B1 = (−1/2, −1), B2 = (1/2, −1),
+// L = (−1, 0), R = (1, 0): {B, L, R} is singular (L and R push along one line
+// through the centre), and {B1, B2, L} needs a push with d_x < 0 and d_y < 0,
+// which no flat edge gives a frictionless finger (its push is along ±x or
+// ±y) and no corner gives for its whole fan (the fan holds an edge normal);
+// {B1, B2, R} is its mirror image. So every triple is dropped.
+GTEST_TEST(Design, TheSquaresAxisAlignedLayoutsHaveNoFormClosureWithAFinger) {
+  const Scene part = parse_scene(R"({"name": "square", "time_step": "1",
+    "body": {"dof": 3, "mass": "1",
+             "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","1"], ["-1","1"], ["-1","-1"]]}]},
+    "fixels": []})");
+  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
+                                                          {"curve": 0, "u": "7/2"}, {"curve": 0, "u": "3/2"}]})");
+  const DesignResult r = design(part, c, frictionless());
+  EXPECT_EQ(r.stats.singular, 2);
+  EXPECT_EQ(r.stats.no_form_closure, 2);
+  EXPECT_TRUE(r.layouts.empty());
+  EXPECT_EQ(r.no_layout, "every one of the 4 triples was dropped (2 with W_n singular, 2 without form closure)");
+}
+
 GTEST_TEST(Design, FrictionShrinksTheScoreButKeepsTheMirrorTie) {
   const Scene part = house();
   DesignOptions o = frictionless();
