@@ -217,4 +217,26 @@ for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polyg
 done
 expect 2 '--svg: '"$tmp"'/no/x.svg cannot be written: no such folder' -- "$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/no/x.svg"
 
+# fixel design (docs/design.md): the house part of tests/design_test.cpp, an empty fixels list, four listed
+# candidates; the mirror pair ties and keeps the candidates' order, and the two {B, L, R} triples are singular.
+cat > "$tmp/house.json" <<'JSON'
+{"name": "house", "time_step": "1",
+ "body": {"dof": 3, "mass": "1",
+          "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","0"], ["0","1"], ["-1","0"], ["-1","-1"]]}]},
+ "fixels": []}
+JSON
+echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}, {"curve": 0, "u": "9/2"}, {"curve": 0, "u": "3/2"}]}' > "$tmp/house_c.json"
+expect 0 '"triple": [' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
+expect 0 '"singular": 2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
+expect 0 '#1 fixels [0] curve 0 u=1/4 [1] curve 0 u=3/4 [2] curve 0 u=9/2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --jobs 2
+expect 0 'wrote' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --svg "$tmp/house.svg"
+echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}]}' > "$tmp/two.json"
+expect 0 'no layout: only 2 candidates: a layout needs three fixels' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json"
+expect 2 '--spacing: 0 must be > 0' -- "$fixel" design "$tmp/house.json" --spacing 0
+expect 2 '--top: 0 must be > 0' -- "$fixel" design "$tmp/house.json" --top 0
+expect 2 'candidates[0].u: 6 is off curve 0' -- "$fixel" design "$tmp/house.json" --candidates <(echo '{"candidates": [{"curve": 0, "u": "6"}]}')
+expect 2 'body.boundary: is missing' -- "$fixel" design "$src/data/scenes/example2.json"
+expect 2 'cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --svg "$tmp/no/x.svg"
+expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --max-seconds 0.5 --quiet
+
 exit $fail
