@@ -208,6 +208,13 @@ if command -v rsvg-convert > /dev/null; then
   head -c 8 "$tmp/rr.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "FAIL: not a PNG"; fail=1; }
 fi
 
+# push-plan: how hard to push at one point, per model.
+expect 0 'one-step: can seat: in, |p| in [' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10
+expect 0 'one-step outcome(s)' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10
+expect 0 '"relative_width"' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10 --json
+expect 0 'sustained push: seats and stays: in' -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
+expect 2 '--at' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:100
+
 # An unwritable picture path is refused before any report is printed.
 for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polygon.json --push sustained" \
            "seat $src/data/scenes/nonunique.json --guaranteed" "push $src/data/scenes/polygon.json --wrench -1,-1,0"; do

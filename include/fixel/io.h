@@ -8,6 +8,7 @@
 
 #include "fixel/guaranteed.h"
 #include "fixel/outcomes.h"
+#include "fixel/push_plan.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
 #include "fixel/seat_report.h"
@@ -89,5 +90,13 @@ std::string seated_pose_json(const SeatedPose& q);
 std::string verification_text(const std::vector<VerificationCheck>& checks);
 /// `fixel verify --json`: {"checks": [{"name", "passed", "detail"}], "passed": bool}.
 std::string verification_json(const std::vector<VerificationCheck>& checks);
+
+/// `fixel push-plan --json`: {"scene", "curve", "u", "point", "normal",
+/// "wrench_direction", "one_step": {"status", "magnitudes", "relative_width",
+/// "sample_impulse", "sample_outcomes": {"total", "seating"}}, "guaranteed":
+/// {...} | null, "sustained": {"status"} | {"note"}}.
+std::string push_plan_json(const Scene& scene, const PushPlan& plan);
+/// The same as a readable report.
+std::string push_plan_text(const Scene& scene, const PushPlan& plan);
 
 }  // namespace fixel

@@ -57,5 +57,6 @@ Command add_sample(CLI::App& app);
 Command add_push(CLI::App& app);
 Command add_verify(CLI::App& app);
 Command add_design(CLI::App& app);
+Command add_push_plan(CLI::App& app);
 
 }  // namespace fixel::cli

@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// "How hard do I push here?": the magnitude profile of a frictionless push
+/// at one boundary point, for the one-step model (S and G) and the
+/// sustained push (J).
+
+#include <optional>
+#include <string>
+
+#include "fixel/interval.h"
+#include "fixel/outcomes.h"
+#include "fixel/region.h"
+#include "fixel/scene.h"
+
+namespace fixel {
+
+/// The plan for a push at parameter `u` of curve `curve`, at the scene pose.
+struct PushPlan {
+  int curve = 0;
+  Rational u;
+  Vec2 point_A;   ///< The boundary point (m, frame A).
+  Vec2 normal_A;  ///< Inward normal there (not unit; the push direction).
+  VectorQ wrench_direction;  ///< g = (n, r ⊗ n), r from the centre of mass (frame A).
+  RegionStatus in_S = RegionStatus::kOut;
+  Magnitudes magnitudes_S;  ///< Euclidean |p| (N·s) of impulses along g that land in S (inner bound).
+  std::optional<RegionStatus> in_G;  ///< With G (dof 3, frictionless pusher).
+  Magnitudes magnitudes_G;           ///< The same for G (one of its pieces).
+  /// At a representative impulse of the S window (τ* g with τ* rational in
+  /// the middle of the exact window, or twice its lower end when it is
+  /// unbounded): the impulse and its one-step outcomes.
+  std::optional<VectorQ> sample_impulse;
+  OutcomeCount sample_outcomes;
+  std::optional<bool> sample_in_G;
+  std::optional<RegionStatus> in_J;  ///< Sustained push (when J can be computed), else unset.
+  std::string J_note;                ///< Why J was not judged, when unset.
+};
+
+/// Plans a push. Throws InputError for a point off the boundary's
+/// parameter range; kPartial statuses where the normal is undefined.
+PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed);
+
+/// Relative width (hi − lo) / lo of a magnitude window (display); +inf when
+/// unbounded, NaN when empty.
+double relative_width(const Magnitudes& m);
+
+}  // namespace fixel

@@ -1,0 +1,100 @@
+// Push-plan reports: `fixel push-plan` text and JSON.
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "fixel/internal/json_approx.h"
+#include "fixel/internal/readable.h"
+#include "fixel/io.h"
+
+namespace fixel {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json exact(const VectorQ& v) {
+  json out = json::array();
+  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
+  return out;
+}
+
+json window_json(const Magnitudes& m) {
+  if (m.empty) return nullptr;
+  const double w = relative_width(m);
+  return {{"min", to_string(m.lo)},
+          {"min_inclusive", m.lo_closed},
+          {"max", m.hi ? json(to_string(*m.hi)) : json(nullptr)},
+          {"max_inclusive", m.hi.has_value() && m.hi_closed},
+          {"relative_width", std::isfinite(w) ? json(w) : json(nullptr)}};
+}
+
+std::string width_text(const Magnitudes& m) {
+  const double w = relative_width(m);
+  if (m.empty) return "";
+  if (!std::isfinite(w)) return " (unbounded above: any harder push also lands)";
+  return " (relative width " + internal::decimal(100 * w, 3) + "%: (max - min) / min)";
+}
+
+}  // namespace
+
+std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
+  json doc;
+  doc["scene"] = scene.name;
+  doc["curve"] = plan.curve;
+  doc["u"] = to_string(plan.u);
+  doc["point"] = {to_string(plan.point_A.x), to_string(plan.point_A.y)};
+  doc["normal"] = {to_string(plan.normal_A.x), to_string(plan.normal_A.y)};
+  doc["wrench_direction"] = exact(plan.wrench_direction);
+  json one = {{"meaning", "one-step: can seat"},
+              {"status", to_string(plan.in_S)},
+              {"magnitudes", window_json(plan.magnitudes_S)}};
+  if (plan.sample_impulse) {
+    one["sample_impulse"] = exact(*plan.sample_impulse);
+    one["sample_outcomes"] = {{"total", plan.sample_outcomes.total}, {"seating", plan.sample_outcomes.seating}};
+    if (plan.sample_in_G) one["sample_in_G"] = *plan.sample_in_G;
+  }
+  doc["one_step"] = one;
+  doc["guaranteed"] = plan.in_G ? json{{"meaning", "one-step: guaranteed"},
+                                       {"status", to_string(*plan.in_G)},
+                                       {"magnitudes", window_json(plan.magnitudes_G)}}
+                                : json(nullptr);
+  doc["sustained"] = plan.in_J ? json{{"meaning", "sustained push: seats and stays"}, {"status", to_string(*plan.in_J)}}
+                               : json{{"note", plan.J_note}};
+  internal::add_approx(doc);
+  return doc.dump(2) + "\n";
+}
+
+std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
+  std::ostringstream out;
+  out << "Push plan for scene \"" << scene.name << "\" at curve " << plan.curve << ", u = " << internal::readable(plan.u)
+      << "\n";
+  out << "  point (m, frame A) = (" << internal::readable(plan.point_A.x) << ", " << internal::readable(plan.point_A.y)
+      << "), push along the inward normal (" << internal::readable(plan.normal_A.x) << ", "
+      << internal::readable(plan.normal_A.y) << ")\n";
+  out << "  wrench direction g = " << internal::readable(plan.wrench_direction) << " (force, moment about Cm)\n";
+  out << "  one-step: can seat: " << to_string(plan.in_S);
+  if (plan.in_S == RegionStatus::kIn)
+    out << ", |p| in " << plan.magnitudes_S.describe_readable() << " N*s" << width_text(plan.magnitudes_S);
+  out << "\n";
+  if (plan.sample_impulse) {
+    const OutcomeCount& c = plan.sample_outcomes;
+    out << "    at p = " << internal::readable(*plan.sample_impulse) << " N*s (inside the window): " << c.total
+        << " one-step outcome(s), " << c.seating << " seat" << (c.total > 1 ? " (see `fixel solutions`)" : "");
+    if (plan.sample_in_G) out << "; " << (*plan.sample_in_G ? "in G" : "not in G");
+    out << "\n";
+  }
+  if (plan.in_G) {
+    out << "  one-step: guaranteed: " << to_string(*plan.in_G);
+    if (*plan.in_G == RegionStatus::kIn)
+      out << ", |p| in " << plan.magnitudes_G.describe_readable() << " N*s" << width_text(plan.magnitudes_G);
+    out << "\n";
+  }
+  if (plan.in_J)
+    out << "  sustained push: seats and stays: " << to_string(*plan.in_J) << " (any magnitude: J is a cone)\n";
+  else if (!plan.J_note.empty())
+    out << "  sustained push: not judged: " << plan.J_note << "\n";
+  return out.str();
+}
+
+}  // namespace fixel

@@ -1,0 +1,70 @@
+#include "fixel/push_plan.h"
+
+#include <cmath>
+#include <limits>
+
+#include "fixel/error.h"
+#include "fixel/geometry.h"
+#include "fixel/guaranteed.h"
+#include "fixel/region_target.h"
+#include "fixel/seating.h"
+#include "fixel/sustained.h"
+
+namespace fixel {
+
+double relative_width(const Magnitudes& m) {
+  if (m.empty) return std::numeric_limits<double>::quiet_NaN();
+  if (!m.hi) return std::numeric_limits<double>::infinity();
+  if (m.lo == 0) return std::numeric_limits<double>::infinity();
+  return to_double((*m.hi - m.lo) / m.lo);
+}
+
+PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed) {
+  if (!scene.body.boundary) throw SceneError("body.boundary", "", "is missing: a push plan needs the part's outline");
+  const Boundary& b = *scene.body.boundary;
+  if (curve < 0 || curve >= static_cast<int>(b.curves.size()))
+    throw InputError("plan_push(curve)", std::to_string(curve), "is not a curve of the boundary");
+  const Curve& c = b.curves[curve];
+  if (u < c.u_begin() || u > c.u_end())
+    throw InputError("plan_push(u)", to_string(u),
+                     "is outside the curve's parameter range [" + to_string(c.u_begin()) + ", " +
+                         to_string(c.u_end()) + "]");
+  PushPlan plan;
+  plan.curve = curve;
+  plan.u = u;
+  plan.point_A = c.point(u);
+  const Vec2 t = c.derivative(u);
+  plan.normal_A = {-t.y, t.x};  // inward: the loop is counter-clockwise
+  const Vec2 r = sub(plan.point_A, scene.body.p_AoCm_A);
+  const VectorQ g = contact_wrench(r, plan.normal_A, scene.body.dof);
+  plan.wrench_direction = g;
+
+  const SeatingSet S = seating_set(scene);
+  plan.in_S = point_status(scene, S, curve, u, Rational(0), &plan.magnitudes_S);
+  std::optional<GuaranteedSet> G;
+  if (with_guaranteed) {
+    G = guaranteed_set(scene, S);
+    plan.in_G = point_status(scene, S, curve, u, Rational(0), &plan.magnitudes_G, &*G);
+  }
+  // A representative impulse: exact τ window of the ray b0 + τ g in S.
+  const Magnitudes tau = ray_magnitudes(S, scene.background_impulse, g);
+  if (!tau.empty && !(t.x == 0 && t.y == 0)) {
+    const Rational tau_star = tau.hi ? (tau.lo + *tau.hi) / 2 : (tau.lo > 0 ? 2 * tau.lo : Rational(1));
+    const VectorQ p = scene.background_impulse + tau_star * g;
+    plan.sample_impulse = p;
+    plan.sample_outcomes = count_outcomes(enumerate_outcomes(scene, p));
+    if (G) plan.sample_in_G = G->contains(p, S);
+  }
+  if (scene.body.dof == 3) {
+    try {
+      const SustainedSet J = sustained_set(scene);
+      auto target = sustained_target(J);
+      plan.in_J = point_status(scene, *target, curve, u, Rational(0));
+    } catch (const InputError& e) {
+      plan.J_note = e.what();
+    }
+  }
+  return plan;
+}
+
+}  // namespace fixel
