@@ -86,8 +86,10 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   }
   if (plan.in_G) {
     out << "  one-step: guaranteed: " << to_string(*plan.in_G);
-    if (*plan.in_G == RegionStatus::kIn)
+    if (*plan.in_G == RegionStatus::kIn && !plan.magnitudes_G.empty)
       out << ", |p| in " << plan.magnitudes_G.describe_readable() << " N*s" << width_text(plan.magnitudes_G);
+    else if (*plan.in_G == RegionStatus::kIn)
+      out << " for some magnitudes (no single certified window; test one with `seat --guaranteed --impulse`)";
     out << "\n";
   }
   if (plan.in_J)
