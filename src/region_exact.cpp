@@ -42,6 +42,20 @@ void set_end(const AlgebraicReal& s, const BezierPiece& piece, Rational& u, std:
     exact = x;
 }
 
+// The rational with the smallest denominator in the open interval (a, b),
+// 0 <= a < b (continued fractions): test points with small numbers keep the
+// exact point tests cheap.
+Rational simplest_between(const Rational& a, const Rational& b) {
+  const Integer n = numerator(a) / denominator(a);  // floor, a >= 0
+  if (Rational(n + 1) < b) return Rational(n + 1);
+  const Rational fa = a - Rational(n), fb = b - Rational(n);  // 0 <= fa < fb <= 1
+  if (fa == 0) {
+    const Rational inv = 1 / fb;
+    return Rational(n) + Rational(1) / Rational(numerator(inv) / denominator(inv) + 1);
+  }
+  return Rational(n) + 1 / simplest_between(1 / fb, 1 / fa);
+}
+
 }  // namespace
 
 std::vector<RegionInterval> exact_piece_intervals(const Scene& scene, RegionTarget& target, const BezierPiece& piece,
@@ -73,7 +87,7 @@ std::vector<RegionInterval> exact_piece_intervals(const Scene& scene, RegionTarg
   std::vector<RegionInterval> out;
   const Rational L = piece.u1 - piece.u0;
   for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
-    const Rational t = (ends[i].hi + ends[i + 1].lo) / 2;
+    const Rational t = simplest_between(ends[i].hi, ends[i + 1].lo);
     RegionInterval r{piece.curve, Rational(0), Rational(0), RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
     set_end(ends[i], piece, r.u0, r.exact_u0);
     set_end(ends[i + 1], piece, r.u1, r.exact_u1);

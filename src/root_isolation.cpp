@@ -88,6 +88,27 @@ void bisect(AlgebraicReal& x) {
   (s_m == s_lo ? x.lo : x.hi) = m;
 }
 
+// Descartes' rule on (0, 1): the sign variations of the coefficients of
+// (1 + t)^n f(1/(1 + t)) bound the number of roots of f in (0, 1) from
+// above. Zero variations prove that f has no root there (an exclusion test
+// only; isolation is Arb's).
+bool may_have_root_in_unit_interval(const fmpz_poly_t f) {
+  ZPoly q;
+  fmpz_poly_reverse(q.p, f, fmpz_poly_length(f));  // x^n f(1/x)
+  fmpz_t one;
+  fmpz_init_set_ui(one, 1);
+  fmpz_poly_taylor_shift(q.p, q.p, one);  // evaluated at x = 1 + t
+  fmpz_clear(one);
+  int variations = 0, last = 0;
+  for (slong i = 0; i < fmpz_poly_length(q.p); ++i) {
+    const int s = fmpz_sgn(fmpz_poly_get_coeff_ptr(q.p, i));
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++variations;
+    last = s;
+  }
+  return variations > 0;
+}
+
 constexpr int kMaxBisections = 100000;  // far above what distinct roots of these degrees need
 
 // The real roots of one irreducible factor f (degree >= 2) inside (a, b).
@@ -124,6 +145,7 @@ void irrational_roots(const fmpz_poly_t f, const Rational& a, const Rational& b,
 std::vector<AlgebraicReal> real_roots(const std::vector<Polynomial>& polys, const Rational& a, const Rational& b) {
   if (!(a < b)) throw InputError("interval", to_string(a) + ", " + to_string(b), "must have a < b");
   std::vector<std::vector<Integer>> factors;  // distinct irreducible factors, positive leading coefficient
+  const bool unit = a == 0 && b == 1;         // Descartes' exclusion test applies
   ZPoly f;
   fmpz_poly_factor_t fac;
   fmpz_poly_factor_init(fac);
@@ -131,6 +153,7 @@ std::vector<AlgebraicReal> real_roots(const std::vector<Polynomial>& polys, cons
     const std::vector<Integer> c = primitive_integer(p);
     if (c.size() < 2) continue;  // zero or constant
     to_flint(c, f.p);
+    if (unit && !may_have_root_in_unit_interval(f.p)) continue;
     fmpz_poly_factor(fac, f.p);
     for (slong i = 0; i < fac->num; ++i) {
       std::vector<Integer> g = from_flint(fac->p + i);
@@ -148,6 +171,7 @@ std::vector<AlgebraicReal> real_roots(const std::vector<Polynomial>& polys, cons
       continue;
     }
     to_flint(g, f.p);
+    if (unit && !may_have_root_in_unit_interval(f.p)) continue;
     irrational_roots(f.p, a, b, roots);
   }
   // Order the roots: all are distinct, so refining overlapping neighbours

@@ -45,6 +45,18 @@ GTEST_TEST(Algebraic, RationalRootsComeOutExactAndEveryRootIsSortedAndSeparated)
   EXPECT_GT(roots[2].lo, Rational(5, 3));
 }
 
+GTEST_TEST(Algebraic, TheUnitIntervalKeepsEveryRootInsideAndNoneOutside) {
+  // 8x² − 8x + 1: roots (2 ± √2)/4 ≈ 0.146, 0.854, both inside; (x − 2)(x + 1): none.
+  const auto roots = real_roots({Polynomial{1, -8, 8}, Polynomial{-2, -1, 1}}, Rational(0), Rational(1));
+  ASSERT_EQ(roots.size(), 2u);
+  EXPECT_EQ(roots[0].poly, ints({1, -8, 8}));
+  EXPECT_EQ(compare(roots[0], Rational(146, 1000)), 1);
+  EXPECT_EQ(compare(roots[0], Rational(147, 1000)), -1);
+  EXPECT_EQ(compare(roots[1], Rational(853, 1000)), 1);
+  EXPECT_EQ(compare(roots[1], Rational(854, 1000)), -1);
+  EXPECT_TRUE(real_roots({Polynomial{-2, -1, 1}}, Rational(0), Rational(1)).empty());
+}
+
 GTEST_TEST(Algebraic, ZeroAndConstantPolynomialsHaveNoRoots) {
   EXPECT_TRUE(real_roots({Polynomial{}, Polynomial{7}, Polynomial{0, 0}}, Rational(0), Rational(1)).empty());
   EXPECT_THROW(real_roots({Polynomial{0, 1}}, Rational(1), Rational(1)), InputError);
