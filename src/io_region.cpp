@@ -22,6 +22,20 @@ json magnitudes_json(const RegionInterval& r) {
           {"approx", {to_double(m.lo), m.hi ? json(to_double(*m.hi)) : json(nullptr)}}};
 }
 
+// An end of an interval: "p/q", or for an irrational end of the exact
+// region its minimal polynomial and isolating interval (docs/formats.md).
+json end_json(const Rational& u, const std::optional<AlgebraicReal>& exact) {
+  if (!exact) return to_string(u);
+  json poly = json::array();
+  for (const auto& c : exact->poly) poly.push_back(c.str());
+  return {{"poly", poly}, {"isolating", {to_string(exact->lo), to_string(exact->hi)}}, {"approx", exact->approx()}};
+}
+
+// The same in text: exact when rational, else the certified decimal digits.
+std::string end_text(const Rational& u, const std::optional<AlgebraicReal>& exact) {
+  return exact ? certified_decimal(*exact) : to_string(u);
+}
+
 std::map<std::string, Rational> status_lengths(const Region& region) {
   std::map<std::string, Rational> len{{"in", 0}, {"out", 0}, {"partial", 0}};
   for (const auto& r : region.intervals) len[to_string(r.status)] += r.u1 - r.u0;
@@ -41,8 +55,8 @@ std::string region_json(const Scene& scene, const Region& region, const std::str
   for (const auto& r : region.intervals) {
     ++counts[to_string(r.status)];
     doc["intervals"].push_back({{"curve", r.curve},
-                                {"u0", to_string(r.u0)},
-                                {"u1", to_string(r.u1)},
+                                {"u0", end_json(r.u0, r.exact_u0)},
+                                {"u1", end_json(r.u1, r.exact_u1)},
                                 {"status", to_string(r.status)},
                                 {"half_line", r.half_line},
                                 {"magnitudes", magnitudes_json(r)}});
@@ -66,6 +80,11 @@ std::string region_json(const Scene& scene, const Region& region, const std::str
                   {"depth", region.stats.depth},
                   {"partial_length", to_string(region.stats.partial_length)},
                   {"seconds", region.stats.seconds}};
+  if (region.exact) {
+    doc["stats"]["roots"] = region.stats.roots;
+    doc["exact"] = true;
+    doc["digits"] = region.digits;
+  }
   if (region.push != "step") doc["push"] = region.push;
   return doc.dump(2) + "\n";
 }
@@ -75,10 +94,14 @@ std::string region_text(const Scene& scene, const Region& region, const std::str
   std::ostringstream out;
   const bool sustained = region.push == "sustained";
   out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "") << method;
-  if (resolution) out << ", resolution " << to_string(*resolution);
+  if (region.exact)
+    out << ", exact: root isolation" << (region.digits ? ", digits " + std::to_string(region.digits) : "");
+  else if (resolution)
+    out << ", resolution " << to_string(*resolution);
   out << ", pusher mu " << to_string(pusher_mu) << ")\n";
   for (const auto& r : region.intervals) {
-    out << "  curve " << r.curve << "  u in [" << to_string(r.u0) << ", " << to_string(r.u1) << "]  ";
+    out << "  curve " << r.curve << "  u in [" << end_text(r.u0, r.exact_u0) << ", " << end_text(r.u1, r.exact_u1)
+        << "]  ";
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");
     if (r.status == RegionStatus::kIn) {
       out << (r.half_line ? "  half-line" : "");
@@ -95,7 +118,9 @@ std::string region_text(const Scene& scene, const Region& region, const std::str
   out << "parameter length: in " << to_string(len.at("in")) << ", out " << to_string(len.at("out")) << ", partial "
       << to_string(len.at("partial")) << "\n";
   out << "cone tests " << region.stats.cone_tests << ", LP tests " << region.stats.lp_tests << ", point tests "
-      << region.stats.point_tests << ", depth " << region.stats.depth << ", " << region.stats.seconds << " s\n";
+      << region.stats.point_tests << ", depth " << region.stats.depth;
+  if (region.exact) out << ", roots " << region.stats.roots;
+  out << ", " << region.stats.seconds << " s\n";
   return out.str();
 }
 

@@ -62,6 +62,14 @@ struct Picture {
   const char* push_caption = nullptr;
 };
 
+// The ends to draw: an exact (algebraic) end refined to width 10^-9 of the
+// curve parameter, then its midpoint (display only).
+std::pair<Rational, Rational> drawn_ends(const RegionInterval& r) {
+  const Rational w(1, 1000000000);
+  return {r.exact_u0 ? refined(*r.exact_u0, w).midpoint() : r.u0,
+          r.exact_u1 ? refined(*r.exact_u1, w).midpoint() : r.u1};
+}
+
 void draw_region(const std::string& path, const Scene& scene, const Region& region, const std::string& method,
                  const Rational& resolution, const Rational& pusher_mu, const Picture& pic) {
   const Boundary& b = *scene.body.boundary;
@@ -112,9 +120,10 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
   svg << "<rect x='" << kMargin << "' y='" << kMargin + 50 << "' width='" << kPanel << "' height='" << kPanel
       << "' fill='none' stroke='#ddd'/>\n";
   for (const auto& r : region.intervals) {
+    const auto [u0, u1] = drawn_ends(r);
     for (const auto& piece : b.pieces) {
-      if (piece.curve != r.curve || piece.u1 < r.u0 || piece.u0 > r.u1) continue;
-      const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
+      if (piece.curve != r.curve || piece.u1 < u0 || piece.u0 > u1) continue;
+      const Rational a = std::max(piece.u0, u0), e = std::min(piece.u1, u1);
       if (a == e) {  // a corner point
         const Vec2 p = piece.point(piece.local(a));
         svg << "<circle cx='" << F.x(d(p.x)) << "' cy='" << F.y(d(p.y)) << "' r='5' fill='" << colour(r.status)
@@ -190,8 +199,9 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
   // Boundary wrench curve (frictionless normal), coloured by status.
   for (const auto& r : region.intervals)
     for (const auto& piece : b.pieces) {
-      if (piece.curve != r.curve || piece.u1 <= r.u0 || piece.u0 >= r.u1) continue;
-      const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
+      const auto [u0, u1] = drawn_ends(r);
+      if (piece.curve != r.curve || piece.u1 <= u0 || piece.u0 >= u1) continue;
+      const Rational a = std::max(piece.u0, u0), e = std::min(piece.u1, u1);
       double last_lon = 1e9;
       for (int k = 0; k <= 12; ++k) {
         const Rational s = piece.local(a + (e - a) * Rational(k, 12));
