@@ -139,7 +139,7 @@ void check_inputs(const Scene& scene, const Rational& mu, const RegionTarget& ta
   if (!scene.body.boundary)
     throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no boundary to push on");
-  if (mu < 0) throw InputError("--pusher-mu", to_string(mu), "must be >= 0");
+  if (mu < 0) throw InputError("RegionOptions.pusher_mu", to_string(mu), "must be >= 0");
 }
 
 // Tangents on both sides of every piece start (in loop order).
@@ -221,9 +221,10 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
   check_inputs(scene, mu, target);
-  if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
+  if (options.resolution <= 0)
+    throw InputError("RegionOptions.resolution", to_string(options.resolution), "must be > 0");
   if (options.digits < 0 || options.digits > 1000)
-    throw InputError("--digits", std::to_string(options.digits), "must be in [0, 1000]");
+    throw InputError("RegionOptions.digits", std::to_string(options.digits), "must be in [0, 1000]");
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
   target.stats = &ctx.stats;
@@ -262,11 +263,17 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   }
   region.stats = ctx.stats;
   region.push = target.push_model();
+  region.target = target.name();
   region.cone = options.cone;
   if (!options.exact) region.resolution = options.resolution;
   region.pusher_mu = mu;
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
+}
+
+std::string method_of(const Region& region) {
+  if (region.sampled) return "sample";
+  return region.exact ? "exact" : to_string(region.cone);
 }
 
 Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options) {
@@ -293,7 +300,8 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(default_pusher_mu(scene, target));
   check_inputs(scene, mu, target);
-  if (points_per_curve <= 0) throw InputError("--points", std::to_string(points_per_curve), "must be >= 1");
+  if (points_per_curve <= 0)
+    throw InputError("sample_region(points_per_curve)", std::to_string(points_per_curve), "must be >= 1");
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = &ctx.stats;
@@ -314,6 +322,8 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   target.stats = nullptr;
   region.stats = ctx.stats;
   region.push = target.push_model();
+  region.target = target.name();
+  region.sampled = true;
   region.pusher_mu = mu;
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;

@@ -7,13 +7,14 @@
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/internal/polynomial.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region_target.h"
 #include "fixel/wrench_cone.h"
 
 namespace fixel {
 
 std::vector<Polynomial> RegionTarget::sign_polynomials(const std::vector<std::array<Polynomial, 3>>&) const {
-  throw UnsupportedError("--exact", "",
+  throw UnsupportedError("RegionOptions.exact", "",
                          std::string("is not supported for the push model \"") + push_model() +
                              "\" of this target (it gives no sign polynomials)");
 }
@@ -102,6 +103,7 @@ class SeatingTarget final : public RegionTarget {
  public:
   SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0) {}
   const char* push_model() const override { return "step"; }
+  const char* name() const override { return "S"; }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
                      RegionInterval* detail) override {
@@ -164,16 +166,17 @@ class GuaranteedTarget final : public RegionTarget {
  public:
   GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {}
   const char* push_model() const override { return "step"; }
+  const char* name() const override { return "G"; }
 
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)
-      throw UnsupportedError("--pusher-mu", to_string(mu),
+      throw UnsupportedError("RegionOptions.pusher_mu", to_string(mu),
                              "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
                              "does not make every push direction between them hit G (use a frictionless pusher)");
   }
 
   std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>&) const override {
-    throw UnsupportedError("--exact", "",
+    throw UnsupportedError("RegionOptions.exact", "",
                            "with --guaranteed is not supported: G is a union of pieces minus non-seating "
                            "sets with strict rows, and its exact region is a separate project "
                            "(docs/theory.md §12); use subdivision");

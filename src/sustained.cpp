@@ -252,7 +252,7 @@ std::vector<Polynomial> j_polynomials(const Data<Q2>& d, const std::vector<std::
 }
 
 std::vector<Polynomial> j_polynomials(const Data<IV>&, const std::vector<std::array<Polynomial, 3>>&) {
-  throw UnsupportedError("--exact", "",
+  throw UnsupportedError("RegionOptions.exact", "",
                          "needs an exact seated pose q*: with curved contacts q* is only enclosed "
                          "(docs/theory.md §10.1), so J's rows are not exact numbers");
 }
@@ -263,6 +263,7 @@ class SustainedTarget final : public RegionTarget {
  public:
   explicit SustainedTarget(std::shared_ptr<const SustainedData> d) : d_(std::move(d)) {}
   const char* push_model() const override { return "sustained"; }
+  const char* name() const override { return "J"; }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
     bool in = false;

@@ -9,14 +9,15 @@
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::mat;
-using testing::vec;
+using test::mat;
+using test::vec;
 
 // Second method: every solution with a nonsingular principal block B_SS,
 // found by trying all 2^n complementary bases.
@@ -46,7 +47,7 @@ std::vector<VectorQ> brute_force_solutions(const MatrixQ& B, const VectorQ& b) {
   return out;
 }
 
-TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
+GTEST_TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   VectorQ p = vec({-1, -1, -1});
   const TimeSteppingLcp lcp = build_lcp(scene);
@@ -59,7 +60,7 @@ TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
   EXPECT_EQ(r.z[0], Rational(161, 202));
 }
 
-TEST(Lemke, OneByOneProblems) {
+GTEST_TEST(Lemke, OneByOneProblems) {
   auto solve = [](int B, int b) { return solve_lcp_lemke(mat({{B}}), vec({b})); };
   const auto a = solve(1, -1);
   ASSERT_EQ(a.status, LemkeStatus::kSolved);
@@ -72,7 +73,7 @@ TEST(Lemke, OneByOneProblems) {
   EXPECT_EQ(solve(0, 3).z[0], Rational(0));
 }
 
-TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
+GTEST_TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
   // w1 = −z2 − 1 can never be ≥ 0; B is skew (copositive-plus), so Lemke's
   // ray is a certificate of infeasibility.
   const MatrixQ B = mat({{0, -1}, {1, 0}});
@@ -81,7 +82,7 @@ TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
   EXPECT_EQ(solve_lcp_lemke(mat({{-1, 0}, {0, -1}}), vec({-1, -1})).status, LemkeStatus::kRayTermination);
 }
 
-TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
+GTEST_TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
   // b has zeros and equal negative entries: both the first pivot and later
   // ratio tests tie; the lexicographic rule must still end with a solution.
   const MatrixQ B = mat({{1, 2, 0, 0}, {0, 1, 2, 0}, {0, 0, 1, 2}, {2, 0, 0, 1}});
@@ -95,20 +96,20 @@ TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
   EXPECT_EQ(r2.z, vec({0, 1, 0, 1}));
 }
 
-TEST(Lemke, PivotLimitIsAStatusNotASolution) {
+GTEST_TEST(Lemke, PivotLimitIsAStatusNotASolution) {
   const MatrixQ B = mat({{1, 2, 0}, {0, 1, 2}, {2, 0, 1}});
   const auto r = solve_lcp_lemke(B, vec({-1, -1, -1}), 1);
   EXPECT_EQ(r.status, LemkeStatus::kPivotLimit);
   EXPECT_EQ(r.z.size(), 0);
 }
 
-TEST(Lemke, RejectsMismatchedSizes) { EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError); }
+GTEST_TEST(Lemke, RejectsMismatchedSizes) { EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError); }
 
 // Lemke's theorem: for positive semidefinite B (copositive-plus), the
 // lexicographic method ends with a solution exactly when one exists. Random
 // degenerate problems (b with many zeros and repeated values) check this
 // against brute force.
-TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
+GTEST_TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
   std::mt19937_64 rng(17);
   std::uniform_int_distribution<int> small(-2, 2), size(1, 6);
   int solved = 0, unsolvable = 0;
@@ -139,7 +140,7 @@ TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
 }
 
 // P-matrices have exactly one solution; Lemke must return it.
-TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
+GTEST_TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
   std::mt19937_64 rng(23);
   std::uniform_int_distribution<int> small(-3, 3);
   for (int trial = 0; trial < 100; ++trial) {
@@ -158,7 +159,7 @@ TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
   }
 }
 
-TEST(IsSolution, RejectsEachViolatedCondition) {
+GTEST_TEST(IsSolution, RejectsEachViolatedCondition) {
   const MatrixQ B = mat({{1}});
   EXPECT_TRUE(is_solution(B, vec({-1}), vec({0}), vec({1})));
   EXPECT_FALSE(is_solution(B, vec({-1}), vec({1}), vec({1})));   // w ≠ Bz + b

@@ -10,7 +10,7 @@
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
@@ -21,6 +21,7 @@ class HalfspaceTarget final : public RegionTarget {
  public:
   explicit HalfspaceTarget(VectorQ a) : a_(std::move(a)) {}
   const char* push_model() const override { return "sustained"; }
+  const char* name() const override { return "half-space"; }
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval*) override {
     for (const auto& g : gens)
       if (a_.dot(g) <= 0) return false;
@@ -63,7 +64,7 @@ Scene square(bool cubic_bottom) {
   }
   Curve rest;
   rest.points = {{1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
-  Scene s = testing::scene_file("polygon");
+  Scene s = test::scene_file("polygon");
   s.body.boundary = std::make_shared<const Boundary>(make_boundary({bottom, rest}));
   s.body.p_AoCm_A = {0, 0};
   s.pusher_mu = 0;
@@ -80,7 +81,7 @@ GTEST_TEST(RegionExact, AStraightEdgeHasItsRationalEndpointInClosedForm) {
   // Bottom edge P(u) = (−1 + 2u, −1), tangent (2, 0), inward normal (0, 2):
   // w = (0, 2, 2(−1 + 2u)). With a = (0, −1, 3), a·w = 12u − 8: IN on (2/3, 1).
   const Scene scene = square(false);
-  HalfspaceTarget target(testing::v3(0, -1, 3));
+  HalfspaceTarget target(test::v3(0, -1, 3));
   RegionOptions opt;
   opt.exact = true;
   const Region region = compute_region(scene, target, opt);
@@ -101,7 +102,7 @@ GTEST_TEST(RegionExact, ACubicPieceHasTheGoldenRatioAsItsEndpoint) {
   // w = (0, 2s + 1, x(s)(2s + 1)). With a = (0, 0, 1) the push is IN iff
   // x(s) > 0, i.e. s > (√5 − 1)/2, the root of s² + s − 1.
   const Scene scene = square(true);
-  HalfspaceTarget target(testing::v3(0, 0, 1));
+  HalfspaceTarget target(test::v3(0, 0, 1));
   RegionOptions opt;
   opt.exact = true;
   opt.digits = 12;
@@ -122,7 +123,7 @@ GTEST_TEST(RegionExact, ACubicPieceHasTheGoldenRatioAsItsEndpoint) {
 }
 
 GTEST_TEST(RegionExact, RefusesTheGuaranteedSetWithAClearError) {
-  const Scene scene = testing::scene_file("nonunique_part");
+  const Scene scene = test::scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
   RegionOptions opt;
@@ -180,7 +181,7 @@ GTEST_TEST(RegionExact, EveryEndpointIsATrueChangeOnRandomPartsForSAndJ) {
   int ends_S = 0, ends_J = 0, irrational = 0;
   for (int trial = 0; trial < 10; ++trial) {
     const Rational mu = trial % 2 == 0 ? Rational(0) : Rational(1, 5);
-    Scene scene = testing::random_blob_scene(rng, mu);
+    Scene scene = test::random_blob_scene(rng, mu);
     RegionOptions opt;
     opt.exact = true;
     try {
@@ -209,7 +210,7 @@ GTEST_TEST(RegionExact, EveryEndpointIsATrueChangeOnRandomPartsForSAndJ) {
 GTEST_TEST(RegionExact, JOverAQuadraticFieldGivesTrueEndpointsOnThePolygon) {
   // The polygon's seat is rotated: J's rows lie in Q(√d), the sign
   // polynomials are norms, and some of their roots belong to the conjugate.
-  const Scene scene = testing::scene_file("polygon");
+  const Scene scene = test::scene_file("polygon");
   const SustainedSet J = sustained_set(scene);
   auto target = sustained_target(J);
   for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
@@ -228,7 +229,7 @@ GTEST_TEST(RegionExact, AgreesWithSubdivisionAtResolution1Over4096) {
   int compared = 0;
   for (int trial = 0; trial < 4; ++trial) {
     const Rational mu = trial % 2 == 0 ? Rational(0) : Rational(1, 5);
-    const Scene scene = testing::random_blob_scene(rng, mu);
+    const Scene scene = test::random_blob_scene(rng, mu);
     const SeatingSet S = seating_set(scene);
     RegionOptions sub;
     sub.resolution = Rational(1, 4096);
