@@ -31,9 +31,10 @@ json end_json(const Rational& u, const std::optional<AlgebraicReal>& exact) {
   return {{"poly", poly}, {"isolating", {to_string(exact->lo), to_string(exact->hi)}}, {"approx", exact->approx()}};
 }
 
-// The same in text: exact when rational, else the certified decimal digits.
-std::string end_text(const Rational& u, const std::optional<AlgebraicReal>& exact) {
-  return exact ? certified_decimal(*exact) : to_string(u);
+// The same in text: exact when rational, else the certified decimal digits
+// (at most `digits`, 15 when 0).
+std::string end_text(const Rational& u, const std::optional<AlgebraicReal>& exact, int digits) {
+  return exact ? certified_decimal(*exact, digits > 0 ? digits : 15) : to_string(u);
 }
 
 std::map<std::string, Rational> status_lengths(const Region& region) {
@@ -94,18 +95,20 @@ std::string region_text(const Scene& scene, const Region& region) {
   out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "")
       << method_of(region);
   if (region.exact)
-    out << ", exact: root isolation" << (region.digits ? ", digits " + std::to_string(region.digits) : "");
+    out << ": root isolation" << (region.digits ? ", digits " + std::to_string(region.digits) : "");
   else if (region.resolution)
     out << ", resolution " << to_string(*region.resolution);
   out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
   for (const auto& r : region.intervals) {
-    out << "  curve " << r.curve << "  u in [" << end_text(r.u0, r.exact_u0) << ", " << end_text(r.u1, r.exact_u1)
-        << "]  ";
+    out << "  curve " << r.curve << "  u in [" << end_text(r.u0, r.exact_u0, region.digits) << ", "
+        << end_text(r.u1, r.exact_u1, region.digits) << "]  ";
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");
     if (r.status == RegionStatus::kIn) {
       out << (r.half_line ? "  half-line" : "");
       if (sustained)
         out << "  any magnitude (sustained push: seats and stays)";
+      else if (region.exact)
+        out << "  (magnitudes: not computed with --exact)";
       else if (!r.magnitudes.empty)
         out << "  |p| in " << r.magnitudes.describe() << " N*s";
       else
@@ -114,8 +117,12 @@ std::string region_text(const Scene& scene, const Region& region) {
     out << "\n";
   }
   const auto len = status_lengths(region);
-  out << "parameter length: in " << to_string(len.at("in")) << ", out " << to_string(len.at("out")) << ", partial "
-      << to_string(len.at("partial")) << "\n";
+  // Irrational ends make the exact lengths irrational: show them as decimals.
+  auto length = [&](const char* k) {
+    return region.exact ? std::to_string(to_double(len.at(k))) : to_string(len.at(k));
+  };
+  out << "parameter length" << (region.exact ? " (approx.)" : "") << ": in " << length("in") << ", out "
+      << length("out") << ", partial " << length("partial") << "\n";
   out << "cone tests " << region.stats.cone_tests << ", LP tests " << region.stats.lp_tests << ", point tests "
       << region.stats.point_tests << ", depth " << region.stats.depth;
   if (region.exact) out << ", roots " << region.stats.roots;
