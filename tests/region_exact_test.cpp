@@ -223,7 +223,39 @@ GTEST_TEST(RegionExact, JOverAQuadraticFieldGivesTrueEndpointsOnThePolygon) {
 }
 
 // Each IN/OUT stretch of the subdivision lies inside an exact stretch of
-// the same status.
+// the same status. Returns the number of stretches compared.
+int check_agreement(const Region& a, const Region& b) {
+  int compared = 0;
+  for (const auto& r : a.intervals) {
+    if (r.status == RegionStatus::kPartial) continue;
+    bool inside = false;
+    for (const auto& e : b.intervals)
+      if (e.curve == r.curve && e.status == r.status && compare(start_of(e), r.u0) <= 0 &&
+          compare(end_of(e), r.u1) >= 0)
+        inside = true;
+    EXPECT_TRUE(inside) << "[" << to_string(r.u0) << ", " << to_string(r.u1) << "] " << to_string(r.status);
+    ++compared;
+  }
+  for (const auto& e : b.intervals) EXPECT_TRUE(e.status != RegionStatus::kPartial || e.u0 == e.u1);
+  return compared;
+}
+
+GTEST_TEST(RegionExact, AgreesWithSubdivisionForJOnThePolygon) {
+  const Scene scene = test::scene_file("polygon");
+  const SustainedSet J = sustained_set(scene);
+  auto target = sustained_target(J);
+  int compared = 0;
+  for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+    RegionOptions sub;
+    sub.resolution = Rational(1, 4096);
+    sub.pusher_mu = mu;
+    RegionOptions ex = sub;
+    ex.exact = true;
+    compared += check_agreement(compute_region(scene, *target, sub), compute_region(scene, *target, ex));
+  }
+  EXPECT_GE(compared, 4);
+}
+
 GTEST_TEST(RegionExact, AgreesWithSubdivisionAtResolution1Over4096) {
   std::mt19937_64 rng(4096);
   int compared = 0;
@@ -235,19 +267,8 @@ GTEST_TEST(RegionExact, AgreesWithSubdivisionAtResolution1Over4096) {
     sub.resolution = Rational(1, 4096);
     RegionOptions ex;
     ex.exact = true;
-    const Region a = compute_region(scene, S, sub), b = compute_region(scene, S, ex);
-    for (const auto& r : a.intervals) {
-      if (r.status == RegionStatus::kPartial) continue;
-      bool inside = false;
-      for (const auto& e : b.intervals)
-        if (e.curve == r.curve && e.status == r.status && compare(start_of(e), r.u0) <= 0 &&
-            compare(end_of(e), r.u1) >= 0)
-          inside = true;
-      EXPECT_TRUE(inside) << "trial " << trial << " [" << to_string(r.u0) << ", " << to_string(r.u1) << "] "
-                          << to_string(r.status);
-      ++compared;
-    }
-    for (const auto& e : b.intervals) EXPECT_TRUE(e.status != RegionStatus::kPartial || e.u0 == e.u1);
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    compared += check_agreement(compute_region(scene, S, sub), compute_region(scene, S, ex));
   }
   EXPECT_GE(compared, 10);
 }
