@@ -40,6 +40,11 @@ RunControl* run_control();
 /// Ends a progress line, if one was shown.
 void end_progress();
 
+/// Throws InputError naming `flag` unless `path` can be written (its folder
+/// exists and is writable, and the file, if it exists, is writable); run
+/// before any output, so that a bad path never follows a printed report.
+void check_writable(const std::string& path, const std::string& flag);
+
 /// A pusher μ, or an interval "lo,hi", judged at its upper end.
 Rational parse_pusher_mu(const std::string& text);
 

@@ -20,6 +20,7 @@ struct PushArgs {
 };
 
 int run_push(const PushArgs& a) {
+  check_writable(a.svg_path, "--svg");
   const Scene scene = load_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");

@@ -69,6 +69,7 @@ int run_sustained_region(const Scene& scene, const RegionArgs& a, const physics:
 
 int run_region(const RegionArgs& a) {
   arm_run_control(a.run);
+  check_writable(a.svg_path, "--svg");
   const Scene scene = load_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");

@@ -47,6 +47,7 @@ int run_seat(const SeatArgs& a) {
   // Every input check before any output (the picture is a p_theta slice).
   if (!a.svg_path.empty() && scene.body.dof != 3)
     throw InputError("--svg", a.svg_path, "the S/G picture needs dof 3 (a slice at constant p_theta)");
+  check_writable(a.svg_path, "--svg");
   const SeatReport report = seat_report(scene, S, impulse, g, a.stable);
   std::cout << (a.json ? seat_json(scene, S, report, g) : seat_text(scene, S, report, g));
   if (!a.svg_path.empty()) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli.h"
 #include "fixel/error.h"
@@ -57,6 +58,17 @@ RunControl* run_control() { return &g_run; }
 void end_progress() {
   if (g_progress_shown) std::fputs("\n", stderr);
   g_progress_shown = false;
+}
+
+void check_writable(const std::string& path, const std::string& flag) {
+  if (path.empty()) return;
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) throw InputError(flag, path, "cannot be written: no such folder");
+  if (std::filesystem::is_directory(p, ec)) throw InputError(flag, path, "cannot be written: it is a folder");
+  const bool exists = std::filesystem::exists(p, ec);
+  if (access(exists ? path.c_str() : dir.c_str(), W_OK) != 0) throw InputError(flag, path, "cannot be written");
 }
 
 // The region shrinks as the pusher's μ grows (docs/theory.md §10), so an
