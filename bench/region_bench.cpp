@@ -136,6 +136,31 @@ void BM_Goal32PiecesAt2PowMinus20(benchmark::State& state) {
 }
 BENCHMARK(BM_Goal32PiecesAt2PowMinus20)->Unit(benchmark::kMillisecond);
 
+// The same part at 2^-10, and the exact region (root isolation, issue 15),
+// frictionless (the scene's pusher) and with pusher mu = 1/5.
+void BM_Blob32SubdivisionAt2PowMinus10(benchmark::State& state) {
+  const Loaded& l = scene(3);
+  fixel::RegionOptions opt;
+  opt.resolution = Rational(1, 1 << 10);
+  fixel::Region r;
+  for (auto _ : state) r = fixel::compute_region(l.scene, l.S, opt);
+  state.counters["cone_tests"] = static_cast<double>(r.stats.cone_tests);
+}
+BENCHMARK(BM_Blob32SubdivisionAt2PowMinus10)->Unit(benchmark::kMillisecond);
+
+void BM_Blob32Exact(benchmark::State& state) {
+  const Loaded& l = scene(3);
+  fixel::RegionOptions opt;
+  opt.exact = true;
+  if (state.range(0)) opt.pusher_mu = Rational(1, 5);
+  fixel::Region r;
+  for (auto _ : state) r = fixel::compute_region(l.scene, l.S, opt);
+  state.counters["roots"] = static_cast<double>(r.stats.roots);
+  state.counters["point_tests"] = static_cast<double>(r.stats.point_tests);
+  state.SetLabel(state.range(0) ? "pusher mu 1/5" : "frictionless");
+}
+BENCHMARK(BM_Blob32Exact)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
+
 void report_counts() {
   std::cout << "Per scene at resolution 1/1024 (tight vs paper) and at fixed depth 6 (resolution 1/64):\n";
   for (int k = 0; k < 3; ++k) {

@@ -8,6 +8,7 @@ packages=(
   libcgal-dev libgmp-dev libeigen3-dev libboost-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
   libbox2d-dev libmpfi-dev libtbb-dev libsiconos-numerics-dev
+  libflint-dev libflint-arb-dev
   pybind11-dev python3-dev python3-pybind11
   python3-numpy python3-matplotlib python3-pytest python3-hypothesis python3-tqdm
   python3-dask python3-distributed

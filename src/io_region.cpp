@@ -24,6 +24,21 @@ json magnitudes_json(const RegionInterval& r) {
           {"approx", {to_double(m.lo), m.hi ? json(to_double(*m.hi)) : json(nullptr)}}};
 }
 
+// An end of an interval: "p/q", or for an irrational end of the exact
+// region its minimal polynomial and isolating interval (docs/formats.md).
+json end_json(const Rational& u, const std::optional<AlgebraicReal>& exact) {
+  if (!exact) return to_string(u);
+  json poly = json::array();
+  for (const auto& c : exact->poly) poly.push_back(c.str());
+  return {{"poly", poly}, {"isolating", {to_string(exact->lo), to_string(exact->hi)}}, {"approx", exact->approx()}};
+}
+
+// The same in text: exact when rational, else the certified decimal digits
+// (at most `digits`, 15 when 0).
+std::string end_text(const Rational& u, const std::optional<AlgebraicReal>& exact, int digits) {
+  return exact ? certified_decimal(*exact, digits > 0 ? digits : 15) : to_string(u);
+}
+
 json point_json(const Vec2& p) { return json::array({to_string(p.x), to_string(p.y)}); }
 
 // Arc length per status, m (display).
@@ -59,8 +74,8 @@ std::string region_json(const Scene& scene, const Region& region) {
     const RegionInterval& r = region.intervals[k];
     ++counts[to_string(r.status)];
     doc["intervals"].push_back({{"curve", r.curve},
-                                {"u0", to_string(r.u0)},
-                                {"u1", to_string(r.u1)},
+                                {"u0", end_json(r.u0, r.exact_u0)},
+                                {"u1", end_json(r.u1, r.exact_u1)},
                                 {"status", to_string(r.status)},
                                 {"half_line", r.half_line},
                                 {"magnitudes", magnitudes_json(r)}});
@@ -96,6 +111,11 @@ std::string region_json(const Scene& scene, const Region& region) {
                   {"depth", region.stats.depth},
                   {"partial_length", to_string(region.stats.partial_length)},
                   {"seconds", region.stats.seconds}};
+  if (region.exact) {
+    doc["stats"]["roots"] = region.stats.roots;
+    doc["exact"] = true;
+    doc["digits"] = region.digits;
+  }
   if (region.push != "step") doc["push"] = region.push;
   internal::add_approx(doc);
   return doc.dump(2) + "\n";
@@ -107,7 +127,10 @@ std::string region_text(const Scene& scene, const Region& region) {
   const std::string meaning = in_meaning(region);
   out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "")
       << method_of(region);
-  if (region.resolution) out << ", resolution " << to_string(*region.resolution);
+  if (region.exact)
+    out << ": root isolation" << (region.digits ? ", digits " + std::to_string(region.digits) : "");
+  else if (region.resolution)
+    out << ", resolution " << to_string(*region.resolution);
   out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
   out << "  IN means \"" << meaning << "\""
       << (region.target == "S"   ? ": some outcome of the one-step model seats"
@@ -118,7 +141,8 @@ std::string region_text(const Scene& scene, const Region& region) {
          "frictionless push direction\n";
   for (std::size_t k = 0; k < region.intervals.size(); ++k) {
     const RegionInterval& r = region.intervals[k];
-    out << "  curve " << r.curve << "  u in [" << to_string(r.u0) << ", " << to_string(r.u1) << "]  ";
+    out << "  curve " << r.curve << "  u in [" << end_text(r.u0, r.exact_u0, region.digits) << ", "
+        << end_text(r.u1, r.exact_u1, region.digits) << "]  ";
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");
     if (k < region.places.size()) {
       const IntervalPlace& at = region.places[k];
@@ -135,6 +159,8 @@ std::string region_text(const Scene& scene, const Region& region) {
       out << "  [" << meaning << "]" << (r.half_line ? " half-line" : "");
       if (sustained)
         out << ", any magnitude";
+      else if (region.exact)
+        out << ", magnitudes not computed with --exact";
       else if (!r.magnitudes.empty)
         out << ", |p| in " << r.magnitudes.describe_readable() << " N*s";
       else
@@ -148,7 +174,9 @@ std::string region_text(const Scene& scene, const Region& region) {
       << ", partial " << percent(arc.at("partial"), region.outline_length)
       << " of its arc length (exact parameter lengths: --json \"lengths\")\n";
   out << "cone tests " << region.stats.cone_tests << ", LP tests " << region.stats.lp_tests << ", point tests "
-      << region.stats.point_tests << ", depth " << region.stats.depth << ", " << region.stats.seconds << " s\n";
+      << region.stats.point_tests << ", depth " << region.stats.depth;
+  if (region.exact) out << ", roots " << region.stats.roots;
+  out << ", " << region.stats.seconds << " s\n";
   return out.str();
 }
 

@@ -4,6 +4,7 @@
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
+#include "fixel/internal/region_exact.h"
 #include "fixel/lcp.h"
 #include "fixel/progress.h"
 #include "fixel/region_target.h"
@@ -70,7 +71,7 @@ RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, c
 RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
   ++ctx.stats.cone_tests;
-  RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}};
+  RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
   // The tight cone needs no hull (min/max over all control points is the
   // same); the paper cone's ⊥-angle test wants the polygon's vertices.
   const SegmentBounds bounds = segment_bounds(seg, ctx.method == ConeMethod::kPaper);
@@ -119,6 +120,7 @@ std::vector<RegionInterval> merge(const std::vector<RegionInterval>& in) {
   for (const auto& r : in) {
     if (!out.empty() && out.back().curve == r.curve && out.back().status == r.status && out.back().u1 == r.u0) {
       out.back().u1 = r.u1;
+      out.back().exact_u1 = r.exact_u1;
       out.back().half_line = out.back().half_line && r.half_line;
       out.back().magnitudes = out.back().magnitudes.intersect(r.magnitudes);
       if (!out.back().magnitude_set.empty() && !r.magnitude_set.empty() && !out.back().magnitudes.empty)
@@ -221,6 +223,8 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   check_inputs(scene, mu, target);
   if (options.resolution <= 0)
     throw InputError("RegionOptions.resolution", to_string(options.resolution), "must be > 0");
+  if (options.digits < 0 || options.digits > 1000)
+    throw InputError("RegionOptions.digits", std::to_string(options.digits), "must be in [0, 1000]");
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
   target.stats = &ctx.stats;
@@ -229,28 +233,49 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (js[k].corner) {
-      RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}};
+      RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
       corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set);
       corner.half_line = in_half_line(target, corner);
       raw.push_back(corner);
     }
-    subdivide(ctx, piece, 0, raw);
+    if (options.exact) {
+      poll(ctx.control, "region", static_cast<long>(k), static_cast<long>(b.pieces.size()), "pieces");
+      for (auto& r : internal::exact_piece_intervals(scene, target, piece, mu, ctx.stats)) raw.push_back(std::move(r));
+      target.stats = &ctx.stats;  // the point tests reset it
+    } else {
+      subdivide(ctx, piece, 0, raw);
+    }
   }
   target.stats = nullptr;
   Region region;
   region.intervals = options.merge ? merge(raw) : raw;
+  if (options.exact) {
+    region.exact = true;
+    region.digits = options.digits;
+    if (options.digits > 0) {
+      Rational width = 1;
+      for (int k = 0; k < options.digits; ++k) width /= 10;
+      for (auto& r : region.intervals) {
+        if (r.exact_u0) r.u0 = (r.exact_u0 = refined(*r.exact_u0, width))->midpoint();
+        if (r.exact_u1) r.u1 = (r.exact_u1 = refined(*r.exact_u1, width))->midpoint();
+      }
+    }
+  }
   region.stats = ctx.stats;
   region.push = target.push_model();
   region.target = target.name();
   region.cone = options.cone;
-  region.resolution = options.resolution;
+  if (!options.exact) region.resolution = options.resolution;
   region.pusher_mu = mu;
   locate_intervals(scene, region);
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
 }
 
-std::string method_of(const Region& region) { return region.sampled ? "sample" : to_string(region.cone); }
+std::string method_of(const Region& region) {
+  if (region.sampled) return "sample";
+  return region.exact ? "exact" : to_string(region.cone);
+}
 
 Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options) {
   const auto target = step_target(scene, S, options.guaranteed);
@@ -289,7 +314,7 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
     for (int k = 0; k < points_per_curve; ++k) {
       poll(control, "sample", static_cast<long>(region.intervals.size()), total, "points");
       const Rational u = curve.u_begin() + (curve.u_end() - curve.u_begin()) * Rational(k, points_per_curve);
-      RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}, {}};
+      RegionInterval r{static_cast<int>(c), u, u, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
       r.status = status_at(ctx, b, js, static_cast<int>(c), u, &r.magnitudes, &r.magnitude_set);
       r.half_line = in_half_line(target, r);
       region.intervals.push_back(r);

@@ -6,13 +6,46 @@
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
+#include "fixel/internal/polynomial.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region_target.h"
 #include "fixel/wrench_cone.h"
 
 namespace fixel {
 
+std::vector<Polynomial> RegionTarget::sign_polynomials(const std::vector<std::array<Polynomial, 3>>&) const {
+  throw UnsupportedError("RegionOptions.exact", "",
+                         std::string("is not supported for the push model \"") + push_model() +
+                             "\" of this target (it gives no sign polynomials)");
+}
+
 namespace {
+
+// The ray-test conditions of S along a piece (docs/theory.md §12): for each
+// generator g(s) and facet a·p >= c of S, α(s) = a·g(s) (β = c − a·b0 is
+// constant), and for each pair of facets β_h α_k − β_k α_h. T(g) is an
+// intersection of half-lines {τ α_h >= β_h} with τ > 0; whether it is empty
+// depends only on the signs of the α_h, the β_h and those cross terms.
+std::vector<Polynomial> ray_test_polynomials(const std::vector<Halfspace>& rows, const VectorQ& b0,
+                                             const std::vector<std::array<Polynomial, 3>>& gens) {
+  std::vector<Polynomial> out;
+  std::vector<std::array<Polynomial, 3>> distinct;
+  for (const auto& g : gens)
+    if (std::find(distinct.begin(), distinct.end(), g) == distinct.end()) distinct.push_back(g);
+  for (const auto& g : distinct) {
+    std::vector<Polynomial> alpha;
+    std::vector<Rational> beta;
+    for (const auto& h : rows) {
+      alpha.push_back(internal::row_dot({h.a[0], h.a[1], h.a[2]}, g));
+      beta.push_back(h.c - h.a.dot(b0));
+      out.push_back(alpha.back());
+    }
+    for (std::size_t i = 0; i < alpha.size(); ++i)
+      for (std::size_t k = i + 1; k < alpha.size(); ++k)
+        out.push_back(internal::psub(internal::pscale(alpha[k], beta[i]), internal::pscale(alpha[i], beta[k])));
+  }
+  return out;
+}
 
 // No ray of the cone (τ > 0) meets the convex piece Q: the set
 // {μ >= 0 : b0 + Σ μ_j g_j ∈ Q} is empty (exact LP with strict rows). When
@@ -117,6 +150,11 @@ class SeatingTarget final : public RegionTarget {
     return lp.value == 0;
   }
 
+  std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>& gens) const override {
+    if (S_.dof != 3) throw UnsupportedError("body.dof", std::to_string(S_.dof), "the exact region needs dof 3");
+    return ray_test_polynomials(S_.halfspaces, b0_, gens);
+  }
+
  private:
   const SeatingSet& S_;
   VectorQ b0_;
@@ -135,6 +173,13 @@ class GuaranteedTarget final : public RegionTarget {
       throw UnsupportedError("RegionOptions.pusher_mu", to_string(mu),
                              "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
                              "does not make every push direction between them hit G (use a frictionless pusher)");
+  }
+
+  std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>&) const override {
+    throw UnsupportedError("RegionOptions.exact", "",
+                           "with --guaranteed is not supported: G is a union of pieces minus non-seating "
+                           "sets with strict rows, and its exact region is a separate project "
+                           "(docs/theory.md §12); use subdivision");
   }
 
   // The hit set of one convex piece is convex: IN when one piece holds

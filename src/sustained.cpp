@@ -1,10 +1,12 @@
 #include "fixel/sustained.h"
 
+#include <algorithm>
 #include <variant>
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/cone3.h"
+#include "fixel/internal/polynomial.h"
 #include "fixel/region_target.h"
 
 namespace fixel {
@@ -181,6 +183,80 @@ bool cone_misses_J(const Data<NT>& d, const std::vector<VectorQ>& gens, RegionSt
   return !feasible(rows);
 }
 
+// A polynomial with coefficients in Q(√d): A(s) + √d B(s).
+struct PolyQ2 {
+  Polynomial A, B;
+};
+
+PolyQ2 row_dot_q2(const A3<Q2>& a, const std::array<Polynomial, 3>& w, Rational& root) {
+  PolyQ2 out;
+  for (int k = 0; k < 3; ++k) {
+    out.A = padd(out.A, pscale(w[k], a[k].a0()));
+    if (a[k].is_extended() && a[k].a1() != 0) {
+      if (root == 0)
+        root = a[k].root();
+      else if (root != a[k].root())
+        throw InternalError("sustained set: coefficients from two quadratic fields");
+      out.B = padd(out.B, pscale(w[k], a[k].a1()));
+    }
+  }
+  return out;
+}
+
+// (A1 + √d B1)(A2 + √d B2) − (A3 + √d B3)(A4 + √d B4).
+PolyQ2 det_q2(const PolyQ2& x1, const PolyQ2& y2, const PolyQ2& y1, const PolyQ2& x2, const Rational& d) {
+  auto mul = [&](const PolyQ2& p, const PolyQ2& q) {
+    return PolyQ2{padd(pmul(p.A, q.A), pscale(pmul(p.B, q.B), d)), padd(pmul(p.A, q.B), pmul(p.B, q.A))};
+  };
+  const PolyQ2 a = mul(x1, y2), b = mul(y1, x2);
+  return {psub(a.A, b.A), psub(a.B, b.B)};
+}
+
+// A rational polynomial whose real roots include those of A + √d B: the
+// norm A² − d B² (the product with the conjugate).
+Polynomial norm_q2(const PolyQ2& p, const Rational& d) {
+  if (p.B.empty()) return p.A;
+  if (p.A.empty()) return p.B;
+  return psub(pmul(p.A, p.A), pscale(pmul(p.B, p.B), d));
+}
+
+// The cone and jam-cone conditions of J along a piece (docs/theory.md §12):
+// a_k·w_j(s) for the rows of int K and every jam facet f, and, for a fan of
+// two generators (frictional pusher), (f·w_1)(f'·w_2) − (f·w_2)(f'·w_1) for
+// every pair of facets of one jam cone. Whether the fan {λ1 w_1 + λ2 w_2}
+// meets a jam cone off 0 is a one-dimensional system in λ2/(λ1 + λ2) whose
+// answer depends only on those signs.
+std::vector<Polynomial> j_polynomials(const Data<Q2>& d, const std::vector<std::array<Polynomial, 3>>& gens_in) {
+  std::vector<std::array<Polynomial, 3>> gens;
+  for (const auto& g : gens_in)
+    if (std::find(gens.begin(), gens.end(), g) == gens.end()) gens.push_back(g);
+  Rational root = 0;
+  std::vector<PolyQ2> q2;
+  for (const auto& g : gens)
+    for (const auto& a : d.K_rows) q2.push_back(row_dot_q2(a, g, root));
+  for (const auto& jam : d.jams) {
+    std::vector<std::vector<PolyQ2>> x(gens.size());
+    for (std::size_t j = 0; j < gens.size(); ++j)
+      for (const auto& f : jam.facets) {
+        x[j].push_back(row_dot_q2(f, gens[j], root));
+        q2.push_back(x[j].back());
+      }
+    if (gens.size() == 2)
+      for (std::size_t m = 0; m < jam.facets.size(); ++m)
+        for (std::size_t l = m + 1; l < jam.facets.size(); ++l)
+          q2.push_back(det_q2(x[0][m], x[1][l], x[1][m], x[0][l], root));
+  }
+  std::vector<Polynomial> out;
+  for (const auto& p : q2) out.push_back(norm_q2(p, root));
+  return out;
+}
+
+std::vector<Polynomial> j_polynomials(const Data<IV>&, const std::vector<std::array<Polynomial, 3>>&) {
+  throw UnsupportedError("RegionOptions.exact", "",
+                         "needs an exact seated pose q*: with curved contacts q* is only enclosed "
+                         "(docs/theory.md §10.1), so J's rows are not exact numbers");
+}
+
 // The J target of the region. An undecided sign (enclosed q*) makes the
 // question's answer "no", so the segment stays PARTIAL: never a wrong in/out.
 class SustainedTarget final : public RegionTarget {
@@ -209,6 +285,10 @@ class SustainedTarget final : public RegionTarget {
     } catch (const Undecided&) {
       return false;
     }
+  }
+
+  std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>& gens) const override {
+    return std::visit([&](const auto& d) { return j_polynomials(d, gens); }, d_->data);
   }
 
   RegionStatus test_point(const std::vector<VectorQ>& gens, const Vec2&, const Vec2&, Magnitudes* out,

@@ -65,6 +65,14 @@ struct Picture {
   const char* push_caption = nullptr;
 };
 
+// The ends to draw: an exact (algebraic) end refined to width 10^-9 of the
+// curve parameter, then its midpoint (display only).
+std::pair<Rational, Rational> drawn_ends(const RegionInterval& r) {
+  const Rational w(1, 1000000000);
+  return {r.exact_u0 ? refined(*r.exact_u0, w).midpoint() : r.u0,
+          r.exact_u1 ? refined(*r.exact_u1, w).midpoint() : r.u1};
+}
+
 // The left panel's frame: fits the outline and the fixels; `span` is the
 // fitted width in metres.
 Frame fit_frame(const Scene& scene, double& span) {
@@ -89,10 +97,12 @@ void draw_legend(std::ostream& svg, const Scene& scene, const Region& region, co
   std::map<RegionStatus, int> counts;
   for (const auto& r : region.intervals) ++counts[r.status];
   svg << "<text x='" << kMargin << "' y='24' font-size='16' font-weight='bold'>fixel pushing region: " << scene.name
-      << "</text>\n<text x='" << kMargin << "' y='44'>cone " << method << ", resolution "
-      << (region.resolution ? to_string(*region.resolution) : "none") << ", pusher mu " << to_string(region.pusher_mu)
-      << ", intervals: " << counts[RegionStatus::kIn] << " in, " << counts[RegionStatus::kPartial] << " partial, "
-      << counts[RegionStatus::kOut] << " out; " << region.stats.cone_tests << " cone tests</text>\n";
+      << "</text>\n<text x='" << kMargin << "' y='44'>cone " << method
+      << (region.exact ? std::string(", exact ends (root isolation)")
+                       : ", resolution " + (region.resolution ? to_string(*region.resolution) : std::string("none")))
+      << ", pusher mu " << to_string(region.pusher_mu) << ", intervals: " << counts[RegionStatus::kIn] << " in, "
+      << counts[RegionStatus::kPartial] << " partial, " << counts[RegionStatus::kOut] << " out; "
+      << region.stats.cone_tests << " cone tests</text>\n";
   if (pic.push_caption) svg << "<text x='" << kMargin << "' y='62'>" << pic.push_caption << "</text>\n";
   const double ly = kHeight + 60;
   const std::pair<RegionStatus, const char*> keys[] = {
@@ -120,9 +130,10 @@ void draw_outline_panel(std::ostream& svg, const Frame& F, const Boundary& b, co
       if (r.status == s) order.push_back(&r);
   for (const RegionInterval* rp : order) {
     const RegionInterval& r = *rp;
+    const auto [u0, u1] = drawn_ends(r);
     for (const auto& piece : b.pieces) {
-      if (piece.curve != r.curve || piece.u1 < r.u0 || piece.u0 > r.u1) continue;
-      const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
+      if (piece.curve != r.curve || piece.u1 < u0 || piece.u0 > u1) continue;
+      const Rational a = std::max(piece.u0, u0), e = std::min(piece.u1, u1);
       if (a == e) {  // a corner point
         const Vec2 p = piece.point(piece.local(a));
         svg << "<circle cx='" << F.x(d(p.x)) << "' cy='" << F.y(d(p.y)) << "' r='5' fill='" << colour(r.status)
@@ -264,8 +275,9 @@ void draw_wrench_panel(std::ostream& svg, const Scene& scene, const Region& regi
   for (EdgeFamily family : families)
     for (const auto& r : region.intervals)
       for (const auto& piece : b.pieces) {
-        if (piece.curve != r.curve || piece.u1 <= r.u0 || piece.u0 >= r.u1) continue;
-        const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
+        const auto [u0, u1] = drawn_ends(r);
+        if (piece.curve != r.curve || piece.u1 <= u0 || piece.u0 >= u1) continue;
+        const Rational a = std::max(piece.u0, u0), e = std::min(piece.u1, u1);
         double last_lon = 1e9;
         for (int k = 0; k <= 12; ++k) {
           const Rational s = piece.local(a + (e - a) * Rational(k, 12));

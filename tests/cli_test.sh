@@ -124,6 +124,19 @@ expect 2 '--wrench: "1,2" has 2 components' -- "$fixel" seat "$P" --sustained --
 expect 2 '--wrench: 1,2,3 needs --sustained' -- "$fixel" seat "$P" --wrench 1,2,3
 expect 2 '--pusher-mu: 1/5,1/10 has lo > hi' -- "$fixel" region "$P" --push sustained --pusher-mu 1/5,1/10
 expect 2 '--guaranteed: cannot be combined with --push sustained' -- "$fixel" region "$P" --push sustained --guaranteed
+# region --exact (docs/theory.md §12): exact ends, no partial stretch.
+expect 0 '"exact": true' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --exact --json
+expect 0 '"u1": "597/1414"' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --exact --json
+expect 0 '"poly": [' -- "$fixel" region "$P" --push sustained --exact --json
+expect 0 'u in [0, 0.4269832638...]' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --exact --digits 10
+expect 0 'wrote' -- "$fixel" region "$src/data/scenes/blob.json" --exact --svg "$tmp/exact.svg"
+grep -q "exact ends (root isolation)" "$tmp/exact.svg" || { echo "FAIL: exact svg caption"; fail=1; }
+if "$fixel" region "$src/data/scenes/blob32.json" --exact --json | grep -q '"status": "partial"'; then
+  echo "FAIL: --exact left a partial stretch on blob32"; fail=1
+fi
+expect 2 '--digits: -1 must be in [0, 1000]' -- "$fixel" region "$P" --exact --digits -1
+expect 2 '--exact: with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --exact --guaranteed
+expect 2 '--validate: 2 needs the certified magnitudes' -- "$fixel" region "$P" --exact --validate 2
 sed 's/"mu": "1\/10"/"mu": ["1\/20", "1\/10"]/' "$P" > "$tmp/interval.json"
 expect 0 'friction used (upper ends): 1/10 1/10 1/10' -- "$fixel" seat "$tmp/interval.json" --sustained
 expect 2 'fixels[0].mu: [1/20, 1/10] is an interval' -- "$fixel" seat "$tmp/interval.json"

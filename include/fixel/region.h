@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fixel/algebraic.h"
 #include "fixel/curve.h"
 #include "fixel/interval.h"
 #include "fixel/rational.h"
@@ -56,6 +57,11 @@ struct RegionInterval {
   /// intervals (the exact union, each end rounded inward to a rational); for
   /// an IN interval the certified magnitude range of one convex piece of G.
   std::vector<Magnitudes> magnitude_set;
+  /// Exact region only (RegionOptions::exact): an end that is an
+  /// irrational algebraic number. `u0` (resp. `u1`) then holds a rational
+  /// inside its isolating interval, the same for both intervals that share
+  /// the end; a rational end is `u0`/`u1` itself and this stays empty.
+  std::optional<AlgebraicReal> exact_u0, exact_u1;
 };
 
 /// Counters of a region computation.
@@ -65,6 +71,7 @@ struct RegionStats {
   long point_tests = 0;     ///< Point tests (corners, samples).
   int depth = 0;            ///< Deepest subdivision level (0 = whole Bézier piece).
   Rational partial_length;  ///< Total parameter length left PARTIAL.
+  long roots = 0;           ///< Exact region: real roots isolated in the pieces' interiors.
   double seconds = 0;       ///< Wall time (display only).
 };
 
@@ -79,6 +86,11 @@ struct Region {
   Rational pusher_mu;                    ///< Pusher friction used.
   std::string target = "S";              ///< The target's name: "S", "G" or "J".
   bool sampled = false;                  ///< From sample_region (point tests), not subdivision.
+  /// Computed by root isolation (RegionOptions::exact): no resolution, every
+  /// end exact, no partial stretch.
+  bool exact = false;
+  /// With `exact`: irrational ends refined to width 10^-digits (0: as isolated).
+  int digits = 0;
   /// Where each interval is on the part (parallel to `intervals`; filled
   /// by locate_intervals, which compute_region and sample_region call).
   std::vector<IntervalPlace> places;
@@ -109,6 +121,16 @@ struct RegionOptions {
   /// Polled once per segment classified: cancellation, time limit and
   /// progress (may be null). Stopping throws StoppedError.
   RunControl* control = nullptr;
+  /// Exact region (docs/theory.md §12): along every Bézier piece, isolate the
+  /// real roots of the polynomials whose signs decide the point test, and
+  /// test one rational point between consecutive roots. `resolution` and
+  /// `cone` are then unused; no interval is partial except single points
+  /// where the normal is undefined. Throws UnsupportedError for a target
+  /// that cannot give its sign polynomials (G).
+  bool exact = false;
+  /// With `exact`: refine irrational ends to width <= 10^-digits in the
+  /// curve parameter (0: leave them as isolated). InputError when < 0 or > 1000.
+  int digits = 0;
 };
 
 /// The pushing region by recursive subdivision. Throws

@@ -5,9 +5,11 @@
 /// not branch on which set it classifies against. The model is CGAL's traits
 /// parameter: the algorithm asks the target three exact questions.
 
+#include <array>
 #include <memory>
 #include <vector>
 
+#include "fixel/algebraic.h"
 #include "fixel/rational.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
@@ -51,6 +53,14 @@ class RegionTarget {
     (void)set;
     return in ? RegionStatus::kIn : RegionStatus::kOut;
   }
+
+  /// The exact region (RegionOptions::exact): polynomials in the local
+  /// parameter s of a Bézier piece whose signs decide test_point along it.
+  /// `gens[j][k]` is component k of push-wrench generator j (the same order
+  /// as test_point's `gens`), a polynomial in s. The answer of test_point
+  /// may change only at a real root of a returned polynomial. The default
+  /// throws UnsupportedError: a target without this cannot give an exact region.
+  virtual std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>& gens) const;
 
   /// Throws if the target cannot answer for a pusher with friction `mu`.
   virtual void check_pusher(const Rational& mu) const { (void)mu; }

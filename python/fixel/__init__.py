@@ -16,14 +16,14 @@ import numpy as np
 from . import _fixel
 from ._exact import exact, frac, fracs, text, vector
 from ._design import Candidate, Design, Layout, design, design_candidates
-from ._region import Magnitudes, Region, RegionInterval, RegionStats, region, sample
+from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
 from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
 
 __version__ = _fixel.__version__
 
 __all__ = [
     "Error", "InputError", "ParseError", "SceneError", "UnsupportedError",
-    "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes",
+    "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes", "AlgebraicEnd",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
     "to_off", "to_svg", "SustainedSet", "sustained_set", "push",
     "design", "design_candidates", "Design", "Layout", "Candidate",

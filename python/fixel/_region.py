@@ -40,8 +40,30 @@ class Magnitudes:
 
 
 @dataclass(frozen=True)
+class AlgebraicEnd:
+    """An irrational end of the exact region (``region(..., exact=True)``):
+    the only root of ``poly`` (integer coefficients c0, c1, ...) in the
+    rational interval ``isolating``; ``approx`` is for display only."""
+
+    poly: Tuple[int, ...]
+    isolating: Tuple[Fraction, Fraction]
+    approx: float
+
+    @classmethod
+    def _of(cls, t):
+        if t is None:
+            return None
+        poly, (lo, hi), approx = t
+        return cls(tuple(int(c) for c in poly), (frac(lo), frac(hi)), approx)
+
+
+@dataclass(frozen=True)
 class RegionInterval:
-    """A stretch [u0, u1] of curve ``curve`` with status "in", "out" or "partial"."""
+    """A stretch [u0, u1] of curve ``curve`` with status "in", "out" or "partial".
+
+    In an exact region an irrational end is ``exact_u0`` / ``exact_u1``
+    (an AlgebraicEnd); ``u0`` / ``u1`` then hold a rational inside its
+    isolating interval."""
 
     curve: int
     u0: Fraction
@@ -50,6 +72,8 @@ class RegionInterval:
     half_line: bool
     magnitudes: Optional[Magnitudes]  # IN only, as in `fixel region --json`
     magnitude_set: Tuple[Optional[Magnitudes], ...] = ()  # with a guaranteed set
+    exact_u0: Optional[AlgebraicEnd] = None
+    exact_u1: Optional[AlgebraicEnd] = None
 
 
 @dataclass(frozen=True)
@@ -99,6 +123,7 @@ def _region_of(scene, S, impl, cone, resolution, pusher_mu):
         RegionInterval(
             d["curve"], frac(d["u0"]), frac(d["u1"]), d["status"], d["half_line"],
             Magnitudes._of(d["magnitudes"]), tuple(Magnitudes._of(m) for m in d["magnitude_set"]),
+            AlgebraicEnd._of(d["exact_u0"]), AlgebraicEnd._of(d["exact_u1"]),
         )
         for d in impl.intervals
     ]  # fmt: skip
@@ -179,7 +204,7 @@ def _guaranteed_impl(guaranteed, scene, S):
 
 def region(
     scene, resolution="1/1024", cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
-    progress=None,
+    progress=None, exact=False, digits=0,
 ):  # fmt: skip
     """The pushing region by exact recursive subdivision (``fixel region``).
 
@@ -190,6 +215,9 @@ def region(
     the SustainedSet and IN intervals carry no magnitudes).
     ``guaranteed``: True, or a GuaranteedSet, classifies against G instead of S.
     ``progress``: None, True (tqdm bar after ~1 s) or callable(stage, elapsed).
+    ``exact``: root isolation instead of subdivision (``fixel region --exact``):
+    no partial stretch, irrational ends as AlgebraicEnd; ``digits`` refines
+    their isolating intervals to width 10**-digits. Not with ``guaranteed``.
     """
     from . import SeatingSet, _expect, _scene, seating_set
 
@@ -200,6 +228,10 @@ def region(
         raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
     res = text(resolution, "resolution")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
+    if not isinstance(exact, bool):
+        raise TypeError(f"exact: {exact!r} is not a bool")
+    if not isinstance(digits, int) or isinstance(digits, bool):
+        raise TypeError(f"digits: {digits!r} is not an int")
     if push == "sustained":
         from . import sustained_set
 
@@ -207,13 +239,16 @@ def region(
             raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
         J = sustained_set(scene)
         impl = _run(
-            lambda: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu), progress, "fixel.region"
-        )
-        return _region_of(scene, J, impl, cone, frac(res), None if mu is None else frac(mu))
+            lambda: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu, exact, digits),
+            progress, "fixel.region",
+        )  # fmt: skip
+        return _region_of(scene, J, impl, cone, None if exact else frac(res), None if mu is None else frac(mu))
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)
-    impl = _run(lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g), progress, "fixel.region")
-    return _region_of(scene, S, impl, cone, frac(res), None if mu is None else frac(mu))
+    impl = _run(
+        lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits), progress, "fixel.region"
+    )
+    return _region_of(scene, S, impl, cone, None if exact else frac(res), None if mu is None else frac(mu))
 
 
 def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None):

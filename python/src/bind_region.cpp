@@ -25,6 +25,15 @@ py::object magnitudes(const Magnitudes& m) {
                         m.hi.has_value() && m.hi_closed);
 }
 
+// An irrational end of the exact region: (poly, (lo, hi), approx), the
+// integer coefficients c0, c1, … and the isolating interval as exact text.
+py::object algebraic_end(const std::optional<AlgebraicReal>& x) {
+  if (!x) return py::none();
+  py::list poly;
+  for (const auto& c : x->poly) poly.append(c.str());
+  return py::make_tuple(poly, py::make_tuple(to_string(x->lo), to_string(x->hi)), x->approx());
+}
+
 py::dict interval_dict(const RegionInterval& r) {
   py::dict d;
   d["curve"] = r.curve;
@@ -37,6 +46,8 @@ py::dict interval_dict(const RegionInterval& r) {
   py::list set;  // as the CLI's "magnitude_intervals": values on IN intervals only
   for (const auto& m : r.magnitude_set) set.append(r.status == RegionStatus::kIn ? magnitudes(m) : py::none());
   d["magnitude_set"] = set;
+  d["exact_u0"] = algebraic_end(r.exact_u0);
+  d["exact_u1"] = algebraic_end(r.exact_u1);
   return d;
 }
 
@@ -70,8 +81,10 @@ void bind_region(py::module_& m) {
 
   m.def("compute_region",
         [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution, const std::string& cone,
-           const std::optional<std::string>& pusher_mu, const py::object& G) {
+           const std::optional<std::string>& pusher_mu, const py::object& G, bool exact, int digits) {
           RegionOptions options;
+          options.exact = exact;
+          options.digits = digits;
           options.resolution = parse_rational(resolution, "resolution");
           if (cone != "tight" && cone != "paper")
             throw InputError("cone", cone, "is not a cone method (tight or paper)");

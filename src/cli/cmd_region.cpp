@@ -20,8 +20,8 @@ namespace {
 struct RegionArgs {
   std::string scene_path, resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path, push_text = "step",
                           time_text = "20";
-  int validate = 0;
-  bool json = false, guaranteed = false;
+  int validate = 0, digits = 0;
+  bool json = false, guaranteed = false, exact = false;
   RunOptions run;
 };
 
@@ -30,6 +30,8 @@ RegionOptions region_options(const RegionArgs& a) {
   options.resolution = parse_rational(a.resolution_text, "--resolution");
   options.cone = a.cone_text == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
   options.control = run_control();
+  options.exact = a.exact;
+  options.digits = a.digits;
   return options;
 }
 
@@ -73,9 +75,17 @@ int run_region(const RegionArgs& a) {
   push_options.time = parse_rational(a.time_text, "--time");
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
   if (a.push_text == "sustained") return run_sustained_region(scene, a, push_options);
+  if (a.exact && a.validate != 0)
+    throw InputError("--validate", std::to_string(a.validate),
+                     "needs the certified magnitudes of subdivision: --exact gives none for the one-step push "
+                     "(use --push sustained, or drop --exact)");
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
-  if (a.guaranteed) G = guaranteed_set(scene, S);
+  if (a.guaranteed && !a.exact) G = guaranteed_set(scene, S);
+  if (a.guaranteed && a.exact)
+    throw UnsupportedError("--exact", "",
+                           "with --guaranteed is not supported: the exact region of G is a separate "
+                           "project (docs/theory.md §12); use subdivision");
   std::optional<Rational> mu;
   if (!a.pusher_mu_text.empty()) mu = parse_pusher_mu(a.pusher_mu_text);
   RegionOptions options = region_options(a);
@@ -138,6 +148,10 @@ Command add_region(CLI::App& app) {
       ->check(CLI::IsMember({"step", "sustained"}));
   cmd->add_option("--validate", a->validate, "Run N pushes per IN interval in Box2D (docs/physics.md)");
   cmd->add_option("--time", a->time_text, "With --validate: hold each push for T time steps h (default 20)");
+  cmd->add_flag("--exact", a->exact,
+                "Exact ends by root isolation instead of subdivision: no partial stretch (docs/theory.md §12)");
+  cmd->add_option("--digits", a->digits,
+                  "With --exact: refine irrational ends to width 10^-D (default 0: as isolated)");
   add_run_options(cmd, a->run);
   return {cmd, [a] { return run_region(*a); }};
 }

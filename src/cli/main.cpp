@@ -26,6 +26,8 @@ std::string user_message(const fixel::InputError& e) {
   static const std::map<std::string, std::string> kFlagOf = {
       {"RegionOptions.resolution", "--resolution"},
       {"RegionOptions.pusher_mu", "--pusher-mu"},
+      {"RegionOptions.digits", "--digits"},
+      {"RegionOptions.exact", "--exact"},
       {"sample_region(points_per_curve)", "--points"},
       {"simulate(steps)", "--steps"},
       {"PushOptions.time", "--time"},

@@ -232,3 +232,29 @@ def test_push_runs_the_engine_and_agrees_with_the_cli():
         fixel.push(fixel.Scene.load(path), wrench=[-1.0, -1, 0])
     with pytest.raises(fixel.InputError):
         fixel.push(fixel.Scene.load(path))
+
+
+def test_exact_region_has_algebraic_ends_that_match_the_cli():
+    path = SCENE_DIR / "polygon.json"
+    r = fixel.region(fixel.Scene.load(path), push="sustained", exact=True, digits=8)
+    assert r.resolution is None and all(i.status != "partial" or i.u0 == i.u1 for i in r.intervals)
+    ends = [e for i in r.intervals for e in (i.exact_u0, i.exact_u1) if e is not None]
+    assert ends and all(isinstance(e, fixel.AlgebraicEnd) for e in ends)
+    for e in ends:  # a sign change of the defining polynomial across the interval, in exact arithmetic
+        lo, hi = e.isolating
+        value = lambda x: sum(c * x**k for k, c in enumerate(e.poly))  # noqa: E731
+        assert value(lo) * value(hi) < 0 and 0 < hi - lo <= F(1, 10**8)
+    code, out, err = run_cli("region", path, "--push", "sustained", "--exact", "--digits", "8", "--json")
+    assert code == 0, err
+    cli = json.loads(out)
+
+    def end(d, e, u):
+        if isinstance(d, str):
+            return e is None and F(d) == u
+        return e is not None and [int(c) for c in d["poly"]] == list(e.poly) and tuple(map(F, d["isolating"])) == e.isolating
+
+    assert len(cli["intervals"]) == len(r.intervals)
+    for d, i in zip(cli["intervals"], r.intervals):
+        assert d["status"] == i.status and end(d["u0"], i.exact_u0, i.u0) and end(d["u1"], i.exact_u1, i.u1)
+    with pytest.raises(fixel.UnsupportedError):
+        fixel.region(fixel.Scene.load(SCENE_DIR / "nonunique_part.json"), exact=True, guaranteed=True)
