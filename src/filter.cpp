@@ -32,6 +32,8 @@ std::string to_string(FilterSite site) {
       return "out test";
     case FilterSite::kOrientation:
       return "orientation";
+    case FilterSite::kCone:
+      return "cone";
     case FilterSite::kCount:
       break;
   }

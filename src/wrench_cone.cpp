@@ -91,15 +91,62 @@ WrenchCone finish(std::vector<VectorQ> gens, bool with_facets) {
   return cone;
 }
 
+// min_k and max_k of r_k ⊗ d over the points, r_k = point_k − c. Filtered:
+// the enclosures name the candidates for each extreme, and only those are
+// computed exactly (one candidate each in the generic case).
+void moment_extremes(const std::vector<Vec2>& pts, const std::vector<internal::FVec2>& fr, const Vec2& c, const Vec2& d,
+                     Rational& lo, Rational& hi) {
+  const std::size_t n = pts.size();
+  auto exact = [&](std::size_t k) { return cross({pts[k].x - c.x, pts[k].y - c.y}, d); };
+  if (fr.size() == n && n <= 16) {
+    const internal::FVec2 fd = internal::to_interval(d);
+    internal::FI m[16];
+    double min_sup = 0, max_inf = 0;
+    {
+      internal::Protect guard;
+      for (std::size_t k = 0; k < n; ++k) {
+        m[k] = fr[k].x * fd.y - fr[k].y * fd.x;
+        min_sup = k == 0 ? m[k].sup() : std::min(min_sup, m[k].sup());
+        max_inf = k == 0 ? m[k].inf() : std::max(max_inf, m[k].inf());
+      }
+    }
+    int lo_n = 0, hi_n = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      lo_n += m[k].inf() <= min_sup;
+      hi_n += m[k].sup() >= max_inf;
+    }
+    internal::record_filter(FilterSite::kCone, lo_n == 1 && hi_n == 1);
+    bool lo_set = false, hi_set = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool lo_cand = m[k].inf() <= min_sup, hi_cand = m[k].sup() >= max_inf;
+      if (!lo_cand && !hi_cand) continue;
+      const Rational v = exact(k);
+      if (lo_cand && (!lo_set || v < lo)) lo = v, lo_set = true;
+      if (hi_cand && (!hi_set || v > hi)) hi = v, hi_set = true;
+    }
+    return;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Rational m = exact(k);  // r ⊗ d, linear in r
+    if (k == 0 || m < lo) lo = m;
+    if (k == 0 || m > hi) hi = m;
+  }
+}
+
 WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de, bool with_facets) {
+  std::vector<internal::FVec2> fr;
+  if (!force_exact()) {
+    const internal::FVec2 fc = internal::to_interval(c);
+    internal::Protect guard;
+    for (const auto& p : b.hull) {
+      const internal::FVec2 fp = internal::to_interval(p);
+      fr.push_back({fp.x - fc.x, fp.y - fc.y});
+    }
+  }
   std::vector<VectorQ> gens;
   for (const Vec2& d : {ds, de}) {
     Rational lo = 0, hi = 0;
-    for (std::size_t k = 0; k < b.hull.size(); ++k) {
-      const Rational m = cross({b.hull[k].x - c.x, b.hull[k].y - c.y}, d);  // r ⊗ d, linear in r
-      if (k == 0 || m < lo) lo = m;
-      if (k == 0 || m > hi) hi = m;
-    }
+    moment_extremes(b.hull, fr, c, d, lo, hi);
     gens.push_back(wrench(d, lo));
     gens.push_back(wrench(d, hi));
   }

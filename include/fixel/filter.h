@@ -16,11 +16,12 @@ enum class FilterSite {
   kLemke,        ///< Lemke's pivot path and final basis (interval tableau).
   kRayTest,      ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
   kOutTest,      ///< Does a segment's wrench cone miss the seating set (before the exact LP).
-  kOrientation,  ///< Signs of planar cross products (direction extremes, cone construction).
+  kOrientation,  ///< Signs of planar cross products (direction extremes).
+  kCone,         ///< The extreme moments of a segment's tight wrench cone.
   kCount,
 };
 
-/// "lemke", "ray test", "out test", "orientation".
+/// "lemke", "ray test", "out test", "orientation", "cone".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and
