@@ -155,9 +155,11 @@ std::vector<Join> joins(const Boundary& b) {
   return out;
 }
 
+// `first`: no piece before it holds u (the caller knows; saves a scan of
+// every piece per corner, which made long polylines quadratic).
 RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>& js, int curve, const Rational& u,
-                       Magnitudes* mags, std::vector<Magnitudes>* set = nullptr) {
-  for (std::size_t k = 0; k < b.pieces.size(); ++k) {
+                       Magnitudes* mags, std::vector<Magnitudes>* set = nullptr, std::size_t first = 0) {
+  for (std::size_t k = first; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (piece.curve != curve) continue;
     const bool at_start = u == piece.u0, inside = u > piece.u0 && u < piece.u1;
@@ -229,7 +231,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
     const BezierPiece& piece = b.pieces[k];
     if (js[k].corner) {
       RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}};
-      corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set);
+      corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set, k);
       corner.half_line = in_half_line(target, corner);
       raw.push_back(corner);
     }
