@@ -5,6 +5,7 @@
 
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 
 namespace {

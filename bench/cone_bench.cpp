@@ -6,7 +6,7 @@
 #include <iostream>
 #include <random>
 
-#include "../tests/test_scenes.h"
+#include "../tests/test_util.h"
 #include "bench_util.h"
 #include "fixel/wrench_cone.h"
 
@@ -26,7 +26,7 @@ const std::vector<BezierPiece>& segments() {
       BezierPiece piece{0, Rational(0), Rational(1), {}};
       for (int i = 0; i < 4; ++i)
         piece.control.push_back(
-            {fixel::testing::random_rational(rng, -2, 2, 9), fixel::testing::random_rational(rng, -2, 2, 9)});
+            {fixel::test::random_rational(rng, -2, 2, 9), fixel::test::random_rational(rng, -2, 2, 9)});
       const Rational a(static_cast<int>(out.size() % 4), 4);
       piece = piece.restrict_to(a, a + Rational(1, 4));
       if (fixel::segment_bounds(piece).pointed) out.push_back(piece);

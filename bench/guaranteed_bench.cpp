@@ -4,9 +4,10 @@
 #include <iostream>
 #include <random>
 
-#include "../tests/test_scenes.h"
+#include "../tests/test_util.h"
 #include "bench_util.h"
 #include "fixel/guaranteed.h"
+#include "fixel/scene_json.h"
 
 namespace {
 
@@ -31,7 +32,7 @@ const std::vector<Case>& random_scenes() {
     std::mt19937_64 rng(101);
     while (out.size() < 8) {
       Case c;
-      c.scene = fixel::testing::random_scene(rng, 3, 20);
+      c.scene = fixel::test::random_scene(rng, 3, 20);
       try {
         c.S = fixel::seating_set(c.scene);
       } catch (const std::exception&) {
@@ -67,7 +68,7 @@ void BM_MembershipG(benchmark::State& state) {
   std::vector<fixel::VectorQ> points;
   for (int k = 0; k < 256; ++k) {
     fixel::VectorQ p = c.S.apex;
-    for (const auto& g : c.S.generators) p -= fixel::testing::random_rational(rng, -1, 3, 11) * g;
+    for (const auto& g : c.S.generators) p -= fixel::test::random_rational(rng, -1, 3, 11) * g;
     points.push_back(p);
   }
   std::size_t k = 0;

@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include "../tests/test_scenes.h"
+#include "../tests/test_util.h"
 #include "bench_util.h"
 #include "fixel/error.h"
 #include "fixel/filter.h"
@@ -46,7 +46,7 @@ const std::vector<Problem>& problems() {
     std::vector<Problem> out;
     std::mt19937_64 rng(2026);
     while (out.size() < 64) {
-      fixel::Scene scene = fixel::testing::random_scene(rng, 3);
+      fixel::Scene scene = fixel::test::random_scene(rng, 3);
       fixel::SeatingSet S;
       try {
         S = fixel::seating_set(scene);
@@ -54,7 +54,7 @@ const std::vector<Problem>& problems() {
         continue;
       }
       VectorQ p = S.apex;
-      for (int j = 0; j < 3; ++j) p -= fixel::testing::random_rational(rng, -1, 3, 7) * S.generators[j];
+      for (int j = 0; j < 3; ++j) p -= fixel::test::random_rational(rng, -1, 3, 7) * S.generators[j];
       const fixel::TimeSteppingLcp lcp = fixel::build_lcp(scene);
       Problem pr{lcp.B, lcp.b(p), Eigen::MatrixXd(12, 12), Eigen::VectorXd(12)};
       for (int i = 0; i < 12; ++i) {

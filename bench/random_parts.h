@@ -12,6 +12,7 @@
 
 #include "fixel/error.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 
 namespace bench {

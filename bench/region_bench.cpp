@@ -16,6 +16,7 @@
 #include "fixel/internal/exact_lp.h"
 #include "fixel/lcp.h"
 #include "fixel/region.h"
+#include "fixel/scene_json.h"
 
 namespace {
 

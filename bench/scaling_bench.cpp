@@ -15,6 +15,7 @@
 #include "fixel/filter.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 
 namespace {

@@ -7,6 +7,7 @@
 #include "fixel/error.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 
 namespace fixel::fuzz {

@@ -16,6 +16,7 @@
 #include "fixel/progress.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
 

@@ -125,7 +125,7 @@ std::vector<VectorQ> facets2(const std::vector<VectorQ>& rays, int rank) {
 
 }  // namespace
 
-int exact_rank(const std::vector<VectorQ>& rays, int dim) {
+int internal::exact_rank(const std::vector<VectorQ>& rays, int dim) {
   if (rays.empty()) return 0;
   MatrixQ A(dim, static_cast<int>(rays.size()));
   for (std::size_t k = 0; k < rays.size(); ++k) A.col(static_cast<int>(k)) = rays[k];
@@ -150,7 +150,7 @@ std::vector<VectorQ> cone_facet_normals(const std::vector<VectorQ>& rays, int di
       throw InputError("rays[" + std::to_string(k) + "]", std::to_string(rays[k].size()) + " entries",
                        "but the cone lives in dimension " + std::to_string(dim));
   const std::vector<VectorQ> live = nonzero(rays);
-  const int rank = exact_rank(live, dim);
+  const int rank = internal::exact_rank(live, dim);
   return dim == 3 ? facets3(live, rank) : facets2(live, rank);
 }
 

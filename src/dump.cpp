@@ -28,27 +28,27 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
                                   const Rational& length, const GuaranteedSet* G) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("--off", dir, "cannot be created: " + ec.message());
+  if (ec) throw InputError("dump_off(directory)", dir, "cannot be created: " + ec.message());
   const Box box = seating_dump_box(S, length);
   std::vector<Halfspace> hs = S.halfspaces;
   for (const auto& h : box.halfspaces()) hs.push_back(h);
   const std::string path = (std::filesystem::path(dir) / "seating_set.off").string();
   std::ofstream out(path);
-  if (!out) throw InputError("--off", path, "cannot be written");
+  if (!out) throw InputError("dump_off(directory)", path, "cannot be written");
   write_polytope_off(out, hs, S.dof,
                      {"fixel: seating impulse set S of scene \"" + scene.name + "\"" +
                           (S.dof == 2 ? " (dof 2, drawn in the plane z = 0)" : ""),
                       "clipped to the box " + box.describe(),
                       "(the box holds the apex and apex + " + to_string(length) + " * r for every ray r)",
                       "apex " + text(S.apex) + "; coordinates below are rounded to double for display"});
-  if (!out) throw InputError("--off", path, "could not be written completely");
+  if (!out) throw InputError("dump_off(directory)", path, "could not be written completely");
   std::vector<std::string> written = {path};
   if (G) {
     for (std::size_t k = 0; k < G->pieces.size(); ++k) {
       const std::string piece_path =
           (std::filesystem::path(dir) / ("guaranteed_" + std::to_string(k) + ".off")).string();
       std::ofstream piece_out(piece_path);
-      if (!piece_out) throw InputError("--off", piece_path, "cannot be written");
+      if (!piece_out) throw InputError("dump_off(directory)", piece_path, "cannot be written");
       std::vector<Halfspace> rows = G->pieces[k].closed;
       for (const auto& h : G->pieces[k].strict) rows.push_back(h);  // the closure
       for (const auto& h : box.halfspaces()) rows.push_back(h);
@@ -65,7 +65,7 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
   const Boundary& boundary = *scene.body.boundary;
   const std::string obj_path = (std::filesystem::path(dir) / "boundary.obj").string();
   std::ofstream obj(obj_path);
-  if (!obj) throw InputError("--off", obj_path, "cannot be written");
+  if (!obj) throw InputError("dump_off(directory)", obj_path, "cannot be written");
   obj << "# fixel: boundary of scene \"" << scene.name << "\", 32 samples per Bezier piece (display only)\n";
   obj.precision(17);
   int count = 0;
@@ -101,7 +101,7 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
             (method == ConeMethod::kTight ? "tight" : "paper") + ".off";
         const std::string cone_path = (std::filesystem::path(dir) / name).string();
         std::ofstream cone_out(cone_path);
-        if (!cone_out) throw InputError("--off", cone_path, "cannot be written");
+        if (!cone_out) throw InputError("dump_off(directory)", cone_path, "cannot be written");
         std::string gens;
         for (const auto& g : cone->generators) gens += text(g) + " ";
         write_polytope_off(

@@ -66,8 +66,7 @@ std::string modes_text(const std::vector<ContactMode>& modes) {
   for (auto m : modes) s += (s.empty() ? "" : " ") + to_string(m);
   return s;
 }
-json seat_extras_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                      const GuaranteedSet* G, bool stable) {
+json seat_extras_json(const SeatReport& report, const GuaranteedSet* G) {
   json doc = json::object();
   if (G) {
     json g;
@@ -83,21 +82,19 @@ json seat_extras_json(const Scene& scene, const SeatingSet& S, const std::option
     g["pieces"] = json::array();
     for (const auto& p : G->pieces)
       g["pieces"].push_back({{"closed", halfspaces_json(p.closed)}, {"strict", halfspaces_json(p.strict)}});
-    g["lost_fraction"] = to_string(lost_fraction(S, *G));
+    g["lost_fraction"] = to_string(*report.lost_fraction);
     doc["guaranteed_set"] = g;
-    if (impulse) doc["guaranteed"] = G->contains(*impulse, S);
+    if (report.impulse) doc["guaranteed"] = *report.impulse->guaranteed;
   }
-  if (stable) {
-    doc["stability_cone"] = halfspaces_json(stability_cone(scene));
-    const Polyhedron stay = seat_and_stay(scene, S);
-    doc["seat_and_stay"] = {{"halfspaces", halfspaces_json(stay.closed)}};
-    if (impulse) doc["seat_and_stay_contains"] = stay.contains(*impulse);
+  if (report.stable) {
+    doc["stability_cone"] = halfspaces_json(report.stability_cone);
+    doc["seat_and_stay"] = {{"halfspaces", halfspaces_json(report.seat_and_stay.closed)}};
+    if (report.impulse) doc["seat_and_stay_contains"] = *report.impulse->seat_and_stay;
   }
   return doc;
 }
 
-std::string seat_extras_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                             const GuaranteedSet* G, bool stable) {
+std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
   std::ostringstream out;
   if (G) {
     out << "Guaranteed set G (impulses whose every one-step outcome seats): " << G->pieces.size()
@@ -105,27 +102,25 @@ std::string seat_extras_text(const Scene& scene, const SeatingSet& S, const std:
     for (const auto& n : G->non_seating)
       out << "  non-seating: modes " << modes_text(n.modes) << ", fixel " << n.open_fixel << " stays open, where\n"
           << polyhedron_text(n.impulses);
-    out << "  lost fraction of S (grid sample, docs/theory.md §9): " << to_string(lost_fraction(S, *G)) << "\n";
-    if (impulse)
-      out << "Impulse p = " << text(*impulse)
-          << (G->contains(*impulse, S) ? " is GUARANTEED to seat the part.\n"
-                                       : " is NOT guaranteed to seat the part.\n");
+    out << "  lost fraction of S (grid sample, docs/theory.md §9): " << to_string(*report.lost_fraction) << "\n";
+    if (report.impulse)
+      out << "Impulse p = " << text(report.impulse->impulse)
+          << (*report.impulse->guaranteed ? " is GUARANTEED to seat the part.\n"
+                                          : " is NOT guaranteed to seat the part.\n");
   }
-  if (stable) {
-    const Polyhedron stay = seat_and_stay(scene, S);
-    out << "Seat-and-stay set S ∩ h·C_stab:\n" << polyhedron_text(stay);
-    if (impulse)
-      out << "Impulse p = " << text(*impulse)
-          << (stay.contains(*impulse) ? " seats the part and keeps it seated.\n"
-                                      : " is not in the seat-and-stay set.\n");
+  if (report.stable) {
+    out << "Seat-and-stay set S ∩ h·C_stab:\n" << polyhedron_text(report.seat_and_stay);
+    if (report.impulse)
+      out << "Impulse p = " << text(report.impulse->impulse)
+          << (*report.impulse->seat_and_stay ? " seats the part and keeps it seated.\n"
+                                             : " is not in the seat-and-stay set.\n");
   }
   return out.str();
 }
 
 }  // namespace
 
-std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                      const GuaranteedSet* G, bool stable) {
+std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport& report, const GuaranteedSet* G) {
   json doc;
   doc["scene"] = scene.name;
   doc["dof"] = S.dof;
@@ -137,28 +132,26 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const std::option
   for (const auto& r : S.rays) doc["rays"].push_back(exact(r));
   doc["halfspaces"] = json::array();
   for (const auto& h : S.halfspaces) doc["halfspaces"].push_back({{"a", exact(h.a)}, {"c", to_string(h.c)}});
-  if (impulse) {
-    doc["impulse"] = exact(*impulse);
-    doc["contains"] = S.contains(*impulse);
-    if (std::find(S.sliding.begin(), S.sliding.end(), 0) == S.sliding.end()) {  // eq. 27 needs sliding
-      const SeatingSystem sys = seating_system(scene, S);
-      doc["y"] = exact(sys.y(*impulse));
-      doc["y_names"] = sys.y_names;
+  if (report.impulse) {
+    doc["impulse"] = exact(report.impulse->impulse);
+    doc["contains"] = report.impulse->in_S;
+    if (report.impulse->y) {
+      doc["y"] = exact(*report.impulse->y);
+      doc["y_names"] = report.impulse->y_names;
     }
   }
-  const json extras = seat_extras_json(scene, S, impulse, G, stable);  // items() must not outlive it
+  const json extras = seat_extras_json(report, G);  // items() must not outlive it
   for (const auto& [key, value] : extras.items()) doc[key] = value;
   return doc.dump(2) + "\n";
 }
 
-static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse);
+static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const SeatReport& report);
 
-std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                      const GuaranteedSet* G, bool stable) {
-  return seat_basic_text(scene, S, impulse) + seat_extras_text(scene, S, impulse, G, stable);
+std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport& report, const GuaranteedSet* G) {
+  return seat_basic_text(scene, S, report) + seat_extras_text(report, G);
 }
 
-static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse) {
+static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const SeatReport& report) {
   std::ostringstream out;
   out << "Seating set S of scene \"" << scene.name << "\" (dof " << S.dof << ", " << scene.num_contacts()
       << " fixels)\n";
@@ -174,16 +167,15 @@ static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, cons
   out << "  S = apex - cone(g):  apex = " << text(S.apex) << "\n";
   out << "  facets (S is where all hold):\n";
   for (const auto& h : S.halfspaces) out << "    " << halfspace_text(h) << "\n";
-  if (impulse) {
-    const bool in = S.contains(*impulse);
-    out << "Impulse p = " << text(*impulse) << " is " << (in ? "IN" : "NOT in") << " S";
+  if (report.impulse) {
+    const bool in = report.impulse->in_S;
+    out << "Impulse p = " << text(report.impulse->impulse) << " is " << (in ? "IN" : "NOT in") << " S";
     out << (in ? ": it is consistent with seating in one step.\n" : ".\n");
-    if (std::find(S.sliding.begin(), S.sliding.end(), 0) != S.sliding.end()) return out.str();  // eq. 27 needs sliding
-    const SeatingSystem sys = seating_system(scene, S);
-    const VectorQ y = sys.y(*impulse);
+    if (!report.impulse->y) return out.str();  // eq. 27 needs every fixel sliding
+    const VectorQ& y = *report.impulse->y;
     out << "  eq. (27) y = K^-1 (P p + a):\n";
     for (int k = 0; k < y.size(); ++k)
-      out << "    " << sys.y_names[k] << " = " << to_string(y[k]) << (y[k] < 0 ? "   < 0" : "") << "\n";
+      out << "    " << report.impulse->y_names[k] << " = " << to_string(y[k]) << (y[k] < 0 ? "   < 0" : "") << "\n";
   }
   return out.str();
 }

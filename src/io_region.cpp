@@ -29,13 +29,12 @@ std::map<std::string, Rational> status_lengths(const Region& region) {
 }
 }  // namespace
 
-std::string region_json(const Scene& scene, const Region& region, const std::string& method,
-                        const std::optional<Rational>& resolution, const Rational& pusher_mu) {
+std::string region_json(const Scene& scene, const Region& region) {
   json doc;
   doc["scene"] = scene.name;
-  doc["method"] = method;
-  doc["resolution"] = resolution ? json(to_string(*resolution)) : json(nullptr);
-  doc["pusher_mu"] = to_string(pusher_mu);
+  doc["method"] = method_of(region);
+  doc["resolution"] = region.resolution ? json(to_string(*region.resolution)) : json(nullptr);
+  doc["pusher_mu"] = to_string(region.pusher_mu);
   doc["intervals"] = json::array();
   std::map<std::string, int> counts{{"in", 0}, {"out", 0}, {"partial", 0}};
   for (const auto& r : region.intervals) {
@@ -70,13 +69,13 @@ std::string region_json(const Scene& scene, const Region& region, const std::str
   return doc.dump(2) + "\n";
 }
 
-std::string region_text(const Scene& scene, const Region& region, const std::string& method,
-                        const std::optional<Rational>& resolution, const Rational& pusher_mu) {
+std::string region_text(const Scene& scene, const Region& region) {
   std::ostringstream out;
   const bool sustained = region.push == "sustained";
-  out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "") << method;
-  if (resolution) out << ", resolution " << to_string(*resolution);
-  out << ", pusher mu " << to_string(pusher_mu) << ")\n";
+  out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "")
+      << method_of(region);
+  if (region.resolution) out << ", resolution " << to_string(*region.resolution);
+  out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
   for (const auto& r : region.intervals) {
     out << "  curve " << r.curve << "  u in [" << to_string(r.u0) << ", " << to_string(r.u1) << "]  ";
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");

@@ -60,7 +60,7 @@ std::string fixed(double v, int digits = 6) {
 
 }  // namespace
 
-std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench) {
+std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench) {
   json doc;
   doc["scene"] = scene.name;
   doc["seated_pose"] = json::parse(seated_pose_json(J.pose));
@@ -87,16 +87,10 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
   doc["sustained"] = sustained;
   if (wrench) {
     json w = json::array();
-    for (int k = 0; k < wrench->size(); ++k) w.push_back(to_string((*wrench)[k]));
+    for (int k = 0; k < wrench->wrench.size(); ++k) w.push_back(to_string(wrench->wrench[k]));
     doc["wrench"] = w;
-    try {
-      const std::string why = J.why_not(*wrench);
-      doc["contains"] = why.empty();
-      if (!why.empty()) doc["why_not"] = why;
-    } catch (const UnsupportedError& e) {
-      doc["contains"] = nullptr;
-      doc["why_not"] = e.what();
-    }
+    doc["contains"] = wrench->contains ? json(*wrench->contains) : json(nullptr);
+    if (!wrench->why_not.empty()) doc["why_not"] = wrench->why_not;
   }
   return doc.dump(2) + "\n";
 }
@@ -138,7 +132,7 @@ std::string seated_pose_json(const SeatedPose& q) {
   return pose.dump();
 }
 
-std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench) {
+std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench) {
   std::ostringstream out;
   const SeatedPose& q = J.pose;
   out << "Sustained push on scene \"" << scene.name << "\": the wrench set J at the seated pose q*\n";
@@ -178,14 +172,12 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
         << fixed((r[2][0] + r[2][1]) / 2, 4) << ")";
   out << "\n";
   if (wrench) {
-    out << "wrench (" << to_string((*wrench)[0]) << ", " << to_string((*wrench)[1]) << ", " << to_string((*wrench)[2])
-        << ") N, N*m: ";
-    try {
-      const std::string why = J.why_not(*wrench);
-      out << (why.empty() ? "IN J (sustained push: seats and stays)" : "not in J: " + why) << "\n";
-    } catch (const UnsupportedError& e) {
-      out << "undecided: " << e.what() << "\n";
-    }
+    const VectorQ& w = wrench->wrench;
+    out << "wrench (" << to_string(w[0]) << ", " << to_string(w[1]) << ", " << to_string(w[2]) << ") N, N*m: ";
+    if (!wrench->contains)
+      out << "undecided: " << wrench->why_not << "\n";
+    else
+      out << (*wrench->contains ? "IN J (sustained push: seats and stays)" : "not in J: " + wrench->why_not) << "\n";
   }
   return out.str();
 }
@@ -215,11 +207,11 @@ std::string write_cone_off(const std::string& dir, const std::string& name, cons
   for (const auto& h : box.halfspaces()) rows.push_back(h);
   const std::string path = (std::filesystem::path(dir) / name).string();
   std::ofstream out(path);
-  if (!out) throw InputError("--off", path, "cannot be written");
+  if (!out) throw InputError("dump_sustained_off(directory)", path, "cannot be written");
   std::vector<std::string> all = comments;
   all.push_back("clipped to the box [-1, 1]^3; rows rounded to double for display (exact: seat --sustained --json)");
   write_polytope_off(out, rows, 3, all);
-  if (!out) throw InputError("--off", path, "could not be written completely");
+  if (!out) throw InputError("dump_sustained_off(directory)", path, "could not be written completely");
   return path;
 }
 
@@ -228,7 +220,7 @@ std::string write_cone_off(const std::string& dir, const std::string& name, cons
 std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("--off", dir, "cannot be created: " + ec.message());
+  if (ec) throw InputError("dump_sustained_off(directory)", dir, "cannot be created: " + ec.message());
   const std::string head =
       "fixel: sustained-push set of scene \"" + scene.name + "\", w-space (fx, fy, m), world frame";
   std::vector<std::string> written;

@@ -59,7 +59,7 @@ std::string Box::describe() const {
 }
 
 Box seating_dump_box(const SeatingSet& S, const Rational& length) {
-  if (length <= 0) throw InputError("--length", to_string(length), "must be > 0");
+  if (length <= 0) throw InputError("dump_off(length)", to_string(length), "must be > 0");
   Box box{S.apex, S.apex};
   for (const auto& r : S.rays) {
     const VectorQ tip = S.apex + length * r;

@@ -2,6 +2,7 @@
 // The engine is a measuring instrument: its floats never feed an exact
 // decision, they only produce an outcome that we report.
 #include "fixel/physics.h"
+#include "fixel/scene_json.h"
 
 #include <box2d/box2d.h>
 
@@ -220,11 +221,11 @@ PushResult push(const Scene& scene, const VectorQ& w, const PushOptions& options
 }
 
 PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options) {
-  if (options.time <= 0) throw InputError("--time", to_string(options.time), "must be > 0");
+  if (options.time <= 0) throw InputError("PushOptions.time", to_string(options.time), "must be > 0");
   if (options.steps_per_h < 1000)
-    throw InputError("steps_per_h", std::to_string(options.steps_per_h), "must be >= 1000 (dt <= h/1000)");
+    throw InputError("PushOptions.steps_per_h", std::to_string(options.steps_per_h), "must be >= 1000 (dt <= h/1000)");
   if (!std::isfinite(w.fx) || !std::isfinite(w.fy) || !std::isfinite(w.m))
-    throw InputError("--wrench", "non-finite", "must be finite");
+    throw InputError("push(wrench)", "non-finite", "must be finite");
   const PartPolygon poly = part_polygon(scene);
   Engine e;
   PushResult r;
@@ -260,8 +261,8 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   const std::vector<P2> f = fixel_points(scene);
   const double m = to_double(scene.body.mass);
   const P2 accel{w.fx / m, w.fy / m};
-  const b2Vec2 force(engine_float(e.s * w.fx, "--wrench"), engine_float(e.s * w.fy, "--wrench"));
-  const float torque = scene.body.dof == 3 ? engine_float(e.s * e.s * w.m, "--wrench") : 0.0f;
+  const b2Vec2 force(engine_float(e.s * w.fx, "push(wrench)"), engine_float(e.s * w.fy, "push(wrench)"));
+  const float torque = scene.body.dof == 3 ? engine_float(e.s * e.s * w.m, "push(wrench)") : 0.0f;
 
   std::vector<double> gaps(nf);
   auto measure = [&](Pose& pose, bool with_gaps) {

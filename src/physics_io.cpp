@@ -114,7 +114,7 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
     return o.str();
   };
   std::ofstream out(path);
-  if (!out) throw InputError("--svg", path, "cannot be written");
+  if (!out) throw InputError("svg(path)", path, "cannot be written");
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out << outline(Pose{}, "fill:#dde8f5;stroke:#6a8fbf;stroke-width:1");
@@ -141,7 +141,7 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
       << to_string(r.outcome) << " after " << r.time_end << " s; " << r.events.size()
       << " contact events (orange: touch, purple: leave); grey: every few steps</text>\n";
   out << "</svg>\n";
-  if (!out) throw InputError("--svg", path, "cannot be written");
+  if (!out) throw InputError("svg(path)", path, "cannot be written");
 }
 
 std::string add_validation_json(const std::string& region_json_text, const RegionValidation& v) {

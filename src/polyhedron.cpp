@@ -9,7 +9,7 @@ namespace fixel {
 
 namespace {
 
-Halfspace normalized(const VectorQ& a, const Rational& c) {
+Halfspace normalised(const VectorQ& a, const Rational& c) {
   // Scale so that a is a primitive integer vector (positive factor).
   if (a.isZero()) return {a, c};
   const VectorQ p = primitive_direction(a);
@@ -205,11 +205,11 @@ Polyhedron project_out_x(const LiftedSystem& s) {
   for (std::size_t r = 0; r < eq_a.size(); ++r) {
     if (used[r]) continue;  // defines an eliminated x
     const VectorQ a = p_part(eq_a[r]);
-    add_unique(out.closed, normalized(a, eq_b[r]));
-    add_unique(out.closed, normalized(VectorQ(-a), Rational(-eq_b[r])));
+    add_unique(out.closed, normalised(a, eq_b[r]));
+    add_unique(out.closed, normalised(VectorQ(-a), Rational(-eq_b[r])));
   }
   for (const auto& row : in) {
-    const Halfspace h = normalized(p_part(row.a), row.b);
+    const Halfspace h = normalised(p_part(row.a), row.b);
     add_unique(row.strict ? out.strict : out.closed, h);
   }
   (void)n;

@@ -85,7 +85,8 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   for (const auto& cone : cones)
     for (const auto& g : cone.generators) {
       gens.push_back(g);
-      dirs.push_back({g[0], g[1]});
+      // A cone's generators come in pairs with one force part: keep one.
+      if (dirs.empty() || dirs.back().x != g[0] || dirs.back().y != g[1]) dirs.push_back({g[0], g[1]});
     }
   Vec2 first, last;
   const bool pointed = direction_extremes(dirs, first, last);
@@ -137,7 +138,7 @@ void check_inputs(const Scene& scene, const Rational& mu, const RegionTarget& ta
   if (!scene.body.boundary)
     throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no boundary to push on");
-  if (mu < 0) throw InputError("--pusher-mu", to_string(mu), "must be >= 0");
+  if (mu < 0) throw InputError("RegionOptions.pusher_mu", to_string(mu), "must be >= 0");
 }
 
 // Tangents on both sides of every piece start (in loop order).
@@ -221,7 +222,8 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
   check_inputs(scene, mu, target);
-  if (options.resolution <= 0) throw InputError("--resolution", to_string(options.resolution), "must be > 0");
+  if (options.resolution <= 0)
+    throw InputError("RegionOptions.resolution", to_string(options.resolution), "must be > 0");
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
   target.stats = &ctx.stats;
@@ -242,12 +244,15 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   region.intervals = options.merge ? merge(raw) : raw;
   region.stats = ctx.stats;
   region.push = target.push_model();
+  region.target = target.name();
   region.cone = options.cone;
   region.resolution = options.resolution;
   region.pusher_mu = mu;
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
 }
+
+std::string method_of(const Region& region) { return region.sampled ? "sample" : to_string(region.cone); }
 
 Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options) {
   const auto target = step_target(scene, S, options.guaranteed);
@@ -273,7 +278,8 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(default_pusher_mu(scene, target));
   check_inputs(scene, mu, target);
-  if (points_per_curve <= 0) throw InputError("--points", std::to_string(points_per_curve), "must be >= 1");
+  if (points_per_curve <= 0)
+    throw InputError("sample_region(points_per_curve)", std::to_string(points_per_curve), "must be >= 1");
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = &ctx.stats;
@@ -294,6 +300,8 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   target.stats = nullptr;
   region.stats = ctx.stats;
   region.push = target.push_model();
+  region.target = target.name();
+  region.sampled = true;
   region.pusher_mu = mu;
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;

@@ -10,6 +10,7 @@
 #include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region_target.h"
 #include "fixel/wrench_cone.h"
 
@@ -192,8 +193,39 @@ struct FilteredHalfspaces {
 // every generator does.
 class SeatingTarget final : public RegionTarget {
  public:
-  SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0), filtered_(S.halfspaces, b0) {}
+  SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0), filtered_(S.halfspaces, b0) {
+    for (const auto& h : S.halfspaces) beta_.push_back(h.c - h.a.dot(b0));
+  }
+
+  // ray_magnitudes(S, b0, g) with β_k = c_k − a_k·b0 computed once.
+  Magnitudes magnitudes(const VectorQ& g) const {
+    Magnitudes m;
+    m.empty = false;
+    m.lo = 0;
+    m.lo_closed = false;  // τ > 0
+    for (std::size_t k = 0; k < beta_.size(); ++k) {
+      const Rational alpha = S_.halfspaces[k].a.dot(g);  // need τ α >= β
+      if (alpha > 0) {
+        const Rational v = beta_[k] / alpha;
+        if (v > m.lo) {
+          m.lo = v;
+          m.lo_closed = true;
+        }
+      } else if (alpha < 0) {
+        const Rational v = beta_[k] / alpha;
+        if (!m.hi || v < *m.hi) {
+          m.hi = v;
+          m.hi_closed = true;
+        }
+      } else if (beta_[k] > 0) {
+        return Magnitudes{};
+      }
+    }
+    if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) return Magnitudes{};
+    return m;
+  }
   const char* push_model() const override { return "step"; }
+  const char* name() const override { return "S"; }
 
   // Does the ray of g meet S: the interval filter, then the exact ray test.
   bool ray_hits(const VectorQ& g) {
@@ -202,7 +234,7 @@ class SeatingTarget final : public RegionTarget {
       internal::record_filter(FilterSite::kRayTest, h != kUndecided);
       if (h != kUndecided) return h == 1;
     }
-    return !ray_magnitudes(S_, b0_, g).empty;
+    return !magnitudes(g).empty;
   }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
@@ -216,7 +248,7 @@ class SeatingTarget final : public RegionTarget {
     std::vector<Magnitudes> T;
     bool all_half = true;
     for (const auto& g : gens) {
-      T.push_back(ray_magnitudes(S_, b0_, g));
+      T.push_back(magnitudes(g));
       if (T.back().empty) throw InternalError("region: a certified ray hit has no exact magnitudes");
       all_half = all_half && T.back().half_line();
     }
@@ -264,6 +296,7 @@ class SeatingTarget final : public RegionTarget {
   const SeatingSet& S_;
   VectorQ b0_;
   FilteredHalfspaces filtered_;
+  std::vector<Rational> beta_;                  // c_k − a_k·b0
   std::vector<std::pair<VectorQ, bool>> hits_;  // generators of the last contains_cone call
 };
 
@@ -272,10 +305,11 @@ class GuaranteedTarget final : public RegionTarget {
  public:
   GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {}
   const char* push_model() const override { return "step"; }
+  const char* name() const override { return "G"; }
 
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)
-      throw UnsupportedError("--pusher-mu", to_string(mu),
+      throw UnsupportedError("RegionOptions.pusher_mu", to_string(mu),
                              "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
                              "does not make every push direction between them hit G (use a frictionless pusher)");
   }

@@ -1,136 +1,8 @@
 #include "fixel/scene.h"
 
-#include <fstream>
-#include <set>
-#include <sstream>
-
-#include "fixel/curve.h"
-#include "fixel/error.h"
-#include "fixel/internal/json_exact.h"
+#include <string>
 
 namespace fixel {
-
-namespace {
-
-using json = nlohmann::json;
-
-std::string describe(const json& v) {
-  std::string s = v.dump();
-  if (s.size() > 80) s = s.substr(0, 77) + "...";
-  return s;
-}
-
-// Checks that `obj` is an object whose keys are all in `allowed`.
-std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-
-// `path` is empty for the document root, which `source` then names.
-void expect_object(const json& obj, const std::string& path, const std::set<std::string>& allowed,
-                   const std::string& source = "") {
-  if (!obj.is_object()) throw SceneError(path.empty() ? source : path, describe(obj), "must be a JSON object");
-  for (const auto& item : obj.items())
-    if (!allowed.count(item.key()))
-      throw SceneError(join(path, item.key()), describe(item.value()), "is not a known field");
-}
-
-const json& require(const json& obj, const std::string& key, const std::string& path) {
-  auto it = obj.find(key);
-  if (it == obj.end()) throw SceneError(join(path, key), "", "is missing");
-  return *it;
-}
-
-Rational number(const json& v, const std::string& path) {
-  if (!v.is_string()) throw ParseError(path, describe(v), "is not an exact number");
-  return parse_rational(v.get<std::string>(), path);
-}
-
-VectorQ vector(const json& v, const std::string& path, int expected_length, const std::string& why) {
-  if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of numbers");
-  if (static_cast<int>(v.size()) != expected_length)
-    throw SceneError(
-        path, describe(v),
-        "has " + std::to_string(v.size()) + " entries but " + why + " needs " + std::to_string(expected_length));
-  VectorQ out(expected_length);
-  for (int i = 0; i < expected_length; ++i) out[i] = number(v[i], path + "[" + std::to_string(i) + "]");
-  return out;
-}
-
-Vec2 vec2(const json& v, const std::string& path) {
-  VectorQ q = vector(v, path, 2, "a planar point or direction");
-  return {q[0], q[1]};
-}
-
-std::string pair_text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
-
-void require_positive(const Rational& v, const std::string& path) {
-  if (v <= 0) throw SceneError(path, to_string(v), "must be > 0");
-}
-void require_nonnegative(const Rational& v, const std::string& path) {
-  if (v < 0) throw SceneError(path, to_string(v), "must be >= 0");
-}
-
-std::vector<Vec2> points(const json& v, const std::string& path) {
-  if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of [x, y] points");
-  std::vector<Vec2> out;
-  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec2(v[i], path + "[" + std::to_string(i) + "]"));
-  return out;
-}
-
-Boundary parse_boundary(const json& v) {
-  const std::string path = "body.boundary";
-  if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of curves");
-  std::vector<Curve> curves;
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const std::string cpath = path + "[" + std::to_string(k) + "]";
-    const json& c = v[k];
-    if (!c.is_object()) throw SceneError(cpath, describe(c), "must be a JSON object");
-    const json& type = require(c, "type", cpath);
-    Curve curve;
-    if (type == "polyline") {
-      expect_object(c, cpath, {"type", "points"});
-      curve.type = Curve::Type::kPolyline;
-      curve.points = points(require(c, "points", cpath), cpath + ".points");
-    } else if (type == "bspline") {
-      expect_object(c, cpath, {"type", "degree", "knots", "control_points"});
-      curve.type = Curve::Type::kBSpline;
-      const Rational degree = number(require(c, "degree", cpath), cpath + ".degree");
-      if (degree < 1 || degree > 20 || boost::multiprecision::denominator(degree) != 1)
-        throw SceneError(cpath + ".degree", to_string(degree), "must be an integer from 1 to 20");
-      curve.degree = static_cast<int>(boost::multiprecision::numerator(degree));
-      curve.points = points(require(c, "control_points", cpath), cpath + ".control_points");
-      const json& knots = require(c, "knots", cpath);
-      if (!knots.is_array()) throw SceneError(cpath + ".knots", describe(knots), "must be an array of numbers");
-      for (std::size_t i = 0; i < knots.size(); ++i)
-        curve.knots.push_back(number(knots[i], cpath + ".knots[" + std::to_string(i) + "]"));
-    } else {
-      throw SceneError(cpath + ".type", describe(type), "must be \"polyline\" or \"bspline\"");
-    }
-    curves.push_back(std::move(curve));
-  }
-  return make_boundary(std::move(curves), path);
-}
-
-// A friction coefficient "mu" or an interval ["lo", "hi"] (0 <= lo <= hi).
-void parse_friction(const json& v, const std::string& path, Rational& lo, std::optional<Rational>& hi) {
-  if (v.is_array()) {
-    const VectorQ range = vector(v, path, 2, "a friction interval [lo, hi]");
-    lo = range[0];
-    require_nonnegative(lo, path + "[0]");
-    if (range[1] < lo) throw SceneError(path, "[" + to_string(lo) + ", " + to_string(range[1]) + "]", "has lo > hi");
-    if (range[1] != lo) hi = range[1];
-    return;
-  }
-  lo = number(v, path);
-  require_nonnegative(lo, path);
-}
-
-int parse_dof(const json& v) {
-  if (!v.is_string()) throw SceneError("body.dof", describe(v), "must be 2 or 3");
-  const std::string s = v.get<std::string>();
-  if (s != "2" && s != "3") throw SceneError("body.dof", s, "must be 2 (point mass) or 3 (planar rigid body)");
-  return s == "2" ? 2 : 3;
-}
-
-}  // namespace
 
 Vec2 Scene::lever_arm(int i) const {
   const Vec2& p = fixels.at(i).p_AoF_A;
@@ -142,106 +14,51 @@ Vec2 Scene::tangent(int i) const {
   return {-n.y, n.x};
 }
 
-Scene parse_scene(const std::string& json_text, const std::string& source) {
-  const json root = internal::parse_json_exact(json_text, source);
-  expect_object(root, "", {"name", "time_step", "body", "fixels", "pusher", "background_impulse"}, source);
+void check_positive(const Rational& v, const std::string& path) {
+  if (v <= 0) throw SceneError(path, to_string(v), "must be > 0");
+}
 
-  Scene scene;
-  const auto name_it = root.find("name");
-  if (name_it != root.end()) {
-    if (!name_it->is_string()) throw SceneError("name", describe(*name_it), "must be a string");
-    scene.name = name_it->get<std::string>();
-  }
-  scene.time_step = number(require(root, "time_step", ""), "time_step");
-  require_positive(scene.time_step, "time_step");
+void check_nonnegative(const Rational& v, const std::string& path) {
+  if (v < 0) throw SceneError(path, to_string(v), "must be >= 0");
+}
 
-  const json& body = require(root, "body", "");
-  expect_object(body, "body", {"dof", "mass", "inertia", "velocity", "center_of_mass", "boundary"});
-  Body& b = scene.body;
-  b.dof = parse_dof(require(body, "dof", "body"));
-  const bool has_boundary = body.contains("boundary");
-  if (has_boundary) b.boundary = std::make_shared<const Boundary>(parse_boundary(body.at("boundary")));
-  // With a boundary, mass defaults to the area (density 1) and the centre of
-  // mass to the area centroid.
-  if (body.contains("mass") || !has_boundary) {
-    b.mass = number(require(body, "mass", "body"), "body.mass");
-    require_positive(b.mass, "body.mass");
-  } else {
-    b.mass = b.boundary->mass.area;
-  }
-  if (body.contains("center_of_mass"))
-    b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
-  else
-    b.p_AoCm_A = has_boundary ? b.boundary->mass.centroid : Vec2{Rational(0), Rational(0)};
-  if (b.dof == 3) {
-    if (body.contains("inertia")) {
-      b.inertia = number(body.at("inertia"), "body.inertia");
-      require_positive(b.inertia, "body.inertia");
-    } else if (has_boundary) {
-      // Uniform density m / A about the centre of mass.
-      b.inertia = b.mass / b.boundary->mass.area * b.boundary->mass.polar_moment_about(b.p_AoCm_A);
-    } else {
-      throw SceneError("body.inertia", "", "is missing (required for dof 3 without a boundary)");
-    }
-  } else if (body.contains("inertia")) {
-    throw SceneError("body.inertia", describe(body.at("inertia")), "is not allowed for a point mass (dof 2)");
-  }
-  b.velocity = body.contains("velocity")
-                   ? vector(body.at("velocity"), "body.velocity", b.dof, "dof " + std::to_string(b.dof))
-                   : VectorQ::Zero(b.dof);
+void check_unit_normal(const Vec2& n_A, const std::string& path) {
+  if (n_A.x * n_A.x + n_A.y * n_A.y != 1)
+    throw SceneError(path, "(" + to_string(n_A.x) + ", " + to_string(n_A.y) + ")",
+                     "is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
+}
 
-  const json& fixels = require(root, "fixels", "");
-  if (!fixels.is_array()) throw SceneError("fixels", describe(fixels), "must be an array");
-  for (std::size_t i = 0; i < fixels.size(); ++i) {
+namespace {
+
+void check_friction(const Rational& lo, const std::optional<Rational>& hi, const std::string& path) {
+  check_nonnegative(lo, hi ? path + "[0]" : path);
+  if (hi && *hi < lo) throw SceneError(path, "[" + to_string(lo) + ", " + to_string(*hi) + "]", "has lo > hi");
+}
+
+void check_length(const VectorQ& v, int dof, const std::string& path) {
+  if (v.size() != dof)
+    throw SceneError(path, std::to_string(v.size()) + " entries", "must have dof = " + std::to_string(dof));
+}
+
+}  // namespace
+
+void validate_scene(const Scene& scene) {
+  check_positive(scene.time_step, "time_step");
+  const Body& b = scene.body;
+  if (b.dof != 2 && b.dof != 3)
+    throw SceneError("body.dof", std::to_string(b.dof), "must be 2 (point mass) or 3 (planar rigid body)");
+  check_positive(b.mass, "body.mass");
+  if (b.dof == 3) check_positive(b.inertia, "body.inertia");
+  check_length(b.velocity, b.dof, "body.velocity");
+  for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
     const std::string path = "fixels[" + std::to_string(i) + "]";
-    const json& f = fixels[i];
-    expect_object(f, path, {"point", "normal", "mu", "gap"});
-    Fixel fx;
-    fx.p_AoF_A = vec2(require(f, "point", path), path + ".point");
-    fx.n_A = vec2(require(f, "normal", path), path + ".normal");
-    if (fx.n_A.x * fx.n_A.x + fx.n_A.y * fx.n_A.y != 1)
-      throw SceneError(path + ".normal", pair_text(fx.n_A),
-                       "is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
-    parse_friction(require(f, "mu", path), path + ".mu", fx.mu, fx.mu_hi);
-    fx.gap = number(require(f, "gap", path), path + ".gap");
-    require_nonnegative(fx.gap, path + ".gap");
-    scene.fixels.push_back(fx);
+    const Fixel& f = scene.fixels[i];
+    check_unit_normal(f.n_A, path + ".normal");
+    check_friction(f.mu, f.mu_hi, path + ".mu");
+    check_nonnegative(f.gap, path + ".gap");
   }
-
-  scene.pusher_mu = Rational(0);
-  if (root.contains("pusher")) {
-    const json& pusher = root.at("pusher");
-    expect_object(pusher, "pusher", {"mu"});
-    if (pusher.contains("mu")) {
-      parse_friction(pusher.at("mu"), "pusher.mu", scene.pusher_mu, scene.pusher_mu_hi);
-    }
-  }
-  scene.background_impulse =
-      root.contains("background_impulse")
-          ? vector(root.at("background_impulse"), "background_impulse", b.dof, "dof " + std::to_string(b.dof))
-          : VectorQ::Zero(b.dof);
-
-  return scene;
-}
-
-Scene load_scene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot be opened");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path, "", "cannot be read");
-  return parse_scene(text.str(), path);
-}
-
-VectorQ parse_impulse(const std::string& text, int dof, const std::string& field) {
-  const std::vector<Rational> values = parse_rational_list(text, field);
-  if (static_cast<int>(values.size()) != dof)
-    throw InputError(
-        field, "\"" + text + "\"",
-        "has " + std::to_string(values.size()) + " components but the scene has dof " + std::to_string(dof));
-  VectorQ p(dof);
-  for (int i = 0; i < dof; ++i) p[i] = values[i];
-  return p;
+  check_friction(scene.pusher_mu, scene.pusher_mu_hi, "pusher.mu");
+  check_length(scene.background_impulse, b.dof, "background_impulse");
 }
 
 }  // namespace fixel

@@ -8,7 +8,7 @@ namespace fixel {
 
 Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps, RunControl* control) {
   const int dof = scene.body.dof, nc = scene.num_contacts();
-  if (steps <= 0) throw InputError("--steps", std::to_string(steps), "must be >= 1");
+  if (steps <= 0) throw InputError("simulate(steps)", std::to_string(steps), "must be >= 1");
   for (std::size_t k = 0; k < impulses.size(); ++k)
     if (impulses[k].size() != dof)
       throw InputError("impulse[" + std::to_string(k) + "]", std::to_string(impulses[k].size()) + " components",

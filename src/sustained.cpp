@@ -187,6 +187,7 @@ class SustainedTarget final : public RegionTarget {
  public:
   explicit SustainedTarget(std::shared_ptr<const SustainedData> d) : d_(std::move(d)) {}
   const char* push_model() const override { return "sustained"; }
+  const char* name() const override { return "J"; }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
     bool in = false;

@@ -4,6 +4,7 @@
 
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
 

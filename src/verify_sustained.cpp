@@ -2,6 +2,7 @@
 #include <functional>
 
 #include "fixel/internal/quadratic_field.h"
+#include "fixel/scene_json.h"
 #include "fixel/sustained.h"
 #include "fixel/verify.h"
 

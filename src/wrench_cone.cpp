@@ -9,6 +9,7 @@
 #include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/wrench_cone_detail.h"
 
 namespace fixel {
 
@@ -133,10 +134,10 @@ void moment_extremes(const std::vector<Vec2>& pts, const std::vector<internal::F
   }
 }
 
-WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de, bool with_facets) {
+WrenchCone tight(const SegmentBounds& b, const Vec2& p_AoCm_A, const Vec2& ds, const Vec2& de, bool with_facets) {
   std::vector<internal::FVec2> fr;
   if (!force_exact()) {
-    const internal::FVec2 fc = internal::to_interval(c);
+    const internal::FVec2 fc = internal::to_interval(p_AoCm_A);
     internal::Protect guard;
     for (const auto& p : b.hull) {
       const internal::FVec2 fp = internal::to_interval(p);
@@ -146,21 +147,21 @@ WrenchCone tight(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Ve
   std::vector<VectorQ> gens;
   for (const Vec2& d : {ds, de}) {
     Rational lo = 0, hi = 0;
-    moment_extremes(b.hull, fr, c, d, lo, hi);
+    moment_extremes(b.hull, fr, p_AoCm_A, d, lo, hi);
     gens.push_back(wrench(d, lo));
     gens.push_back(wrench(d, hi));
   }
   return finish(std::move(gens), with_facets);
 }
 
-std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& c, const Vec2& ds, const Vec2& de,
+std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& p_AoCm_A, const Vec2& ds, const Vec2& de,
                                 bool with_facets) {
   const Vec2 us = internal::unit_direction_outward(ds, true), ue = internal::unit_direction_outward(de, false);
   const Rational span = cross(us, ue);
   if (span < 0 || (span == 0 && dot(us, ue) < 0)) return std::nullopt;  // rounding reached π
   std::vector<Rational> X;
   for (const auto& p : b.hull) {
-    const Vec2 r{p.x - c.x, p.y - c.y};
+    const Vec2 r{p.x - p_AoCm_A.x, p.y - p_AoCm_A.y};
     X.push_back(cross(r, us));
     X.push_back(cross(r, ue));
     // The extra ⊥ angle: X = r ⊗ d is ±|r| where d ⊥ r.
@@ -306,7 +307,7 @@ SegmentBounds segment_bounds(const BezierPiece& segment, bool with_hull) {
   return b;
 }
 
-std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2& c, EdgeFamily family,
+std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2& p_AoCm_A, EdgeFamily family,
                                               const Rational& mu, ConeMethod method, bool with_facets) {
   if (!b.pointed) return std::nullopt;
   // Push directions are a fixed orientation-preserving linear image of the
@@ -315,16 +316,18 @@ std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2
   if (family == EdgeFamily::kWholeCone) de = push_direction(b.t_end, EdgeFamily::kPlus, mu);
   const Rational span = cross(ds, de);
   if (span < 0 || (span == 0 && dot(ds, de) < 0)) return std::nullopt;  // friction widened it to π
-  if (method == ConeMethod::kTight) return tight(b, c, ds, de, with_facets);
-  return paper(b, c, ds, de, with_facets);
+  if (method == ConeMethod::kTight) return tight(b, p_AoCm_A, ds, de, with_facets);
+  return paper(b, p_AoCm_A, ds, de, with_facets);
 }
 
-std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const Vec2& c, EdgeFamily family,
+std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const Vec2& p_AoCm_A, EdgeFamily family,
                                               const Rational& mu, ConeMethod method) {
-  return segment_wrench_cone(segment_bounds(segment), c, family, mu, method);
+  return segment_wrench_cone(segment_bounds(segment), p_AoCm_A, family, mu, method);
 }
 
-WrenchCone corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out) {
+const char* to_string(ConeMethod method) { return method == ConeMethod::kPaper ? "paper" : "tight"; }
+
+WrenchCone internal::corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out) {
   return finish({wrench(d_in, cross(r, d_in)), wrench(d_out, cross(r, d_out))}, true);
 }
 

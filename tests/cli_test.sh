@@ -164,4 +164,13 @@ out=$("$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1
 if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: seat example1 --guaranteed --svg -> exit $rc, stdout '$out'"; fail=1; fi
 expect 2 'the S/G picture needs dof 3' -- "$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1.svg"
 
+# An unwritable picture path is refused before any report is printed.
+for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polygon.json --push sustained" \
+           "seat $src/data/scenes/nonunique.json --guaranteed" "push $src/data/scenes/polygon.json --wrench -1,-1,0"; do
+  # shellcheck disable=SC2086
+  out=$("$fixel" $cmd --svg "$tmp/no/such/folder/x.svg" 2>/dev/null); rc=$?
+  if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: $cmd --svg into a missing folder -> exit $rc, stdout '$out'"; fail=1; fi
+done
+expect 2 '--svg: '"$tmp"'/no/x.svg cannot be written: no such folder' -- "$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/no/x.svg"
+
 exit $fail

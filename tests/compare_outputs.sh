@@ -41,10 +41,23 @@ for f in "$src"/data/scenes/*.json; do
     run "$s-region-json" region "$f" --json --cone paper --resolution 1/128
     run "$s-region-mu" region "$f" --pusher-mu 1/10 --resolution 1/128
     run "$s-sample" sample "$f" --points 16 --json
+    run "$s-sustained-region" region "$f" --push sustained --resolution 1/64 --svg j.svg
+    run "$s-sustained-region-json" region "$f" --push sustained --resolution 1/64 --json
+    run "$s-push" push "$f" --wrench "$imp" --time 2 --json
+  fi
+  if [ "$dof" = 3 ]; then
+    run "$s-sustained" seat "$f" --sustained --wrench -1,-1,0
+    run "$s-sustained-json" seat "$f" --sustained --json --wrench 0,1,0
+    run "$s-dump-sustained" dump "$f" --off out --sustained
   fi
 done
 run nonunique-guaranteed seat "$src/data/scenes/nonunique.json" --guaranteed --json
 run nonunique-part-region-g region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64
+run nonunique-seat-svg seat "$src/data/scenes/nonunique.json" --guaranteed --svg g.svg --impulse -1,-1,-1
+run region-zero-resolution region "$src/data/scenes/blob.json" --resolution 0
+run sample-zero-points sample "$src/data/scenes/blob.json" --points 0
+run simulate-zero-steps simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1 --steps 0
+run dump-bad-length dump "$src/data/scenes/example2.json" --off out --length -1
 run verify verify
 echo "$count commands compared"
 exit $fail

@@ -6,7 +6,8 @@
 
 #include "fixel/error.h"
 #include "fixel/scene.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
@@ -56,21 +57,21 @@ Vec2 cox_de_boor(const Curve& c, const Rational& u) {
 Curve random_bspline(std::mt19937_64& rng, int p, int n, bool clamped) {
   std::vector<Vec2> pts;
   for (int i = 0; i < n; ++i)
-    pts.push_back({testing::random_rational(rng, -3, 3, 7), testing::random_rational(rng, -3, 3, 7)});
+    pts.push_back({test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -3, 3, 7)});
   // Clamped: p + 1 equal end knots; interior knots may repeat (up to p times
   // here, increments are 0 with probability 1/7). Unclamped: strictly increasing.
   std::vector<Rational> knots;
   Rational u = 0;
   for (int i = 0; i < n + p + 1; ++i) {
     if (clamped && i > p && i <= n)
-      u += (i == n || i == p + 1 ? Rational(1, 3) : Rational(0)) + testing::random_rational(rng, 0, 2, 3);
-    if (!clamped && i > 0) u += Rational(1, 3) + testing::random_rational(rng, 0, 2, 3);
+      u += (i == n || i == p + 1 ? Rational(1, 3) : Rational(0)) + test::random_rational(rng, 0, 2, 3);
+    if (!clamped && i > 0) u += Rational(1, 3) + test::random_rational(rng, 0, 2, 3);
     knots.push_back(u);
   }
   return bspline(p, knots, pts);
 }
 
-TEST(Curve, PolylinePiecesFollowTheVertexIndex) {
+GTEST_TEST(Curve, PolylinePiecesFollowTheVertexIndex) {
   const Curve c = polyline({{0, 0}, {2, 0}, {2, 1}});
   const auto pieces = c.bezier_pieces(4);
   ASSERT_EQ(pieces.size(), 2u);
@@ -82,7 +83,7 @@ TEST(Curve, PolylinePiecesFollowTheVertexIndex) {
   EXPECT_THROW(c.point(Rational(3)), InputError);
 }
 
-TEST(Curve, BSplineEvaluationAndBezierPiecesMatchCoxDeBoor) {
+GTEST_TEST(Curve, BSplineEvaluationAndBezierPiecesMatchCoxDeBoor) {
   std::mt19937_64 rng(41);
   int checked = 0;
   for (int trial = 0; trial < 60; ++trial) {
@@ -97,7 +98,7 @@ TEST(Curve, BSplineEvaluationAndBezierPiecesMatchCoxDeBoor) {
   EXPECT_GT(checked, 700);
 }
 
-TEST(Curve, DerivativesMatchTheDerivativeBSpline) {
+GTEST_TEST(Curve, DerivativesMatchTheDerivativeBSpline) {
   // d/du Σ N_{i,p} P_i = Σ N_{i,p−1} p (P_{i+1} − P_i) / (U_{i+p+1} − U_{i+1}),
   // on the knot vector without its first and last knot.
   std::mt19937_64 rng(43);
@@ -118,7 +119,7 @@ TEST(Curve, DerivativesMatchTheDerivativeBSpline) {
   }
 }
 
-TEST(BezierPiece, DeCasteljauSplitReproducesBothHalves) {
+GTEST_TEST(BezierPiece, DeCasteljauSplitReproducesBothHalves) {
   const BezierPiece piece{0, Rational(2), Rational(4), {{0, 0}, {1, 3}, {3, 3}, {4, 0}}};
   const auto [left, right] = piece.split(Rational(1, 3));
   EXPECT_EQ(left.u1, Rational(8, 3));
@@ -133,7 +134,7 @@ TEST(BezierPiece, DeCasteljauSplitReproducesBothHalves) {
   EXPECT_TRUE(eq(mid.point(1), piece.point(Rational(1, 2))));
 }
 
-TEST(Curve, RejectsBadKnotsAndControlCounts) {
+GTEST_TEST(Curve, RejectsBadKnotsAndControlCounts) {
   const std::vector<Vec2> pts = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   auto message = [](Curve c) {
     try {
@@ -155,7 +156,7 @@ TEST(Curve, RejectsBadKnotsAndControlCounts) {
             "body.boundary[0].points[1]: (0, 0) repeats the previous point: a zero-length edge has no normal");
 }
 
-TEST(Boundary, RejectsUnclosedClockwiseAndFlatLoops) {
+GTEST_TEST(Boundary, RejectsUnclosedClockwiseAndFlatLoops) {
   EXPECT_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {1, 1}})}), SceneError);
   try {
     make_boundary({polyline({{0, 0}, {0, 1}, {1, 1}, {1, 0}, {0, 0}})});
@@ -170,21 +171,21 @@ TEST(Boundary, RejectsUnclosedClockwiseAndFlatLoops) {
   EXPECT_NO_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {1, 1}}), polyline({{1, 1}, {0, 0}})}));
 }
 
-TEST(Boundary, RejectsDegenerateAndDiscontinuousBSplines) {
+GTEST_TEST(Boundary, RejectsDegenerateAndDiscontinuousBSplines) {
   // All control points equal: a piece with only zero legs.
   EXPECT_THROW(make_boundary({bspline(1, {0, 0, 1, 1}, {{1, 1}, {1, 1}})}), SceneError);
   // A knot of multiplicity degree + 1 inside the range makes a jump.
   EXPECT_THROW(make_boundary({bspline(1, {0, 0, 1, 1, 2, 2}, {{0, 0}, {1, 0}, {1, 1}, {0, 0}})}), SceneError);
 }
 
-TEST(MassProperties, RectangleMatchesClosedForms) {
+GTEST_TEST(MassProperties, RectangleMatchesClosedForms) {
   const Boundary b = make_boundary({polyline({{0, 0}, {4, 0}, {4, 2}, {0, 2}, {0, 0}})});
   EXPECT_EQ(b.mass.area, Rational(8));
   EXPECT_TRUE(eq(b.mass.centroid, Vec2{2, 1}));
   EXPECT_EQ(b.mass.polar_moment_about(b.mass.centroid), Rational(8) * (16 + 4) / 12);  // A (a² + b²) / 12
 }
 
-TEST(MassProperties, DegreeOneBSplineEqualsThePolygonAndSubdivisionChangesNothing) {
+GTEST_TEST(MassProperties, DegreeOneBSplineEqualsThePolygonAndSubdivisionChangesNothing) {
   const std::vector<Vec2> pts = {{0, 0}, {3, 0}, {Rational(7, 2), 2}, {1, 3}, {-1, 1}, {0, 0}};
   const Boundary poly = make_boundary({polyline(pts)});
   const Boundary spline = make_boundary({bspline(1, {0, 0, 1, 2, 3, 4, 5, 5}, pts)});
@@ -206,7 +207,7 @@ TEST(MassProperties, DegreeOneBSplineEqualsThePolygonAndSubdivisionChangesNothin
   EXPECT_EQ(a.polar_moment, b.polar_moment);
 }
 
-TEST(MassProperties, ParabolicSegmentIsTwoThirdsOfItsControlTriangle) {
+GTEST_TEST(MassProperties, ParabolicSegmentIsTwoThirdsOfItsControlTriangle) {
   // Archimedes: the region between a quadratic Bézier arc and its chord.
   const Vec2 P0{0, 0}, P1{2, 4}, P2{5, 1};
   const Boundary b =
@@ -215,7 +216,7 @@ TEST(MassProperties, ParabolicSegmentIsTwoThirdsOfItsControlTriangle) {
   EXPECT_EQ(b.mass.area, Rational(2, 3) * boost::multiprecision::abs(triangle));
 }
 
-TEST(MassProperties, InscribedPolygonsApproachTheCurveFromBelow) {
+GTEST_TEST(MassProperties, InscribedPolygonsApproachTheCurveFromBelow) {
   // A convex closed cubic: inscribed polygons have less area, growing with N.
   const Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/fig6.json");
   const Curve& c = scene.body.boundary->curves[0];
@@ -230,7 +231,7 @@ TEST(MassProperties, InscribedPolygonsApproachTheCurveFromBelow) {
   }
 }
 
-TEST(Scene, BoundaryGivesMassCentreAndInertia) {
+GTEST_TEST(Scene, BoundaryGivesMassCentreAndInertia) {
   const std::string text = R"({"time_step": "1",
     "body": {"dof": 3, "mass": "2",
              "boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["4","2"],["0","2"],["0","0"]]}]},

@@ -12,11 +12,12 @@
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
+#include "fixel/seat_report.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
 #include "fixel/sustained.h"
 #include "fixel/wrench_cone.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
@@ -34,10 +35,10 @@ auto run(bool exact, F f) {
 
 std::string region_json_of(const Scene& scene, const SeatingSet& S, const RegionOptions& opt) {
   const Region r = compute_region(scene, S, opt);
-  return masked(region_json(scene, r, "subdivision", opt.resolution, r.pusher_mu));
+  return masked(region_json(scene, r));
 }
 
-TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
+GTEST_TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
   const bool before = force_exact();
   {
     ForceExactScope on(true);
@@ -51,9 +52,9 @@ TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
   EXPECT_EQ(force_exact(), before);
 }
 
-TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
+GTEST_TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
   for (const char* name : {"example2_rounded", "blob", "polygon", "blob32", "nonunique_part"}) {
-    const Scene scene = testing::scene_file(name);
+    const Scene scene = test::scene_file(name);
     const SeatingSet S = seating_set(scene);
     for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
       RegionOptions opt;
@@ -66,11 +67,11 @@ TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
   }
 }
 
-TEST(Filter, RegionsOfRandomBlobsAreIdenticalJsonAndMostDecisionsAreCertified) {
+GTEST_TEST(Filter, RegionsOfRandomBlobsAreIdenticalJsonAndMostDecisionsAreCertified) {
   std::mt19937_64 rng(12);
   reset_filter_stats();
   for (int trial = 0; trial < 6; ++trial) {
-    const Scene scene = testing::random_blob_scene(rng, Rational(trial % 3, 10));
+    const Scene scene = test::random_blob_scene(rng, Rational(trial % 3, 10));
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -89,8 +90,8 @@ TEST(Filter, RegionsOfRandomBlobsAreIdenticalJsonAndMostDecisionsAreCertified) {
   EXPECT_LT(st.at(FilterSite::kRayTest).fallbacks * 20, st.at(FilterSite::kRayTest).certified);
 }
 
-TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFilters) {
-  const Scene part = testing::scene_file("nonunique_part");
+GTEST_TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFilters) {
+  const Scene part = test::scene_file("nonunique_part");
   const SeatingSet S = seating_set(part);
   const GuaranteedSet G = guaranteed_set(part, S);
   RegionOptions opt;
@@ -99,24 +100,23 @@ TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFilters)
   EXPECT_EQ(run(false, [&] { return region_json_of(part, S, opt); }),
             run(true, [&] { return region_json_of(part, S, opt); }));
 
-  const Scene polygon = testing::scene_file("polygon");
+  const Scene polygon = test::scene_file("polygon");
   const SustainedSet J = sustained_set(polygon);
   auto sustained = [&] {
     const auto target = sustained_target(J);
     RegionOptions o;
     o.resolution = Rational(1, 256);
     const Region r = compute_region(polygon, *target, o);
-    return masked(region_json(polygon, r, "subdivision", o.resolution, r.pusher_mu)) +
-           masked(sustained_json(polygon, J, std::nullopt));
+    return masked(region_json(polygon, r)) + masked(sustained_json(polygon, J, std::nullopt));
   };
   EXPECT_EQ(run(false, sustained), run(true, sustained));
 }
 
-TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFilters) {
+GTEST_TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFilters) {
   std::mt19937_64 rng(5);
   int done = 0;
   for (int trial = 0; trial < 40 && done < 12; ++trial) {
-    const Scene scene = testing::random_scene(rng, 3);
+    const Scene scene = test::random_scene(rng, 3);
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -124,8 +124,11 @@ TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFi
       continue;
     }
     VectorQ p = S.apex;
-    for (int j = 0; j < 3; ++j) p -= testing::random_rational(rng, -1, 3, 7) * S.generators[j];
-    auto both = [&] { return seat_json(scene, S, p) + simulation_json(scene, simulate(scene, {p}, 3)); };
+    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+    auto both = [&] {
+      return seat_json(scene, S, seat_report(scene, S, p, nullptr, false)) +
+             simulation_json(scene, simulate(scene, {p}, 3));
+    };
     EXPECT_EQ(run(false, both), run(true, both)) << "trial " << trial;
     ++done;
   }
@@ -135,8 +138,8 @@ TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFi
 // Rays exactly along a facet of S (α = 0 for that facet, β = 0): the
 // intervals see an α that is a non-point enclosure of 0 (thirds are not
 // doubles), so the ray test must fall back to the exact one, and agree.
-TEST(Filter, ARayAlongAFacetOfSFallsBackToTheExactRayTest) {
-  const Scene scene = testing::scene_file("example2");
+GTEST_TEST(Filter, ARayAlongAFacetOfSFallsBackToTheExactRayTest) {
+  const Scene scene = test::scene_file("example2");
   const SeatingSet S = seating_set(scene);
   ForceExactScope filtered(false);
   // g = −(a generator of S): the ray from the apex runs along S's edge.
@@ -159,7 +162,7 @@ TEST(Filter, ARayAlongAFacetOfSFallsBackToTheExactRayTest) {
 // are exactly parallel makes every direction-extreme comparison an exact
 // zero; dyadic coordinates are exact in double, so those zeros are
 // certified without the exact path, while thirds need it.
-TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise) {
+GTEST_TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise) {
   ForceExactScope filtered(false);
   Vec2 first, last;
   reset_filter_stats();
@@ -173,8 +176,8 @@ TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise) {
   EXPECT_FALSE(direction_extremes({{Rational(1, 3), Rational(2, 3)}, {Rational(-1, 3), Rational(-2, 3)}}, first, last));
 }
 
-TEST(Filter, ForcedExactRunsCountNoFilterDecision) {
-  const Scene scene = testing::scene_file("blob");
+GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {
+  const Scene scene = test::scene_file("blob");
   const SeatingSet S = seating_set(scene);
   reset_filter_stats();
   RegionOptions opt;

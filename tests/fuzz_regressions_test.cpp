@@ -15,7 +15,7 @@
 namespace fixel {
 namespace {
 
-TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
+GTEST_TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
   const std::filesystem::path dir = std::filesystem::path(FIXEL_SOURCE_DIR) / "tests" / "fuzz_regressions";
   int replayed = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -38,7 +38,7 @@ TEST(FuzzRegressions, EveryKeptInputIsHandledCleanly) {
 
 // The structured target's inputs (raw bytes, *.bin) and, as in its seed
 // corpus, the bundled scenes' bytes.
-TEST(FuzzRegressions, EveryStructuredInputAndBundledSceneRunsCleanly) {
+GTEST_TEST(FuzzRegressions, EveryStructuredInputAndBundledSceneRunsCleanly) {
   std::vector<std::filesystem::path> inputs;
   for (const auto& dir : {std::filesystem::path(FIXEL_SOURCE_DIR) / "tests" / "fuzz_regressions" / "structured",
                           std::filesystem::path(FIXEL_SOURCE_DIR) / "data" / "scenes"})

@@ -7,15 +7,17 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/paper_reference.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/lcp.h"
 #include "fixel/region.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::scene_file;
-using testing::v3;
+using test::scene_file;
+using test::v3;
 
 // Second method: every enumerated LCP outcome at p seats.
 bool every_outcome_seats(const Scene& scene, const VectorQ& p) {
@@ -24,7 +26,7 @@ bool every_outcome_seats(const Scene& scene, const VectorQ& p) {
   return true;
 }
 
-TEST(GuaranteedSet, DesignSceneImpulseIsInSButNotGuaranteed) {
+GTEST_TEST(GuaranteedSet, DesignSceneImpulseIsInSButNotGuaranteed) {
   const Scene scene = scene_file("nonunique");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
@@ -35,7 +37,7 @@ TEST(GuaranteedSet, DesignSceneImpulseIsInSButNotGuaranteed) {
   EXPECT_FALSE(G.non_seating.empty());
 }
 
-TEST(GuaranteedSet, DeepImpulsesOfTheDesignSceneAreGuaranteedAndEnumerationAgrees) {
+GTEST_TEST(GuaranteedSet, DeepImpulsesOfTheDesignSceneAreGuaranteedAndEnumerationAgrees) {
   const Scene scene = scene_file("nonunique");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
@@ -53,7 +55,7 @@ TEST(GuaranteedSet, DeepImpulsesOfTheDesignSceneAreGuaranteedAndEnumerationAgree
   EXPECT_GT(guaranteed, 0);
 }
 
-TEST(GuaranteedSet, Example2GuaranteedSetEqualsS) {
+GTEST_TEST(GuaranteedSet, Example2GuaranteedSetEqualsS) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
@@ -66,12 +68,12 @@ TEST(GuaranteedSet, Example2GuaranteedSetEqualsS) {
 // On seeded random scenes (μ from 0.05 to 2): guaranteed == contains &&
 // every enumerated outcome seats, exactly, for many random impulses; the
 // pieces represent the same set, disjointly.
-TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
+GTEST_TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
   std::mt19937_64 rng(83);
   int scenes = 0, nonunique = 0, points = 0, lost_points = 0;
   for (int attempt = 0; attempt < 200 && scenes < 24; ++attempt) {
-    Scene scene = testing::random_scene(rng, 3, 20);
-    for (auto& f : scene.fixels) f.mu = Rational(1, 20) + testing::random_rational(rng, 0, 2, 20) * Rational(39, 40);
+    Scene scene = test::random_scene(rng, 3, 20);
+    for (auto& f : scene.fixels) f.mu = Rational(1, 20) + test::random_rational(rng, 0, 2, 20) * Rational(39, 40);
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -83,7 +85,7 @@ TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
     nonunique += G.non_seating.empty() ? 0 : 1;
     for (int k = 0; k < 12; ++k) {
       VectorQ p = S.apex;
-      for (const auto& g : S.generators) p -= testing::random_rational(rng, -1, 4, 5) * g;
+      for (const auto& g : S.generators) p -= test::random_rational(rng, -1, 4, 5) * g;
       const bool in_g = G.contains(p, S);
       EXPECT_EQ(in_g, S.contains(p) && every_outcome_seats(scene, p)) << "scene " << scenes << " point " << k;
       int pieces = 0;
@@ -100,7 +102,7 @@ TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
             << lost_points << " of " << points << " sampled impulses are in S but not guaranteed\n";
 }
 
-TEST(GuaranteedSet, StickingScenesAgreeWithEnumeration) {
+GTEST_TEST(GuaranteedSet, StickingScenesAgreeWithEnumeration) {
   std::string text = internal::paper::kExample2Scene;
   text.replace(text.find(R"("gap": "1/20")"), 13, R"("gap": "0")");
   text.replace(text.find(R"("gap": "1/5")"), 12, R"("gap": "0")");
@@ -112,7 +114,7 @@ TEST(GuaranteedSet, StickingScenesAgreeWithEnumeration) {
   int in_s = 0;
   for (int k = 0; k < 40; ++k) {
     VectorQ p = S.apex;
-    for (const auto& g : S.generators) p -= testing::random_rational(rng, -1, 3, 5) * g;
+    for (const auto& g : S.generators) p -= test::random_rational(rng, -1, 3, 5) * g;
     // S itself against enumeration: p ∈ S iff some outcome seats.
     bool any_seats = false;
     for (const auto& o : enumerate_outcomes(scene, p)) any_seats = any_seats || o.seated;
@@ -123,7 +125,7 @@ TEST(GuaranteedSet, StickingScenesAgreeWithEnumeration) {
   EXPECT_GT(in_s, 5);
 }
 
-TEST(SeatAndStay, IsSIntersectedWithTheWeakStabilityCone) {
+GTEST_TEST(SeatAndStay, IsSIntersectedWithTheWeakStabilityCone) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const SeatingSet S = seating_set(scene);
   const auto cone = stability_cone(scene);
@@ -141,8 +143,8 @@ TEST(SeatAndStay, IsSIntersectedWithTheWeakStabilityCone) {
   std::mt19937_64 rng(97);
   int both = 0;
   for (int k = 0; k < 200; ++k) {
-    const VectorQ p = S.apex + v3(testing::random_rational(rng, -3, 1, 7), testing::random_rational(rng, -3, 1, 7),
-                                  testing::random_rational(rng, -3, 1, 7));
+    const VectorQ p = S.apex + v3(test::random_rational(rng, -3, 1, 7), test::random_rational(rng, -3, 1, 7),
+                                  test::random_rational(rng, -3, 1, 7));
     bool in_cone = true;
     for (const auto& h : cone) in_cone = in_cone && h.contains(p);
     EXPECT_EQ(stay.contains(p), S.contains(p) && in_cone);
@@ -158,7 +160,7 @@ TEST(SeatAndStay, IsSIntersectedWithTheWeakStabilityCone) {
 namespace fixel {
 namespace {
 
-TEST(GuaranteedRegion, IsInsideTheOrdinaryRegionAndSoundBySampling) {
+GTEST_TEST(GuaranteedRegion, IsInsideTheOrdinaryRegionAndSoundBySampling) {
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
@@ -189,7 +191,7 @@ TEST(GuaranteedRegion, IsInsideTheOrdinaryRegionAndSoundBySampling) {
   for (const auto& r : against_s.intervals) EXPECT_EQ(r.status, RegionStatus::kIn);
 }
 
-TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
+GTEST_TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
@@ -222,7 +224,7 @@ TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
   std::cout << "[ info     ] " << split << " sampled rays meet G in more than one interval\n";
 }
 
-TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {
+GTEST_TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);
@@ -254,7 +256,7 @@ TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {
   EXPECT_GT(checked, 5);
 }
 
-TEST(GuaranteedRegion, FrictionalPusherIsAClearNotSupportedError) {
+GTEST_TEST(GuaranteedRegion, FrictionalPusherIsAClearNotSupportedError) {
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
   const GuaranteedSet G = guaranteed_set(scene, S);

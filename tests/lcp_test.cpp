@@ -3,14 +3,15 @@
 #include <gtest/gtest.h>
 
 #include "fixel/internal/paper_reference.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::mat;
+using test::mat;
 
-TEST(Lcp, Example1MatricesMatchThePaper) {
+GTEST_TEST(Lcp, Example1MatricesMatchThePaper) {
   const ContactMatrices W = contact_matrices(parse_scene(internal::paper::kExample1Scene));
   EXPECT_EQ(W.M, mat({{1, 0}, {0, 1}}));
   EXPECT_EQ(W.Wn, mat({{1, 0}, {0, 1}}));
@@ -20,7 +21,7 @@ TEST(Lcp, Example1MatricesMatchThePaper) {
   EXPECT_EQ(W.U(1, 1), Rational(1, 10));
 }
 
-TEST(Lcp, Example2MatricesMatchThePaper) {
+GTEST_TEST(Lcp, Example2MatricesMatchThePaper) {
   const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
   EXPECT_EQ(lcp.W.Wn, mat({{1, 0, 0}, {0, 1, 1}, {0, 0, 1}}));
   EXPECT_EQ(lcp.W.Wf, mat({{0, 0, -1, 1, -1, 1}, {1, -1, 0, 0, 0, 0}, {-1, 1, -1, 1, -1, 1}}));
@@ -32,7 +33,7 @@ TEST(Lcp, Example2MatricesMatchThePaper) {
   }
 }
 
-TEST(Lcp, PaperRow10TypoIsReallyATypo) {
+GTEST_TEST(Lcp, PaperRow10TypoIsReallyATypo) {
   // The paper prints row 10 as (μ₁ 0 0 0 −1 −1 0 …): that would couple contact
   // 1's σ to p_f entries 2 and 3, which belong to contacts 1 and 2.
   const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
@@ -43,16 +44,16 @@ TEST(Lcp, PaperRow10TypoIsReallyATypo) {
 
 // Second method: w = Bz + b must equal the physical quantities computed from
 // the post-step velocity ν⁺ = ν + M⁻¹ (W_n p_n + W_f p_f + p_ext).
-TEST(Lcp, BzPlusBEqualsGapsVelocitiesAndFrictionSlackOnRandomScenes) {
+GTEST_TEST(Lcp, BzPlusBEqualsGapsVelocitiesAndFrictionSlackOnRandomScenes) {
   std::mt19937_64 rng(7);
   for (int trial = 0; trial < 40; ++trial) {
     const int dof = trial % 4 == 0 ? 2 : 3;
-    const Scene s = testing::random_scene(rng, dof);
+    const Scene s = test::random_scene(rng, dof);
     const TimeSteppingLcp lcp = build_lcp(s);
     const int nc = s.num_contacts();
     VectorQ z(4 * nc), p(dof);
-    for (int k = 0; k < z.size(); ++k) z[k] = testing::random_rational(rng, 0, 2, 7);
-    for (int k = 0; k < dof; ++k) p[k] = testing::random_rational(rng, -2, 2, 5);
+    for (int k = 0; k < z.size(); ++k) z[k] = test::random_rational(rng, 0, 2, 7);
+    for (int k = 0; k < dof; ++k) p[k] = test::random_rational(rng, -2, 2, 5);
     const VectorQ w = lcp.B * z + lcp.b(p);
 
     const VectorQ pn = z.head(nc), pf = z.segment(nc, 2 * nc), sl = z.tail(nc);
@@ -68,7 +69,7 @@ TEST(Lcp, BzPlusBEqualsGapsVelocitiesAndFrictionSlackOnRandomScenes) {
   }
 }
 
-TEST(Lcp, NamesFollowTheVariableOrder) {
+GTEST_TEST(Lcp, NamesFollowTheVariableOrder) {
   const TimeSteppingLcp lcp = build_lcp(parse_scene(internal::paper::kExample2Scene));
   const auto z = lcp.z_names(), w = lcp.w_names();
   ASSERT_EQ(z.size(), 12u);

@@ -10,14 +10,15 @@
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::mat;
-using testing::vec;
+using test::mat;
+using test::vec;
 
 // Second method: every solution with a nonsingular principal block B_SS,
 // found by trying all 2^n complementary bases.
@@ -47,7 +48,7 @@ std::vector<VectorQ> brute_force_solutions(const MatrixQ& B, const VectorQ& b) {
   return out;
 }
 
-TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
+GTEST_TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   VectorQ p = vec({-1, -1, -1});
   const TimeSteppingLcp lcp = build_lcp(scene);
@@ -60,7 +61,7 @@ TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
   EXPECT_EQ(r.z[0], Rational(161, 202));
 }
 
-TEST(Lemke, OneByOneProblems) {
+GTEST_TEST(Lemke, OneByOneProblems) {
   auto solve = [](int B, int b) { return solve_lcp_lemke(mat({{B}}), vec({b})); };
   const auto a = solve(1, -1);
   ASSERT_EQ(a.status, LemkeStatus::kSolved);
@@ -73,7 +74,7 @@ TEST(Lemke, OneByOneProblems) {
   EXPECT_EQ(solve(0, 3).z[0], Rational(0));
 }
 
-TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
+GTEST_TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
   // w1 = −z2 − 1 can never be ≥ 0; B is skew (copositive-plus), so Lemke's
   // ray is a certificate of infeasibility.
   const MatrixQ B = mat({{0, -1}, {1, 0}});
@@ -82,7 +83,7 @@ TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
   EXPECT_EQ(solve_lcp_lemke(mat({{-1, 0}, {0, -1}}), vec({-1, -1})).status, LemkeStatus::kRayTermination);
 }
 
-TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
+GTEST_TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
   // b has zeros and equal negative entries: both the first pivot and later
   // ratio tests tie; the lexicographic rule must still end with a solution.
   const MatrixQ B = mat({{1, 2, 0, 0}, {0, 1, 2, 0}, {0, 0, 1, 2}, {2, 0, 0, 1}});
@@ -96,20 +97,20 @@ TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
   EXPECT_EQ(r2.z, vec({0, 1, 0, 1}));
 }
 
-TEST(Lemke, PivotLimitIsAStatusNotASolution) {
+GTEST_TEST(Lemke, PivotLimitIsAStatusNotASolution) {
   const MatrixQ B = mat({{1, 2, 0}, {0, 1, 2}, {2, 0, 1}});
   const auto r = solve_lcp_lemke(B, vec({-1, -1, -1}), 1);
   EXPECT_EQ(r.status, LemkeStatus::kPivotLimit);
   EXPECT_EQ(r.z.size(), 0);
 }
 
-TEST(Lemke, RejectsMismatchedSizes) { EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError); }
+GTEST_TEST(Lemke, RejectsMismatchedSizes) { EXPECT_THROW(solve_lcp_lemke(mat({{1, 0}}), vec({1})), InputError); }
 
 // Lemke's theorem: for positive semidefinite B (copositive-plus), the
 // lexicographic method ends with a solution exactly when one exists. Random
 // degenerate problems (b with many zeros and repeated values) check this
 // against brute force.
-TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
+GTEST_TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
   std::mt19937_64 rng(17);
   std::uniform_int_distribution<int> small(-2, 2), size(1, 6);
   int solved = 0, unsolvable = 0;
@@ -140,7 +141,7 @@ TEST(Lemke, SolvesExactlyTheSolvableDegeneratePsdProblems) {
 }
 
 // P-matrices have exactly one solution; Lemke must return it.
-TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
+GTEST_TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
   std::mt19937_64 rng(23);
   std::uniform_int_distribution<int> small(-3, 3);
   for (int trial = 0; trial < 100; ++trial) {
@@ -174,13 +175,13 @@ void expect_same(const LemkeResult& a, const LemkeResult& b, int trial) {
   EXPECT_EQ(a.z, b.z) << "trial " << trial;
 }
 
-TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) {
+GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) {
   ForceExactScope filtered(false);
   reset_filter_stats();
   std::mt19937_64 rng(2026);
   int problems = 0;
   while (problems < 40) {
-    Scene scene = testing::random_scene(rng, 3);
+    Scene scene = test::random_scene(rng, 3);
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -188,7 +189,7 @@ TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) {
       continue;
     }
     VectorQ p = S.apex;
-    for (int j = 0; j < 3; ++j) p -= testing::random_rational(rng, -1, 3, 7) * S.generators[j];
+    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
     const TimeSteppingLcp lcp = build_lcp(scene);
     const VectorQ b = lcp.b(p);
     expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
@@ -202,7 +203,7 @@ TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) {
   EXPECT_GT(c.certified, 0);
 }
 
-TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {
+GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {
   ForceExactScope filtered(false);
   std::mt19937_64 rng(17);
   std::uniform_int_distribution<int> small(-2, 2), size(1, 6);
@@ -220,7 +221,7 @@ TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {
 
 // Ratio ties between rows whose entries are not exact in double (thirds):
 // the intervals cannot certify the tie, so the exact tableau must run.
-TEST(FilteredLemke, FallsBackToTheExactTableauOnATieItCannotCertify) {
+GTEST_TEST(FilteredLemke, FallsBackToTheExactTableauOnATieItCannotCertify) {
   ForceExactScope filtered(false);
   const MatrixQ B = mat({{1, 0}, {0, 1}});
   VectorQ b(2);
@@ -238,13 +239,13 @@ TEST(FilteredLemke, FallsBackToTheExactTableauOnATieItCannotCertify) {
   EXPECT_EQ(filter_stats().at(FilterSite::kLemke).certified, 1);
 }
 
-TEST(FilteredLemke, ForcedExactRunsCountNoFilterDecision) {
+GTEST_TEST(FilteredLemke, ForcedExactRunsCountNoFilterDecision) {
   reset_filter_stats();
   solve_forced_exact(mat({{2, 1}, {1, 2}}), vec({-1, -1}));
   EXPECT_EQ(filter_stats().at(FilterSite::kLemke).certified + filter_stats().at(FilterSite::kLemke).fallbacks, 0);
 }
 
-TEST(IsSolution, RejectsEachViolatedCondition) {
+GTEST_TEST(IsSolution, RejectsEachViolatedCondition) {
   const MatrixQ B = mat({{1}});
   EXPECT_TRUE(is_solution(B, vec({-1}), vec({0}), vec({1})));
   EXPECT_FALSE(is_solution(B, vec({-1}), vec({1}), vec({1})));   // w ≠ Bz + b

@@ -9,17 +9,15 @@
 #include "fixel/error.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/io.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-VectorQ v3(Rational x, Rational y, Rational z) {
-  VectorQ out(3);
-  out << x, y, z;
-  return out;
-}
+using test::v3;
 
-TEST(PolytopeVertices, UnitCubeHasEightVertices) {
+GTEST_TEST(PolytopeVertices, UnitCubeHasEightVertices) {
   const Box box{v3(0, 0, 0), v3(1, 1, 1)};
   const auto verts = polytope_vertices(box.halfspaces(), 3);
   EXPECT_EQ(verts.size(), 8u);
@@ -27,7 +25,7 @@ TEST(PolytopeVertices, UnitCubeHasEightVertices) {
     for (int k = 0; k < 3; ++k) EXPECT_TRUE(v[k] == 0 || v[k] == 1);
 }
 
-TEST(PolytopeVertices, CubeCutByADiagonalPlaneKeepsACorner) {
+GTEST_TEST(PolytopeVertices, CubeCutByADiagonalPlaneKeepsACorner) {
   auto hs = Box{v3(0, 0, 0), v3(1, 1, 1)}.halfspaces();
   hs.push_back({v3(-1, -1, -1), Rational(-1)});    // x + y + z <= 1
   EXPECT_EQ(polytope_vertices(hs, 3).size(), 4u);  // the corner simplex
@@ -35,7 +33,7 @@ TEST(PolytopeVertices, CubeCutByADiagonalPlaneKeepsACorner) {
   EXPECT_TRUE(polytope_vertices(hs, 3).empty());
 }
 
-TEST(SeatingDumpBox, HoldsApexAndEveryRayTip) {
+GTEST_TEST(SeatingDumpBox, HoldsApexAndEveryRayTip) {
   const SeatingSet S = seating_set(parse_scene(internal::paper::kExample2Scene));
   const Box box = seating_dump_box(S, Rational(2));
   auto inside = [&](const VectorQ& p) {
@@ -48,7 +46,7 @@ TEST(SeatingDumpBox, HoldsApexAndEveryRayTip) {
   EXPECT_THROW(seating_dump_box(S, Rational(0)), InputError);
 }
 
-TEST(WriteOff, SeatingSetIsAClosedTriangulatedSurfaceWithTheBoxStated) {
+GTEST_TEST(WriteOff, SeatingSetIsAClosedTriangulatedSurfaceWithTheBoxStated) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const SeatingSet S = seating_set(scene);
   const auto dir = std::filesystem::temp_directory_path() / "fixel_off_test";
@@ -76,7 +74,7 @@ TEST(WriteOff, SeatingSetIsAClosedTriangulatedSurfaceWithTheBoxStated) {
   EXPECT_NE(std::find(verts.begin(), verts.end(), S.apex), verts.end());
 }
 
-TEST(WriteOff, PointMassSetIsOnePolygonInThePlane) {
+GTEST_TEST(WriteOff, PointMassSetIsOnePolygonInThePlane) {
   const Scene scene = parse_scene(internal::paper::kExample1Scene);
   std::ostringstream out;
   std::vector<Halfspace> hs = seating_set(scene).halfspaces;
@@ -86,7 +84,7 @@ TEST(WriteOff, PointMassSetIsOnePolygonInThePlane) {
   EXPECT_NE(out.str().find("\n# test\n"), std::string::npos);
 }
 
-TEST(DumpOff, UnwritableDirectoryIsAnInputError) {
+GTEST_TEST(DumpOff, UnwritableDirectoryIsAnInputError) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   EXPECT_THROW(dump_off(scene, seating_set(scene), "/proc/fixel/cannot", Rational(1)), InputError);
 }

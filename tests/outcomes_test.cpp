@@ -6,13 +6,14 @@
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
 #include "fixel/lemke.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::vec;
+using test::vec;
 
 // Rebuilds an LCP solution z = (p_n, p_f, s) from an outcome and checks it
 // with the independent checker: the outcome really solves the step LCP.
@@ -30,7 +31,7 @@ void expect_outcome_solves_lcp(const Scene& scene, const VectorQ& p, const Outco
   EXPECT_TRUE(is_solution(lcp.B, b, VectorQ(lcp.B * z + b), z));
 }
 
-TEST(Outcomes, PaperExample2HasExactlyOneOutcomeAndItSeats) {
+GTEST_TEST(Outcomes, PaperExample2HasExactlyOneOutcomeAndItSeats) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const auto outcomes = enumerate_outcomes(scene, vec({-1, -1, -1}));
   ASSERT_EQ(outcomes.size(), 1u);
@@ -38,7 +39,7 @@ TEST(Outcomes, PaperExample2HasExactlyOneOutcomeAndItSeats) {
   EXPECT_EQ(outcomes[0].p_n, vec({Rational(161, 202), Rational(183, 505), Rational(337, 505)}));
 }
 
-TEST(Outcomes, NonuniquenessSceneHasASeatingAndANonSeatingOutcome) {
+GTEST_TEST(Outcomes, NonuniquenessSceneHasASeatingAndANonSeatingOutcome) {
   const Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/nonunique.json");
   // DESIGN §3: p = apex − Σ g_i, i.e. λ = p_n = (1, 1, 1).
   const VectorQ p = vec({Rational(29157, 10540), Rational(-71119, 105400), Rational(-1169839, 263500)});
@@ -67,18 +68,18 @@ TEST(Outcomes, NonuniquenessSceneHasASeatingAndANonSeatingOutcome) {
   EXPECT_EQ(non_seating, 2);  // (open, slide+, open) and (slide+, slide+, open)
 }
 
-TEST(Outcomes, RejectsAnImpulseOfTheWrongLength) {
+GTEST_TEST(Outcomes, RejectsAnImpulseOfTheWrongLength) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   EXPECT_THROW(enumerate_outcomes(scene, vec({1, 2})), InputError);
 }
 
 // Random low-friction scenes: inside S some outcome seats, outside S none
 // does, and Lemke's solution is always one of the enumerated outcomes.
-TEST(Outcomes, AgreeWithSeatingSetAndLemkeOnRandomLowFrictionScenes) {
+GTEST_TEST(Outcomes, AgreeWithSeatingSetAndLemkeOnRandomLowFrictionScenes) {
   std::mt19937_64 rng(31);
   int scenes = 0, inside = 0, outside = 0;
   for (int attempt = 0; attempt < 400 && scenes < 40; ++attempt) {
-    Scene scene = testing::random_scene(rng, 3, /*max_mu_tenths=*/3);
+    Scene scene = test::random_scene(rng, 3, /*max_mu_tenths=*/3);
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -89,7 +90,7 @@ TEST(Outcomes, AgreeWithSeatingSetAndLemkeOnRandomLowFrictionScenes) {
     const TimeSteppingLcp lcp = build_lcp(scene);
     for (int k = 0; k < 6; ++k) {
       VectorQ lambda(3);
-      for (int j = 0; j < 3; ++j) lambda[j] = testing::random_rational(rng, 0, 2, 9) + Rational(1, 9);
+      for (int j = 0; j < 3; ++j) lambda[j] = test::random_rational(rng, 0, 2, 9) + Rational(1, 9);
       const bool make_outside = k % 2 == 1;
       if (make_outside) lambda[k % 3] = -lambda[k % 3];
       VectorQ p = S.apex;
@@ -114,7 +115,7 @@ TEST(Outcomes, AgreeWithSeatingSetAndLemkeOnRandomLowFrictionScenes) {
   EXPECT_EQ(inside + outside, 240);
 }
 
-TEST(ModeSystem, HasOneEquationPerUnknown) {
+GTEST_TEST(ModeSystem, HasOneEquationPerUnknown) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   for (auto m : {ContactMode::kOpen, ContactMode::kSlidePlus, ContactMode::kSlideMinus, ContactMode::kStick}) {
     const ModeSystem sys = mode_system(scene, {m, m, m}, vec({0, 0, 0}));

@@ -9,6 +9,7 @@
 
 #include "fixel/error.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 
 namespace fixel::physics {
 namespace {

@@ -4,16 +4,12 @@
 
 #include <random>
 
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-VectorQ v2(Rational a, Rational b) {
-  VectorQ v(2);
-  v << a, b;
-  return v;
-}
+using test::v2;
 
 Polyhedron unit_square() {
   Polyhedron P;
@@ -22,7 +18,7 @@ Polyhedron unit_square() {
   return P;
 }
 
-TEST(Polyhedron, EmptinessHonoursStrictRows) {
+GTEST_TEST(Polyhedron, EmptinessHonoursStrictRows) {
   Polyhedron P = unit_square();
   EXPECT_FALSE(is_empty(P));
   P.strict.push_back({v2(1, 0), 1});  // x > 1 with x <= 1
@@ -32,7 +28,7 @@ TEST(Polyhedron, EmptinessHonoursStrictRows) {
   EXPECT_FALSE(is_empty(Q));
 }
 
-TEST(Polyhedron, SubtractGivesDisjointPiecesCoveringTheDifference) {
+GTEST_TEST(Polyhedron, SubtractGivesDisjointPiecesCoveringTheDifference) {
   Polyhedron Q = unit_square();
   Polyhedron P;
   P.dim = 2;
@@ -49,7 +45,7 @@ TEST(Polyhedron, SubtractGivesDisjointPiecesCoveringTheDifference) {
     }
 }
 
-TEST(Polyhedron, ProjectionEliminatesEqualitiesAndFreeVariables) {
+GTEST_TEST(Polyhedron, ProjectionEliminatesEqualitiesAndFreeVariables) {
   // {p : ∃x1, x2: x1 = p1 + p2, 0 <= x2 <= x1 − 1, x2 > p2 − 3} = {p1 + p2 >= 1, p1 + 2... }
   LiftedSystem s;
   s.nx = 2;
@@ -75,7 +71,7 @@ TEST(Polyhedron, ProjectionEliminatesEqualitiesAndFreeVariables) {
     }
 }
 
-TEST(Polyhedron, RayMagnitudesWithStrictRowsHaveOpenEnds) {
+GTEST_TEST(Polyhedron, RayMagnitudesWithStrictRowsHaveOpenEnds) {
   Polyhedron P = unit_square();
   P.strict.push_back({v2(-1, 0), Rational(-1, 2)});  // x < 1/2
   const Magnitudes T = ray_magnitudes(P, v2(0, 0), v2(1, 1));

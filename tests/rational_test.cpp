@@ -7,7 +7,7 @@
 namespace fixel {
 namespace {
 
-TEST(ParseRational, ReadsDecimalsExactly) {
+GTEST_TEST(ParseRational, ReadsDecimalsExactly) {
   EXPECT_EQ(parse_rational("0.1"), Rational(1, 10));
   EXPECT_EQ(parse_rational("-0.05"), Rational(-1, 20));
   EXPECT_EQ(parse_rational(".5"), Rational(1, 2));
@@ -15,13 +15,13 @@ TEST(ParseRational, ReadsDecimalsExactly) {
   EXPECT_EQ(parse_rational("+2"), Rational(2));
 }
 
-TEST(ParseRational, ReadsFractionsInLowestTerms) {
+GTEST_TEST(ParseRational, ReadsFractionsInLowestTerms) {
   EXPECT_EQ(parse_rational("-3/7"), Rational(-3, 7));
   EXPECT_EQ(parse_rational("6/4"), Rational(3, 2));
   EXPECT_EQ(to_string(parse_rational("6/4")), "3/2");
 }
 
-TEST(ParseRational, LeadingZerosAreDecimalNotOctal) {
+GTEST_TEST(ParseRational, LeadingZerosAreDecimalNotOctal) {
   EXPECT_EQ(parse_rational("010"), Rational(10));
   EXPECT_EQ(parse_rational("0.8911"), Rational(8911, 10000));
   EXPECT_EQ(parse_rational("007/010"), Rational(7, 10));
@@ -29,20 +29,20 @@ TEST(ParseRational, LeadingZerosAreDecimalNotOctal) {
   EXPECT_EQ(parse_rational("-0"), Rational(0));
 }
 
-TEST(ParseRational, AcceptsExponents) {
+GTEST_TEST(ParseRational, AcceptsExponents) {
   EXPECT_EQ(parse_rational("1e-3"), Rational(1, 1000));
   EXPECT_EQ(parse_rational("2.5E2"), Rational(250));
   EXPECT_EQ(parse_rational("-1.25e+1"), Rational(-25, 2));
   EXPECT_EQ(parse_rational("1e-30"), Rational(Integer(1), boost::multiprecision::pow(Integer(10), 30)));
 }
 
-TEST(ParseRational, ReadsDigitsBeyondDoublePrecisionExactly) {
+GTEST_TEST(ParseRational, ReadsDigitsBeyondDoublePrecisionExactly) {
   // 0.1000000000000000000001 is not a double; the difference must survive.
   EXPECT_NE(parse_rational("0.1000000000000000000001"), Rational(1, 10));
   EXPECT_EQ(parse_rational("0.1000000000000000000001") - Rational(1, 10), parse_rational("1e-22"));
 }
 
-TEST(ParseRational, RejectsMalformedTextNamingTheField) {
+GTEST_TEST(ParseRational, RejectsMalformedTextNamingTheField) {
   for (const char* bad :
        {"", "abc", "1/0", "1/-2", "--1", "1e", "1.2.3", " 1", "1 ", "0x10", "nan", "inf", ".", "e5", "1/2/3"}) {
     try {
@@ -55,12 +55,12 @@ TEST(ParseRational, RejectsMalformedTextNamingTheField) {
   }
 }
 
-TEST(ParseRational, RejectsHugeExponentsInsteadOfExhaustingMemory) {
+GTEST_TEST(ParseRational, RejectsHugeExponentsInsteadOfExhaustingMemory) {
   EXPECT_THROW(parse_rational("1e999999999"), ParseError);
   EXPECT_EQ(parse_rational("1e10000"), Rational(boost::multiprecision::pow(Integer(10), 10000)));
 }
 
-TEST(ParseRationalList, SplitsOnCommasAndNamesTheBadEntry) {
+GTEST_TEST(ParseRationalList, SplitsOnCommasAndNamesTheBadEntry) {
   const auto v = parse_rational_list("-1,1/2,0.25");
   ASSERT_EQ(v.size(), 3u);
   EXPECT_EQ(v[1], Rational(1, 2));
@@ -72,7 +72,7 @@ TEST(ParseRationalList, SplitsOnCommasAndNamesTheBadEntry) {
   }
 }
 
-TEST(ToString, PrintsIntegersWithoutDenominator) {
+GTEST_TEST(ToString, PrintsIntegersWithoutDenominator) {
   EXPECT_EQ(to_string(Rational(-4)), "-4");
   EXPECT_EQ(to_string(Rational(0)), "0");
   EXPECT_EQ(to_string(Rational(-161, 202)), "-161/202");

@@ -5,14 +5,15 @@
 #include <random>
 
 #include "fixel/error.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/lcp.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::scene_file;
-using testing::v3;
+using test::scene_file;
+using test::v3;
 
 // Status of the interval holding (curve, u); corner points (zero-length
 // intervals) take precedence over the intervals they bound.
@@ -26,14 +27,14 @@ const RegionInterval* interval_at(const Region& region, int curve, const Rationa
   return found;
 }
 
-TEST(RayMagnitudes, AgreeWithDirectMembershipAlongRandomRays) {
+GTEST_TEST(RayMagnitudes, AgreeWithDirectMembershipAlongRandomRays) {
   std::mt19937_64 rng(71);
   const Scene scene = scene_file("example2");
   const SeatingSet S = seating_set(scene);
   int hits = 0, misses = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const VectorQ g = v3(testing::random_rational(rng, -2, 1, 5), testing::random_rational(rng, -2, 1, 5),
-                         testing::random_rational(rng, -2, 1, 5));
+    const VectorQ g = v3(test::random_rational(rng, -2, 1, 5), test::random_rational(rng, -2, 1, 5),
+                         test::random_rational(rng, -2, 1, 5));
     const VectorQ b0 = trial % 3 == 0 ? VectorQ(S.apex + v3(-1, -1, -1) / 2) : VectorQ(VectorQ::Zero(3));
     const Magnitudes T = ray_magnitudes(S, b0, g);
     (T.empty ? misses : hits)++;
@@ -54,7 +55,7 @@ TEST(RayMagnitudes, AgreeWithDirectMembershipAlongRandomRays) {
   EXPECT_GT(misses, 30);
 }
 
-TEST(RayMagnitudes, PaperImpulseDirectionIsAHalfLine) {
+GTEST_TEST(RayMagnitudes, PaperImpulseDirectionIsAHalfLine) {
   const Scene scene = scene_file("example2");
   const Magnitudes T = ray_magnitudes(seating_set(scene), VectorQ::Zero(3), v3(-1, -1, -1));
   EXPECT_TRUE(T.contains(1));
@@ -64,13 +65,13 @@ TEST(RayMagnitudes, PaperImpulseDirectionIsAHalfLine) {
 // Soundness: on random blobs, for frictionless and frictional pushers,
 // every exact rational sample inside an IN interval passes the exact point
 // test and every one inside an OUT interval fails it.
-TEST(Region, IsSoundOnRandomBlobsByExactSampling) {
+GTEST_TEST(Region, IsSoundOnRandomBlobsByExactSampling) {
   std::mt19937_64 rng(73);
   long samples = 0;
   int scenes_with_in = 0, scenes_with_out = 0;
   for (int trial = 0; trial < 12; ++trial) {
     const Rational mu = trial % 2 == 0 ? Rational(0) : Rational(trial % 4 == 1 ? 1 : 3, 10);
-    Scene scene = testing::random_blob_scene(rng, mu);
+    Scene scene = test::random_blob_scene(rng, mu);
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -108,7 +109,7 @@ TEST(Region, IsSoundOnRandomBlobsByExactSampling) {
   EXPECT_GE(scenes_with_out, 8);
 }
 
-TEST(Region, CertifiedMagnitudesSeatEveryPushDirection) {
+GTEST_TEST(Region, CertifiedMagnitudesSeatEveryPushDirection) {
   // At sample points of IN intervals with a common magnitude range, the
   // lower end (and a larger value) pushed along the exact normal lands in S.
   for (const char* name : {"example2_rounded", "polygon", "blob"}) {
@@ -149,10 +150,10 @@ TEST(Region, CertifiedMagnitudesSeatEveryPushDirection) {
   }
 }
 
-TEST(Region, HalvingTheResolutionNeverTurnsADecidedPointPartial) {
+GTEST_TEST(Region, HalvingTheResolutionNeverTurnsADecidedPointPartial) {
   std::mt19937_64 rng(79);
   for (int trial = 0; trial < 4; ++trial) {
-    Scene scene = testing::random_blob_scene(rng);
+    Scene scene = test::random_blob_scene(rng);
     SeatingSet S;
     try {
       S = seating_set(scene);
@@ -175,7 +176,7 @@ TEST(Region, HalvingTheResolutionNeverTurnsADecidedPointPartial) {
   }
 }
 
-TEST(Region, PartialLengthShrinksWithTheResolution) {
+GTEST_TEST(Region, PartialLengthShrinksWithTheResolution) {
   const Scene scene = scene_file("blob");
   const SeatingSet S = seating_set(scene);
   // Asymptotically each transition leaves O(R) partial; from R = 1/1024 on
@@ -196,7 +197,7 @@ TEST(Region, PartialLengthShrinksWithTheResolution) {
   }
 }
 
-TEST(Region, BundledExamplesAtResolutionRangeOver4096LeaveLittlePartial) {
+GTEST_TEST(Region, BundledExamplesAtResolutionRangeOver4096LeaveLittlePartial) {
   for (const char* name : {"example2_rounded", "blob", "polygon"}) {
     const Scene scene = scene_file(name);
     Rational total = 0;
@@ -212,7 +213,7 @@ TEST(Region, BundledExamplesAtResolutionRangeOver4096LeaveLittlePartial) {
   }
 }
 
-TEST(Region, IntervalsTileEveryCurveExactly) {
+GTEST_TEST(Region, IntervalsTileEveryCurveExactly) {
   for (const char* name : {"example2_rounded", "blob", "polygon", "fig6"}) {
     const Scene scene = scene_file(name);
     const Region region = compute_region(scene, seating_set(scene), RegionOptions{});
@@ -229,7 +230,7 @@ TEST(Region, IntervalsTileEveryCurveExactly) {
   }
 }
 
-TEST(Region, SamplingBaselineAgreesWithEveryDecidedInterval) {
+GTEST_TEST(Region, SamplingBaselineAgreesWithEveryDecidedInterval) {
   for (const char* name : {"example2_rounded", "blob", "polygon"}) {
     const Scene scene = scene_file(name);
     const SeatingSet S = seating_set(scene);
@@ -247,13 +248,13 @@ TEST(Region, SamplingBaselineAgreesWithEveryDecidedInterval) {
   }
 }
 
-TEST(Region, EmptyRegion) {
+GTEST_TEST(Region, EmptyRegion) {
   const Scene scene = scene_file("fig6");
   const Region region = compute_region(scene, seating_set(scene), RegionOptions{});
   for (const auto& r : region.intervals) EXPECT_EQ(r.status, RegionStatus::kOut);
 }
 
-TEST(Region, WholeBoundaryWhenTheBackgroundImpulseIsInsideS) {
+GTEST_TEST(Region, WholeBoundaryWhenTheBackgroundImpulseIsInsideS) {
   Scene scene = scene_file("example2_rounded");
   const SeatingSet S = seating_set(scene);
   // b0 = apex − Σ g_i is interior to S: every ray starts inside.
@@ -269,7 +270,7 @@ TEST(Region, WholeBoundaryWhenTheBackgroundImpulseIsInsideS) {
   }
 }
 
-TEST(Region, NonZeroBackgroundImpulseShiftsTheRegion) {
+GTEST_TEST(Region, NonZeroBackgroundImpulseShiftsTheRegion) {
   Scene scene = scene_file("example2_rounded");
   const SeatingSet S = seating_set(scene);
   const Region base = compute_region(scene, S, RegionOptions{});
@@ -288,7 +289,7 @@ TEST(Region, NonZeroBackgroundImpulseShiftsTheRegion) {
     }
 }
 
-TEST(Region, FrictionalPusherWithOneEdgeInAndOneOutIsOutNotPartial) {
+GTEST_TEST(Region, FrictionalPusherWithOneEdgeInAndOneOutIsOutNotPartial) {
   // On the right edge of the rounded rectangle with μ_p = 7/10 the n + μt
   // rays all hit S and the n − μt rays all miss. One classification must
   // settle the whole edge as OUT (the paper's single friction-cone bound
@@ -313,7 +314,7 @@ TEST(Region, FrictionalPusherWithOneEdgeInAndOneOutIsOutNotPartial) {
   EXPECT_LT(hit, static_cast<int>(whole->generators.size()));
 }
 
-TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
+GTEST_TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
   const Scene scene = scene_file("example2_rounded");
   const SeatingSet S = seating_set(scene);
   RegionOptions opt;
@@ -336,8 +337,8 @@ namespace {
 // Coordinates far outside double's comfortable range must not reach a
 // double-to-integer cast (undefined behaviour) or stall a rounding loop: the
 // same part scaled by 10^200 and 10^-200 gives the same region.
-TEST(Region, ExtremeCoordinateScalesGiveTheSameRegion) {
-  const Scene base = testing::scene_file("polygon");
+GTEST_TEST(Region, ExtremeCoordinateScalesGiveTheSameRegion) {
+  const Scene base = test::scene_file("polygon");
   const Region reference = compute_region(base, seating_set(base), RegionOptions{});
   for (const char* factor : {"1e200", "1e-200"}) {
     const Rational k = parse_rational(factor);
@@ -364,6 +365,44 @@ TEST(Region, ExtremeCoordinateScalesGiveTheSameRegion) {
         EXPECT_EQ(region.intervals[i].u1, reference.intervals[i].u1) << factor;
       }
     }
+  }
+}
+
+}  // namespace
+}  // namespace fixel
+
+namespace fixel {
+namespace {
+
+GTEST_TEST(Region, RecordsItsTargetMethodResolutionAndPusherMu) {
+  const Scene scene = test::scene_file("blob");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions options;
+  options.resolution = Rational(1, 16);
+  options.cone = ConeMethod::kPaper;
+  options.pusher_mu = Rational(1, 10);
+  const Region r = compute_region(scene, S, options);
+  EXPECT_EQ(r.target, "S");
+  EXPECT_EQ(r.push, "step");
+  EXPECT_EQ(method_of(r), "paper");
+  EXPECT_EQ(*r.resolution, Rational(1, 16));
+  EXPECT_EQ(r.pusher_mu, Rational(1, 10));
+  const Region sampled = sample_region(scene, S, 4, std::nullopt);
+  EXPECT_TRUE(sampled.sampled);
+  EXPECT_EQ(method_of(sampled), "sample");
+  EXPECT_FALSE(sampled.resolution.has_value());
+  EXPECT_EQ(sampled.pusher_mu, scene.pusher_mu_upper());
+}
+
+GTEST_TEST(Region, LibraryErrorsNameTheOptionFieldNotACommandLineFlag) {
+  const Scene scene = test::scene_file("blob");
+  RegionOptions options;
+  options.resolution = 0;
+  try {
+    compute_region(scene, seating_set(scene), options);
+    FAIL() << "resolution 0 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "RegionOptions.resolution");
   }
 }
 

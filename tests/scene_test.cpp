@@ -1,10 +1,12 @@
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 
 #include <gtest/gtest.h>
 
 #include "fixel/error.h"
 #include "fixel/internal/paper_reference.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
@@ -31,7 +33,7 @@ void expect_error(const std::string& text, const std::string& message, bool anal
   }
 }
 
-TEST(Scene, LoadsExample2Exactly) {
+GTEST_TEST(Scene, LoadsExample2Exactly) {
   const Scene s = parse_scene(internal::paper::kExample2Scene);
   EXPECT_EQ(s.name, "example2");
   EXPECT_EQ(s.body.dof, 3);
@@ -44,7 +46,7 @@ TEST(Scene, LoadsExample2Exactly) {
   EXPECT_TRUE(s.background_impulse.isZero());
 }
 
-TEST(Scene, BundledFilesMatchTheBuiltInPaperScenes) {
+GTEST_TEST(Scene, BundledFilesMatchTheBuiltInPaperScenes) {
   const Scene file = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/example2.json");
   const Scene builtin = parse_scene(internal::paper::kExample2Scene);
   for (int i = 0; i < 3; ++i) {
@@ -59,7 +61,7 @@ TEST(Scene, BundledFilesMatchTheBuiltInPaperScenes) {
   EXPECT_NO_THROW(load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/nonunique.json"));
 }
 
-TEST(Scene, ReadsJsonNumbersFromTheirDecimalText) {
+GTEST_TEST(Scene, ReadsJsonNumbersFromTheirDecimalText) {
   // 0.1 as a JSON number must be 1/10, not the double nearest to it.
   const Scene s = parse_scene(example2_with(R"("gap": "1/10")", R"("gap": 0.1)"));
   EXPECT_EQ(s.fixels[0].gap, Rational(1, 10));
@@ -69,7 +71,7 @@ TEST(Scene, ReadsJsonNumbersFromTheirDecimalText) {
   EXPECT_EQ(t.fixels[0].gap - Rational(1, 10), parse_rational("1e-23"));
 }
 
-TEST(Scene, RejectsMalformedJson) {
+GTEST_TEST(Scene, RejectsMalformedJson) {
   try {
     parse_scene("{\"name\": ", "bad.json");
     FAIL();
@@ -80,7 +82,7 @@ TEST(Scene, RejectsMalformedJson) {
   EXPECT_THROW(parse_scene("[1, 2]"), SceneError);
 }
 
-TEST(Scene, RejectsDeeplyNestedJsonInsteadOfOverflowingTheStack) {
+GTEST_TEST(Scene, RejectsDeeplyNestedJsonInsteadOfOverflowingTheStack) {
   // Found by hand after fuzzing (the fuzzer's 4 KB inputs cannot nest this
   // deep): 200000 nested arrays used to crash in the DOM's destructor.
   const std::string deep = std::string(200000, '[') + std::string(200000, ']');
@@ -98,12 +100,12 @@ TEST(Scene, RejectsDeeplyNestedJsonInsteadOfOverflowingTheStack) {
   EXPECT_THROW(parse_scene(objects, "deep.json"), ParseError);
 }
 
-TEST(Scene, RejectsDuplicateKeys) {
+GTEST_TEST(Scene, RejectsDuplicateKeys) {
   expect_error<ParseError>(example2_with(R"("name": "example2")", R"("name": "a", "name": "b")"),
                            "scene.json: key \"name\" appears twice in one object");
 }
 
-TEST(Scene, RejectsMissingFields) {
+GTEST_TEST(Scene, RejectsMissingFields) {
   expect_error<SceneError>(example2_with(R"("time_step": "1",)", ""), "time_step: is missing");
   expect_error<SceneError>(example2_with(R"("mass": "1", )", ""), "body.mass: is missing");
   expect_error<SceneError>(example2_with(R"("mu": "1/10", "gap": "1/20")", R"("mu": "1/10")"),
@@ -112,14 +114,14 @@ TEST(Scene, RejectsMissingFields) {
                            "body.inertia: is missing (required for dof 3 without a boundary)");
 }
 
-TEST(Scene, RejectsUnknownFields) {
+GTEST_TEST(Scene, RejectsUnknownFields) {
   expect_error<SceneError>(example2_with(R"("time_step": "1",)", R"("time_step": "1", "timestep": "2",)"),
                            "timestep: \"2\" is not a known field");
   expect_error<SceneError>(example2_with(R"("gap": "1/5")", R"("gap": "1/5", "friction": "1")"),
                            "fixels[2].friction: \"1\" is not a known field");
 }
 
-TEST(Scene, RejectsNonUnitNormal) {
+GTEST_TEST(Scene, RejectsNonUnitNormal) {
   expect_error<SceneError>(
       example2_with(R"("normal": ["0", "1"], "mu": "1/10", "gap": "1/20")",
                     R"("normal": ["3/5", "3/5"], "mu": "1/10", "gap": "1/20")"),
@@ -130,31 +132,31 @@ TEST(Scene, RejectsNonUnitNormal) {
   EXPECT_NO_THROW(parse_scene(example2_with(R"("normal": ["1", "0"])", R"("normal": ["0.6", "0.8"])")));
 }
 
-TEST(Scene, RejectsNegativeGapAndMu) {
+GTEST_TEST(Scene, RejectsNegativeGapAndMu) {
   expect_error<SceneError>(example2_with(R"("gap": "1/20")", R"("gap": "-1/20")"), "fixels[1].gap: -1/20 must be >= 0");
   expect_error<SceneError>(example2_with(R"("mu": "1/10", "gap": "1/5")", R"("mu": "-0.1", "gap": "1/5")"),
                            "fixels[2].mu: -1/10 must be >= 0");
 }
 
-TEST(Scene, RejectsNonPositiveMassInertiaAndTimeStep) {
+GTEST_TEST(Scene, RejectsNonPositiveMassInertiaAndTimeStep) {
   expect_error<SceneError>(example2_with(R"("mass": "1")", R"("mass": "0")"), "body.mass: 0 must be > 0");
   expect_error<SceneError>(example2_with(R"("inertia": "1")", R"("inertia": "-2")"), "body.inertia: -2 must be > 0");
   expect_error<SceneError>(example2_with(R"("time_step": "1")", R"("time_step": "0")"), "time_step: 0 must be > 0");
 }
 
-TEST(Scene, RejectsBadNumbersNamingThePath) {
+GTEST_TEST(Scene, RejectsBadNumbersNamingThePath) {
   expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": "heavy")"),
                            "body.mass: \"heavy\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
   expect_error<ParseError>(example2_with(R"("mass": "1")", R"("mass": true)"),
                            "body.mass: true is not an exact number");
 }
 
-TEST(Scene, RejectsDofOutsideTwoAndThree) {
+GTEST_TEST(Scene, RejectsDofOutsideTwoAndThree) {
   expect_error<SceneError>(example2_with(R"("dof": 3)", R"("dof": 4)"),
                            "body.dof: 4 must be 2 (point mass) or 3 (planar rigid body)");
 }
 
-TEST(Scene, RejectsVectorsWhoseLengthDoesNotMatchDof) {
+GTEST_TEST(Scene, RejectsVectorsWhoseLengthDoesNotMatchDof) {
   std::string e1 = internal::paper::kExample1Scene;
   e1.replace(e1.find(R"("velocity": ["0", "0"])"), 22, R"("velocity": ["0", "0", "0"])");
   expect_error<SceneError>(e1, "body.velocity: [\"0\",\"0\",\"0\"] has 3 entries but dof 2 needs 2");
@@ -165,7 +167,7 @@ TEST(Scene, RejectsVectorsWhoseLengthDoesNotMatchDof) {
       "fixels[0].point: [\"-1\",\"0\",\"0\"] has 3 entries but a planar point or direction needs 2");
 }
 
-TEST(Scene, RejectsInertiaForAPointMass) {
+GTEST_TEST(Scene, RejectsInertiaForAPointMass) {
   std::string e1 = internal::paper::kExample1Scene;
   e1.replace(e1.find(R"("mass": "1")"), 11, R"("mass": "1", "inertia": "1")");
   expect_error<SceneError>(e1, "body.inertia: \"1\" is not allowed for a point mass (dof 2)");
@@ -174,7 +176,7 @@ TEST(Scene, RejectsInertiaForAPointMass) {
 // The fixel count and the rank of W_n are the one-step analyses' rules
 // (seating, LCP): a scene without them loads (fixture design needs parts
 // without fixels), and the analyses reject it with the same message.
-TEST(Scene, OneStepAnalysesRejectFixelCountDifferentFromDof) {
+GTEST_TEST(Scene, OneStepAnalysesRejectFixelCountDifferentFromDof) {
   const std::string two_fixels = example2_with(
       R"(,
     {"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"})",
@@ -184,7 +186,7 @@ TEST(Scene, OneStepAnalysesRejectFixelCountDifferentFromDof) {
   EXPECT_NO_THROW(parse_scene(two_fixels));
 }
 
-TEST(Scene, OneStepAnalysesRejectSingularFixtureNamingTheDependentFixel) {
+GTEST_TEST(Scene, OneStepAnalysesRejectSingularFixtureNamingTheDependentFixel) {
   // Fixel 2 at (0, 3) with normal (0, 1) has wrench (0, 1, 0), the same as
   // fixel 1's; sliding it along x to (5, -1) gives moment 5 and independence.
   const std::string independent = example2_with(R"("point": ["1", "-1"])", R"("point": ["5", "-1"])");
@@ -197,7 +199,7 @@ TEST(Scene, OneStepAnalysesRejectSingularFixtureNamingTheDependentFixel) {
                            true);
 }
 
-TEST(Scene, RejectsABoundaryThatIsNotAList) {
+GTEST_TEST(Scene, RejectsABoundaryThatIsNotAList) {
   expect_error<SceneError>(example2_with(R"("inertia": "1", )", R"("boundary": {}, )"),
                            "body.boundary: {} must be an array of curves");
   expect_error<SceneError>(example2_with(R"("inertia": "1", )", R"("boundary": [{"type": "circle"}], )"),
@@ -207,7 +209,7 @@ TEST(Scene, RejectsABoundaryThatIsNotAList) {
       "body.boundary[0].points[0][1]: \"x\" is not an exact number (use 3, -3/7, 0.1 or 1e-3)");
 }
 
-TEST(Scene, ParsesImpulsesAgainstDof) {
+GTEST_TEST(Scene, ParsesImpulsesAgainstDof) {
   EXPECT_EQ(parse_impulse("-1,-1,-1", 3)[2], Rational(-1));
   try {
     parse_impulse("1,2", 3);
@@ -218,7 +220,38 @@ TEST(Scene, ParsesImpulsesAgainstDof) {
   EXPECT_THROW(parse_impulse("1,x,2", 3), ParseError);
 }
 
-TEST(Scene, ReportsUnreadableFile) { EXPECT_THROW(load_scene("/nonexistent/scene.json"), InputError); }
+GTEST_TEST(Scene, ReportsUnreadableFile) { EXPECT_THROW(load_scene("/nonexistent/scene.json"), InputError); }
+
+}  // namespace
+}  // namespace fixel
+
+namespace fixel {
+namespace {
+
+GTEST_TEST(Scene, ValidateSceneAcceptsEveryBundledScene) {
+  for (const char* name : {"example1", "example2", "blob", "blob32", "nonunique"})
+    EXPECT_NO_THROW(validate_scene(test::scene_file(name))) << name;
+}
+
+GTEST_TEST(Scene, ValidateSceneNamesTheFieldOfACodeBuiltSceneWithTheJsonPath) {
+  Scene s = test::scene_file("example2");
+  s.fixels[1].gap = Rational(-1, 20);
+  try {
+    validate_scene(s);
+    FAIL() << "a negative gap was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "fixels[1].gap: -1/20 must be >= 0");
+  }
+  s = test::scene_file("example2");
+  s.fixels[0].n_A = {Rational(3, 5), Rational(3, 5)};
+  EXPECT_THROW(validate_scene(s), SceneError);
+  s = test::scene_file("example2");
+  s.fixels[2].mu_hi = s.fixels[2].mu - 1;  // hi below lo
+  EXPECT_THROW(validate_scene(s), SceneError);
+  s = test::scene_file("example2");
+  s.background_impulse = VectorQ::Zero(2);
+  EXPECT_THROW(validate_scene(s), SceneError);
+}
 
 }  // namespace
 }  // namespace fixel

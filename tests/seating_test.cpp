@@ -5,27 +5,25 @@
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/paper_reference.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
 namespace paper = internal::paper;
 
+// An exact vector from the paper's printed fractions.
 template <std::size_t N>
-VectorQ vec(const std::array<const char*, N>& a) {
+VectorQ parsed(const std::array<const char*, N>& a) {
   VectorQ v(static_cast<int>(N));
   for (std::size_t k = 0; k < N; ++k) v[static_cast<int>(k)] = parse_rational(a[k]);
   return v;
 }
 
-VectorQ v2(Rational x, Rational y) {
-  VectorQ out(2);
-  out << x, y;
-  return out;
-}
+using test::v2;
 
-TEST(SeatingSet, Example1ApexIsMinusPsiAndRaysAreMinusOneMu) {
+GTEST_TEST(SeatingSet, Example1ApexIsMinusPsiAndRaysAreMinusOneMu) {
   const SeatingSet S = seating_set(parse_scene(paper::kExample1Scene));
   // Paper eq. (26) prints +ψ; the unit mass must move by −ψ in h = 1.
   EXPECT_EQ(S.apex, v2(Rational(-3, 10), Rational(-1, 5)));
@@ -35,7 +33,7 @@ TEST(SeatingSet, Example1ApexIsMinusPsiAndRaysAreMinusOneMu) {
   EXPECT_EQ(S.sliding, (std::vector<int>{-1, 1}));
 }
 
-TEST(SeatingSet, Example1HFormIsTheTwoEdgesOfTheCone) {
+GTEST_TEST(SeatingSet, Example1HFormIsTheTwoEdgesOfTheCone) {
   const SeatingSet S = seating_set(parse_scene(paper::kExample1Scene));
   ASSERT_EQ(S.halfspaces.size(), 2u);
   // Independent check: p = apex − a (1, μ₁) − b (μ₂, 1) with a, b ≥ 0.
@@ -49,20 +47,20 @@ TEST(SeatingSet, Example1HFormIsTheTwoEdgesOfTheCone) {
     }
 }
 
-TEST(SeatingSet, ContainsPaperExample2Impulse) {
+GTEST_TEST(SeatingSet, ContainsPaperExample2Impulse) {
   const Scene scene = parse_scene(paper::kExample2Scene);
   const SeatingSet S = seating_set(scene);
-  EXPECT_TRUE(S.contains(vec(paper::kExample2Impulse)));
+  EXPECT_TRUE(S.contains(parsed(paper::kExample2Impulse)));
   EXPECT_EQ(S.sliding, (std::vector<int>{1, 1, 1}));
-  EXPECT_EQ(S.tangential_velocity, vec(paper::kExample2SlideSpeed));
+  EXPECT_EQ(S.tangential_velocity, parsed(paper::kExample2SlideSpeed));
 }
 
-TEST(SeatingSystem, Example2ReproducesThePrintedEq27TableExactly) {
+GTEST_TEST(SeatingSystem, Example2ReproducesThePrintedEq27TableExactly) {
   const Scene scene = parse_scene(paper::kExample2Scene);
   const SeatingSystem sys = seating_system(scene, seating_set(scene));
-  const VectorQ p = vec(paper::kExample2Impulse);
-  EXPECT_EQ(sys.linear_part(p), vec(paper::kExample2LinearExact));
-  EXPECT_EQ(sys.threshold(), vec(paper::kExample2ThresholdExact));
+  const VectorQ p = parsed(paper::kExample2Impulse);
+  EXPECT_EQ(sys.linear_part(p), parsed(paper::kExample2LinearExact));
+  EXPECT_EQ(sys.threshold(), parsed(paper::kExample2ThresholdExact));
   const std::vector<std::string> names = {"rho_f[0]+", "rho_f[1]+", "rho_f[2]+", "p_n[0]", "p_n[1]", "p_n[2]",
                                           "p_f[0]-",   "p_f[1]-",   "p_f[2]-",   "s[0]",   "s[1]",   "s[2]"};
   EXPECT_EQ(sys.y_names, names);
@@ -78,7 +76,7 @@ Scene sticking_scene() {
   return parse_scene(text);
 }
 
-TEST(SeatingSet, StickingContactGetsBothFrictionEdgesAsGenerators) {
+GTEST_TEST(SeatingSet, StickingContactGetsBothFrictionEdgesAsGenerators) {
   const Scene scene = sticking_scene();
   const SeatingSet S = seating_set(scene);
   EXPECT_EQ(S.sliding[0], 0);
@@ -111,10 +109,10 @@ class RandomScenes : public ::testing::Test {
     std::mt19937_64 rng(seed);
     std::vector<std::pair<Scene, SeatingSet>> out;
     for (int attempt = 0; attempt < 10 * count && static_cast<int>(out.size()) < count; ++attempt) {
-      Scene s = testing::random_scene(rng, dof);
+      Scene s = test::random_scene(rng, dof);
       try {
         SeatingSet S = seating_set(s);
-        if (exact_rank(S.generators, dof) < dof) continue;  // flat S: eq. (27) has no K⁻¹
+        if (internal::exact_rank(S.generators, dof) < dof) continue;  // flat S: eq. (27) has no K⁻¹
         out.emplace_back(std::move(s), std::move(S));
       } catch (const SceneError&) {
       }
@@ -150,8 +148,8 @@ TEST_F(RandomScenes, PointsOnAFacetAreInAndPointsTenToTheMinus30OutsideAreNot) {
       ASSERT_EQ(edge.size(), 2u);
       // Strictly positive weights keep the point off the facet's edges, so a
       // step of 10⁻³⁰ inward crosses no other facet.
-      const VectorQ on = S.apex + (testing::random_rational(rng, 0, 3, 7) + Rational(1, 7)) * edge[0] +
-                         (testing::random_rational(rng, 0, 3, 7) + Rational(1, 7)) * edge[1];
+      const VectorQ on = S.apex + (test::random_rational(rng, 0, 3, 7) + Rational(1, 7)) * edge[0] +
+                         (test::random_rational(rng, 0, 3, 7) + Rational(1, 7)) * edge[1];
       EXPECT_EQ(h.a.dot(on), h.c);
       EXPECT_TRUE(S.contains(on));
       EXPECT_FALSE(S.contains(VectorQ(on - eps * h.a)));
@@ -168,7 +166,7 @@ TEST_F(RandomScenes, VFormHFormAndEq27AgreeOnRandomPoints) {
     for (int k = 0; k < 50; ++k) {
       // Sample around the apex so that both outcomes occur.
       VectorQ p = S.apex;
-      for (int j = 0; j < 3; ++j) p[j] += testing::random_rational(rng, -2, 2, 9);
+      for (int j = 0; j < 3; ++j) p[j] += test::random_rational(rng, -2, 2, 9);
       const VectorQ lambda = generator_coordinates(S, p);
       const bool by_v = (lambda.array() >= Rational(0)).all();
       const VectorQ y = sys.y(p);
@@ -189,7 +187,7 @@ TEST_F(RandomScenes, PointMassScenesHaveTwoRayCones) {
   for (const auto& [scene, S] : make(30, 2, 14)) {
     ASSERT_EQ(S.halfspaces.size(), 2u);
     for (int k = 0; k < 20; ++k) {
-      const VectorQ p = S.apex + v2(testing::random_rational(rng, -2, 2, 9), testing::random_rational(rng, -2, 2, 9));
+      const VectorQ p = S.apex + v2(test::random_rational(rng, -2, 2, 9), test::random_rational(rng, -2, 2, 9));
       EXPECT_EQ(S.contains(p), (generator_coordinates(S, p).array() >= Rational(0)).all());
     }
   }

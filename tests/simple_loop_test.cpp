@@ -11,6 +11,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 
 namespace fixel {
 namespace {
@@ -42,37 +43,37 @@ std::string message(const std::vector<Curve>& curves) {
   return "no error";
 }
 
-TEST(SimpleLoop, ACrossingPolylineIsRejectedWithCurvesParametersAndPoint) {
+GTEST_TEST(SimpleLoop, ACrossingPolylineIsRejectedWithCurvesParametersAndPoint) {
   EXPECT_EQ(message({polyline({{0, 0}, {3, 0}, {3, 2}, {1, -1}, {0, 2}, {0, 0}})}),
             "body.boundary: body.boundary[0] at u = 2/9 and body.boundary[0] at u = 10/3 cross at (2/3, 0): "
             "the boundary crosses itself; a part's boundary must be a simple loop");
 }
 
-TEST(SimpleLoop, ACrossingBetweenTwoCurvesNamesBoth) {
+GTEST_TEST(SimpleLoop, ACrossingBetweenTwoCurvesNamesBoth) {
   const std::string m = message({polyline({{0, 0}, {4, 0}, {4, 4}}), polyline({{4, 4}, {2, -1}, {0, 4}, {0, 0}})});
   EXPECT_NE(m.find("body.boundary[0] at u = "), std::string::npos) << m;
   EXPECT_NE(m.find("body.boundary[1] at u = "), std::string::npos) << m;
   EXPECT_NE(m.find("crosses itself"), std::string::npos) << m;
 }
 
-TEST(SimpleLoop, AFigureEightBSplineIsRejectedAsCrossing) {
+GTEST_TEST(SimpleLoop, AFigureEightBSplineIsRejectedAsCrossing) {
   const std::string m = message({periodic_cubic({{-2, -1}, {-2, 1}, {2, -1}, {2, 1}})});
   EXPECT_NE(m.find("crosses itself"), std::string::npos) << m;
   EXPECT_NE(m.find("body.boundary[0] at u ≈ "), std::string::npos) << m;
   EXPECT_NE(m.find("near (0, 0)"), std::string::npos) << m;
 }
 
-TEST(SimpleLoop, AVertexOnAnotherEdgeTouchesItself) {
+GTEST_TEST(SimpleLoop, AVertexOnAnotherEdgeTouchesItself) {
   const std::string m = message({polyline({{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}, {0, 0}})});
   EXPECT_NE(m.find("meet at (2, 0): the boundary touches itself"), std::string::npos) << m;
 }
 
-TEST(SimpleLoop, AVertexVisitedTwiceTouchesItself) {
+GTEST_TEST(SimpleLoop, AVertexVisitedTwiceTouchesItself) {
   const std::string m = message({polyline({{0, 0}, {2, 0}, {2, 2}, {1, 1}, {3, 0}, {3, 3}, {0, 3}, {1, 1}, {0, 0}})});
   EXPECT_NE(m.find("touches itself"), std::string::npos) << m;
 }
 
-TEST(SimpleLoop, ASplineTangentToAnEdgeIsRejectedAsTouchingOrUndecided) {
+GTEST_TEST(SimpleLoop, ASplineTangentToAnEdgeIsRejectedAsTouchingOrUndecided) {
   // A quadratic bulge whose top touches the edge y = 1 from below at (1, 1).
   Curve bulge;
   bulge.type = Curve::Type::kBSpline;
@@ -85,13 +86,13 @@ TEST(SimpleLoop, ASplineTangentToAnEdgeIsRejectedAsTouchingOrUndecided) {
   EXPECT_NE(m.find("body.boundary[1]"), std::string::npos) << m;
 }
 
-TEST(SimpleLoop, SimpleLoopsWithSharedEndpointsAndCollinearEdgesAreAccepted) {
+GTEST_TEST(SimpleLoop, SimpleLoopsWithSharedEndpointsAndCollinearEdgesAreAccepted) {
   EXPECT_NO_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0, 1}, {0, 0}})}));
   EXPECT_NO_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {1, 1}}), polyline({{1, 1}, {0, 0}})}));
   EXPECT_NO_THROW(make_boundary({periodic_cubic({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})}));
 }
 
-TEST(SimpleLoop, EveryBundledSceneStillLoads) {
+GTEST_TEST(SimpleLoop, EveryBundledSceneStillLoads) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(FIXEL_SOURCE_DIR) + "/data/scenes")) {
     if (entry.path().extension() != ".json") continue;
@@ -101,7 +102,7 @@ TEST(SimpleLoop, EveryBundledSceneStillLoads) {
   EXPECT_GE(count, 9);
 }
 
-TEST(SimpleLoop, AHundredThousandEdgePolylineIsCheckedInWellUnderASecondOrTwo) {
+GTEST_TEST(SimpleLoop, AHundredThousandEdgePolylineIsCheckedInWellUnderASecondOrTwo) {
   // A star-shaped polygon: radius alternating 10^7 and 0.99·10^7, integer vertices.
   const int n = 100000;
   std::vector<Vec2> pts;

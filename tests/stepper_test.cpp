@@ -6,15 +6,16 @@
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
 #include "fixel/progress.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
-#include "test_scenes.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::vec;
+using test::vec;
 
-TEST(Simulate, PaperExample2ImpulseSeatsInOneStep) {
+GTEST_TEST(Simulate, PaperExample2ImpulseSeatsInOneStep) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const Simulation sim = simulate(scene, {vec({-1, -1, -1})}, 1);
   ASSERT_EQ(sim.steps.size(), 1u);
@@ -25,12 +26,12 @@ TEST(Simulate, PaperExample2ImpulseSeatsInOneStep) {
   EXPECT_EQ(sim.steps[0].q, seating_set(scene).nu_plus);
 }
 
-TEST(Simulate, AnImpulseOutsideSDoesNotSeat) {
+GTEST_TEST(Simulate, AnImpulseOutsideSDoesNotSeat) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   EXPECT_FALSE(simulate(scene, {vec({1, 1, 1})}, 1).seated);
 }
 
-TEST(Simulate, StateCarriesOverBetweenStepsConsistently) {
+GTEST_TEST(Simulate, StateCarriesOverBetweenStepsConsistently) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const Simulation sim = simulate(scene, {vec({Rational(-1, 2), Rational(-1, 4), 0})}, 4);
   ASSERT_EQ(sim.steps.size(), 4u);
@@ -48,18 +49,18 @@ TEST(Simulate, StateCarriesOverBetweenStepsConsistently) {
   }
 }
 
-TEST(Simulate, RejectsBadStepsAndImpulseLength) {
+GTEST_TEST(Simulate, RejectsBadStepsAndImpulseLength) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   try {
     simulate(scene, {vec({-1, -1, -1})}, 0);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "--steps: 0 must be >= 1");
+    EXPECT_EQ(std::string(e.what()), "simulate(steps): 0 must be >= 1");
   }
   EXPECT_THROW(simulate(scene, {vec({-1, -1})}, 1), InputError);
 }
 
-TEST(Simulate, ACancelledRunStopsAtTheNextStepAndSaysWhatWasDone) {
+GTEST_TEST(Simulate, ACancelledRunStopsAtTheNextStepAndSaysWhatWasDone) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   RunControl control;
   control.cancel = true;
@@ -72,7 +73,7 @@ TEST(Simulate, ACancelledRunStopsAtTheNextStepAndSaysWhatWasDone) {
   }
 }
 
-TEST(Simulate, ARunPastItsDeadlineStopsAndReportsProgressOnTheWay) {
+GTEST_TEST(Simulate, ARunPastItsDeadlineStopsAndReportsProgressOnTheWay) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   RunControl control;
   control.deadline = RunControl::Clock::now() + std::chrono::milliseconds(300);

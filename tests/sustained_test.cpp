@@ -10,14 +10,15 @@
 #include "fixel/physics.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
-using testing::random_rational;
-using testing::scene_file;
-using testing::v3;
+using test::random_rational;
+using test::scene_file;
+using test::v3;
 
 const Rational kHair = parse_rational("1e-30");
 

@@ -6,9 +6,11 @@
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/lcp.h"
 #include "fixel/scene.h"
-#include "test_scenes.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
@@ -21,22 +23,22 @@ VectorQ exact_wrench(const BezierPiece& seg, const Rational& s, const Vec2& com,
 BezierPiece random_piece(std::mt19937_64& rng, int degree) {
   BezierPiece piece{0, Rational(0), Rational(1), {}};
   for (int i = 0; i <= degree; ++i)
-    piece.control.push_back({testing::random_rational(rng, -2, 2, 9), testing::random_rational(rng, -2, 2, 9)});
+    piece.control.push_back({test::random_rational(rng, -2, 2, 9), test::random_rational(rng, -2, 2, 9)});
   return piece;
 }
 
 // Containment: every exact wrench of every family at many rational points
 // of many random segments lies in the segment's cone, for both methods.
-TEST(WrenchCone, HoldsEveryContactWrenchOfRandomSegments) {
+GTEST_TEST(WrenchCone, HoldsEveryContactWrenchOfRandomSegments) {
   std::mt19937_64 rng(53);
   int checked = 0, pointed = 0;
   for (int trial = 0; trial < 300; ++trial) {
     BezierPiece piece = random_piece(rng, 1 + trial % 3 + (trial % 5 == 0 ? 2 : 0));
     // Sub-segments of random pieces, as subdivision produces them.
-    const Rational a = testing::random_rational(rng, 0, 1, 8),
-                   b = a + Rational(1, 8) + testing::random_rational(rng, 0, 1, 16) / 2;
+    const Rational a = test::random_rational(rng, 0, 1, 8),
+                   b = a + Rational(1, 8) + test::random_rational(rng, 0, 1, 16) / 2;
     if (b < 1) piece = piece.restrict_to(a, b);
-    const Vec2 com{testing::random_rational(rng, -1, 1, 5), testing::random_rational(rng, -1, 1, 5)};
+    const Vec2 com{test::random_rational(rng, -1, 1, 5), test::random_rational(rng, -1, 1, 5)};
     const Rational mu = Rational(trial % 4, 5);
     const SegmentBounds bounds = segment_bounds(piece);
     if (!bounds.pointed) continue;
@@ -46,11 +48,11 @@ TEST(WrenchCone, HoldsEveryContactWrenchOfRandomSegments) {
         const auto cone = segment_wrench_cone(bounds, com, family, mu, method);
         if (!cone) continue;  // friction widened the directions to π
         for (int k = 0; k <= 16; ++k) {
-          const Rational s = Rational(k, 16) + (k < 16 ? testing::random_rational(rng, 0, 1, 97) / 16 : Rational(0));
+          const Rational s = Rational(k, 16) + (k < 16 ? test::random_rational(rng, 0, 1, 97) / 16 : Rational(0));
           const Vec2 T = piece.derivative(s);
           std::vector<Vec2> dirs;
           if (family == EdgeFamily::kWholeCone) {
-            const Rational lambda = mu * testing::random_rational(rng, -1, 1, 13);
+            const Rational lambda = mu * test::random_rational(rng, -1, 1, 13);
             const Vec2 n = push_direction(T, EdgeFamily::kNormal, mu), t{-n.y, n.x};
             dirs = {push_direction(T, EdgeFamily::kMinus, mu),
                     push_direction(T, EdgeFamily::kPlus, mu),
@@ -71,12 +73,12 @@ TEST(WrenchCone, HoldsEveryContactWrenchOfRandomSegments) {
   EXPECT_GT(checked, 20000);
 }
 
-TEST(WrenchCone, TightConeLiesInsideThePaperCone) {
+GTEST_TEST(WrenchCone, TightConeLiesInsideThePaperCone) {
   std::mt19937_64 rng(59);
   int compared = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const BezierPiece piece = random_piece(rng, 3);
-    const Vec2 com{testing::random_rational(rng, -1, 1, 5), testing::random_rational(rng, -1, 1, 5)};
+    const Vec2 com{test::random_rational(rng, -1, 1, 5), test::random_rational(rng, -1, 1, 5)};
     for (auto family : {EdgeFamily::kNormal, EdgeFamily::kPlus, EdgeFamily::kWholeCone}) {
       const auto tight = segment_wrench_cone(piece, com, family, Rational(1, 5), ConeMethod::kTight);
       const auto paper = segment_wrench_cone(piece, com, family, Rational(1, 5), ConeMethod::kPaper);
@@ -91,7 +93,7 @@ TEST(WrenchCone, TightConeLiesInsideThePaperCone) {
 // The paper's cone without the cos(Δ/2) correction does not hold the paper's
 // own bound {unit d in [θ_s, θ_e]} × [X_min, X_max] when all moments are
 // positive: the mid-arc direction at X_min is outside. Found exactly.
-TEST(WrenchCone, PaperConeAsPrintedIsNotConservativeWhenMomentsShareASign) {
+GTEST_TEST(WrenchCone, PaperConeAsPrintedIsNotConservativeWhenMomentsShareASign) {
   // A quarter arc whose inward normals sweep (−1, 0) → (0, −1), with the
   // centre of mass placed so that every moment is positive.
   const BezierPiece piece{0, Rational(0), Rational(1), {{10, 0}, {10, 10}, {0, 10}}};
@@ -128,7 +130,7 @@ TEST(WrenchCone, PaperConeAsPrintedIsNotConservativeWhenMomentsShareASign) {
   EXPECT_TRUE(corrected->contains(w));
 }
 
-TEST(WrenchCone, Fig6SegmentConeHoldsTheDenselySampledFrictionCone) {
+GTEST_TEST(WrenchCone, Fig6SegmentConeHoldsTheDenselySampledFrictionCone) {
   const Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/fig6.json");
   const BezierPiece& seg = scene.body.boundary->pieces.front();  // the four leftmost control points
   ASSERT_EQ(seg.u0, Rational(3));
@@ -145,7 +147,7 @@ TEST(WrenchCone, Fig6SegmentConeHoldsTheDenselySampledFrictionCone) {
   }
 }
 
-TEST(WrenchCone, RepeatedControlPointsAreFine) {
+GTEST_TEST(WrenchCone, RepeatedControlPointsAreFine) {
   const BezierPiece piece{0, Rational(0), Rational(1), {{0, 0}, {0, 0}, {1, 1}, {2, 1}}};
   const auto cone = segment_wrench_cone(piece, {0, 0}, EdgeFamily::kNormal, 0, ConeMethod::kTight);
   ASSERT_TRUE(cone);
@@ -154,7 +156,7 @@ TEST(WrenchCone, RepeatedControlPointsAreFine) {
                                             push_direction(piece.derivative(Rational(k, 8)), EdgeFamily::kNormal, 0))));
 }
 
-TEST(WrenchCone, CuspAndFullTurnSegmentsNeedSplitting) {
+GTEST_TEST(WrenchCone, CuspAndFullTurnSegmentsNeedSplitting) {
   const BezierPiece cusp{0, Rational(0), Rational(1), {{0, 0}, {1, 1}, {0, 1}, {1, 0}}};
   EXPECT_FALSE(segment_bounds(cusp).pointed);
   EXPECT_FALSE(segment_wrench_cone(cusp, {0, 0}, EdgeFamily::kNormal, 0, ConeMethod::kTight));
@@ -162,7 +164,7 @@ TEST(WrenchCone, CuspAndFullTurnSegmentsNeedSplitting) {
   EXPECT_FALSE(segment_bounds(loop).pointed);
 }
 
-TEST(WrenchCone, StraightCubicHasAZeroWidthDirectionCone) {
+GTEST_TEST(WrenchCone, StraightCubicHasAZeroWidthDirectionCone) {
   const BezierPiece line{0, Rational(0), Rational(1), {{0, 0}, {1, 0}, {2, 0}, {4, 0}}};
   const auto cone = segment_wrench_cone(line, {1, 1}, EdgeFamily::kNormal, 0, ConeMethod::kTight);
   ASSERT_TRUE(cone);
@@ -173,15 +175,15 @@ TEST(WrenchCone, StraightCubicHasAZeroWidthDirectionCone) {
   EXPECT_TRUE(segment_wrench_cone(line, {1, 1}, EdgeFamily::kNormal, 0, ConeMethod::kPaper));
 }
 
-TEST(WrenchCone, AllZeroLegsIsADegenerateError) {
+GTEST_TEST(WrenchCone, AllZeroLegsIsADegenerateError) {
   const BezierPiece point{0, Rational(0), Rational(1), {{1, 1}, {1, 1}, {1, 1}}};
   EXPECT_THROW(segment_bounds(point), SceneError);
 }
 
-TEST(CornerCone, HoldsTheWholeFanOfNormalsAtAPolylineCorner) {
+GTEST_TEST(CornerCone, HoldsTheWholeFanOfNormalsAtAPolylineCorner) {
   // Corner (2, 0) of the polyline (0,0) → (2,0) → (2,2): normals (0,1) then (−1,0).
   const Vec2 r{2, 0}, n_in{0, 1}, n_out{-1, 0};
-  const WrenchCone cone = corner_cone(r, n_in, n_out);
+  const WrenchCone cone = internal::corner_cone(r, n_in, n_out);
   for (int k = 0; k <= 10; ++k) {
     const Vec2 d{-Rational(k, 10), 1 - Rational(k, 10)};
     EXPECT_TRUE(cone.contains(contact_wrench(r, d, 3)));
@@ -189,10 +191,10 @@ TEST(CornerCone, HoldsTheWholeFanOfNormalsAtAPolylineCorner) {
   EXPECT_FALSE(cone.contains(contact_wrench(r, {1, 1}, 3)));
 }
 
-TEST(UnitDirection, IsExactlyUnitAndOnTheRequestedSide) {
+GTEST_TEST(UnitDirection, IsExactlyUnitAndOnTheRequestedSide) {
   std::mt19937_64 rng(61);
   for (int trial = 0; trial < 200; ++trial) {
-    const Vec2 d{testing::random_rational(rng, -3, 3, 11), testing::random_rational(rng, -3, 3, 11)};
+    const Vec2 d{test::random_rational(rng, -3, 3, 11), test::random_rational(rng, -3, 3, 11)};
     if (d.x == 0 && d.y == 0) continue;
     for (bool cw : {true, false}) {
       const Vec2 u = internal::unit_direction_outward(d, cw);

@@ -3,6 +3,7 @@
 #include <fixel/error.h>
 #include <fixel/region.h>
 #include <fixel/scene.h>
+#include <fixel/scene_json.h>
 #include <fixel/seating.h>
 
 #include <iostream>

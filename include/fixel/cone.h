@@ -25,9 +25,6 @@ struct Halfspace {
 /// or 3 or a ray has the wrong length.
 std::vector<VectorQ> cone_facet_normals(const std::vector<VectorQ>& rays, int dim);
 
-/// Rank of the rays (exact).
-int exact_rank(const std::vector<VectorQ>& rays, int dim);
-
 /// `v` scaled by a positive rational to a primitive integer vector (entries
 /// with gcd 1); the zero vector is returned unchanged.
 VectorQ primitive_direction(const VectorQ& v);

@@ -10,6 +10,7 @@
 #include "fixel/outcomes.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/seat_report.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
 #include "fixel/sustained.h"
@@ -24,13 +25,14 @@ namespace fixel {
 /// "open_fixel", "closed", "strict"}], "pieces": [{"closed", "strict"}],
 /// "lost_fraction"} and, with an impulse, "guaranteed". With `stable`:
 /// "stability_cone" and "seat_and_stay" (H-forms) and, with an impulse,
-/// "seat_and_stay_contains". Numbers are exact strings.
-std::string seat_json(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                      const GuaranteedSet* G = nullptr, bool stable = false);
+/// "seat_and_stay_contains". Numbers are exact strings. `report` comes from
+/// seat_report(scene, S, impulse, G, stable) with the same G.
+std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport& report,
+                      const GuaranteedSet* G = nullptr);
 
 /// The same content as a readable report.
-std::string seat_text(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
-                      const GuaranteedSet* G = nullptr, bool stable = false);
+std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport& report,
+                      const GuaranteedSet* G = nullptr);
 
 /// Writes into directory `dir` (created if needed): `seating_set.off` (S
 /// clipped to seating_dump_box(S, length)); with G, `guaranteed_<k>.off` for
@@ -59,20 +61,19 @@ std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::v
 /// "resolution", "pusher_mu", "intervals": [{"curve", "u0", "u1", "status",
 /// "half_line", "magnitudes": {"min", "min_inclusive", "max",
 /// "max_inclusive"} | null}], "counts", "stats": {...}}.
-std::string region_json(const Scene& scene, const Region& region, const std::string& method,
-                        const std::optional<Rational>& resolution, const Rational& pusher_mu);
+/// The method, resolution and pusher μ are the ones the region records.
+std::string region_json(const Scene& scene, const Region& region);
 /// The same as a readable report.
-std::string region_text(const Scene& scene, const Region& region, const std::string& method,
-                        const std::optional<Rational>& resolution, const Rational& pusher_mu);
+std::string region_text(const Scene& scene, const Region& region);
 
 /// `fixel seat --sustained --json`: {"scene", "seated_pose": {"exact",
 /// "approx", "algebraic", "enclosure", "theta_abs", "at_scene_pose",
 /// "contacts"}, "sustained": {"cone", "jam_cones", "pieces", "empty",
 /// "empty_reason"?, "strongly_stable", "mu"}} and, with a wrench, "wrench",
 /// "contains" and "why_not" (docs/formats.md).
-std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench);
+std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench);
 /// The same as a readable report.
-std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<VectorQ>& wrench);
+std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench);
 /// Writes J's cones into `dir` as OFF files clipped to [−1, 1]³ (display:
 /// rows rounded to double): `sustained_cone.off`, `sustained_jam_<i>_<j>.off`
 /// and `sustained_piece_<k>.off`. Returns the written paths. Throws

@@ -67,7 +67,13 @@ struct Region {
   ConeMethod cone = ConeMethod::kTight;  ///< Segment cone used.
   std::optional<Rational> resolution;    ///< Parameter width at which splitting stopped (none for samples).
   Rational pusher_mu;                    ///< Pusher friction used.
+  std::string target = "S";              ///< The target's name: "S", "G" or "J".
+  bool sampled = false;                  ///< From sample_region (point tests), not subdivision.
 };
+
+/// How the region was computed, as reports name it: "sample" or the cone
+/// method ("tight", "paper").
+std::string method_of(const Region& region);
 
 /// Options of compute_region.
 struct RegionOptions {

@@ -27,6 +27,9 @@ class RegionTarget {
   /// Which push model the target answers for ("step", "sustained").
   virtual const char* push_model() const = 0;
 
+  /// The target's name in reports: "S", "G" or "J".
+  virtual const char* name() const = 0;
+
   /// Every ray of cone(gens) (generators with force parts in
   /// cone(d_first, d_last)) reaches the target. On success `detail` may get
   /// the certified magnitudes and the half_line flag.

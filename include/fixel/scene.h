@@ -62,16 +62,18 @@ struct Scene {
   Vec2 tangent(int i) const;
 };
 
-/// Parses and validates a scene from JSON text. `source` names the input in
-/// messages. Throws ParseError for malformed text or numbers, SceneError for
-/// invalid values (each naming the JSON path and value), UnsupportedError for
-/// valid requests not handled yet.
-Scene parse_scene(const std::string& json_text, const std::string& source = "scene");
+/// Checks of a scene's values, shared by the JSON reader and by code that
+/// builds a Scene itself. Each throws SceneError naming `path` (the field's
+/// JSON path, e.g. `fixels[1].gap`) and the value.
+void check_positive(const Rational& v, const std::string& path);
+void check_nonnegative(const Rational& v, const std::string& path);
+/// n_A must be exactly of unit length (a rational point on the unit circle).
+void check_unit_normal(const Vec2& n_A, const std::string& path);
 
-/// Reads and parses a scene file. Throws InputError if it cannot be read.
-Scene load_scene(const std::string& path);
-
-/// Parses an impulse given as "px,py[,pθ]" and checks its length against dof.
-VectorQ parse_impulse(const std::string& text, int dof, const std::string& field = "--impulse");
+/// Every value check on a scene built in code: h > 0, dof 2 or 3, mass and
+/// inertia > 0, vector lengths equal to dof, unit normals, friction and
+/// gaps >= 0. Throws SceneError as above. (The one-step rules n_c == dof
+/// and W_n nonsingular belong to the analyses that need them.)
+void validate_scene(const Scene& scene);
 
 }  // namespace fixel

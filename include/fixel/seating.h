@@ -16,7 +16,11 @@ namespace fixel {
 
 /// S = {apex + Σ λ_k rays_k : λ ≥ 0}, a translated polyhedral cone in impulse
 /// space (N·s for the force rows, N·m·s for the moment row), kept in both
-/// V-form (apex, rays) and H-form (halfspaces).
+/// V-form (apex, rays) and H-form (halfspaces). Frames: every impulse,
+/// velocity and generator is in the world frame A, in generalised
+/// coordinates (x, y[, θ]) with moments about the centre of mass Cm; the
+/// fields keep the paper's symbols (ν⁺, g_i, ...) instead of Drake monograms,
+/// since all of them share that one frame.
 struct SeatingSet {
   int dof = 3;
   VectorQ nu_plus;              ///< ν^{ℓ+1} = −W_n^{-T} Ψ / h, the seating velocity.

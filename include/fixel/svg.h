@@ -19,16 +19,16 @@ namespace fixel {
 /// and the wrench directions on the unit sphere in a longitude/latitude
 /// projection (right panel; docs/cli.md). Throws InputError if the file
 /// cannot be written.
-void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
-                      const std::string& method, const Rational& resolution, const Rational& pusher_mu);
+/// `region` must come from compute_region (it records its cone method,
+/// resolution, pusher μ and target).
+void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region);
 
 /// The same picture for the sustained-push region against J: the seated
 /// pose as a ghost outline beside the scene pose, and the wrench panel
 /// shaded by J and by the jam cones. Throws InputError if the file cannot be
 /// written.
 void write_sustained_region_svg(const std::string& path, const Scene& scene, const SustainedSet& J,
-                                const Region& region, const std::string& method, const Rational& resolution,
-                                const Rational& pusher_mu);
+                                const Region& region);
 
 /// Draws the slice p_θ = theta of S and G (dof 3): impulses in G, in S but
 /// not in G, and outside S, each decided exactly on a display grid, with the

@@ -48,6 +48,9 @@ enum class ConeMethod {
   kPaper,  ///< The paper's §4.3 cone, made exact and conservative (docs/theory.md §7).
 };
 
+/// "tight" or "paper", as on the command line.
+const char* to_string(ConeMethod method);
+
 /// A polyhedral cone in wrench space (f_x, f_y, moment about the centre of
 /// mass), as generators and as exact facet normals (w in cone iff a·w ≥ 0
 /// for every facet a).
@@ -69,26 +72,8 @@ std::optional<WrenchCone> segment_wrench_cone(const BezierPiece& segment, const 
 std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& bounds, const Vec2& p_AoCm_A, EdgeFamily family,
                                               const Rational& mu, ConeMethod method, bool with_facets = true);
 
-/// The exact wrench cone of a corner point r (lever arm) whose push
-/// directions fan from d_in to d_out (the angle between them < π):
-/// generators (d_in, r ⊗ d_in) and (d_out, r ⊗ d_out).
-WrenchCone corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out);
-
 /// Extreme directions of non-zero planar vectors: every v is in
 /// cone(first, last). False when they do not fit in a cone of angle < π.
 bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last);
-
-namespace internal {
-// A rational c in [0, cos(Δ/2)], Δ the angle between non-zero a and b (< π).
-Rational cos_half_angle_lower(const Vec2& a, const Vec2& b);
-// Rational points on the unit circle near the direction of d, on its
-// clockwise (cw = true) or counter-clockwise side: cross(u, d) >= 0 or
-// cross(d, u) >= 0.
-Vec2 unit_direction_outward(const Vec2& d, bool cw);
-// A rational q >= sqrt(x), x >= 0.
-Rational sqrt_upper(const Rational& x);
-// A rational q in [0, sqrt(x)], x >= 0.
-Rational sqrt_lower(const Rational& x);
-}  // namespace internal
 
 }  // namespace fixel

@@ -245,10 +245,7 @@ def to_svg(path, result, theta=None, impulse=None):
         _fixel.write_guaranteed_svg(str(path), S.scene._impl, S._impl, result._impl, text(theta, "theta"), p)
         return
     r = _expect(result, Region, "region")
-    _fixel.write_region_svg(
-        str(path), r.scene._impl, r.seating._impl, r._impl, r.cone, text(r.resolution, "resolution"),
-        text(r.pusher_mu, "pusher_mu"),
-    )  # fmt: skip
+    _fixel.write_region_svg(str(path), r.scene._impl, r.seating._impl, r._impl)
 
 
 class SustainedSet:

@@ -90,8 +90,7 @@ class Region:
 
     def to_json(self):
         """The document of `fixel region --json` (same C++ writer)."""
-        res = None if self.resolution is None else text(self.resolution, "resolution")
-        doc = _fixel.region_json(self.scene._impl, self._impl, self.cone, res, text(self.pusher_mu, "pusher_mu"))
+        doc = _fixel.region_json(self.scene._impl, self._impl)
         return json.loads(doc)
 
 

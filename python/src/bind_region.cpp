@@ -89,17 +89,14 @@ void bind_region(py::module_& m) {
     py::gil_scoped_release release;
     return std::make_shared<Region>(sample_region(checked(scene, "scene"), checked(S, "seating"), points, mu, g));
   });
-  m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r, const std::string& method,
-                          const std::optional<std::string>& resolution, const std::string& pusher_mu) {
-    return region_json(checked(scene, "scene"), checked(r, "region"), method,
-                       optional_rational(resolution, "resolution"), parse_rational(pusher_mu, "pusher_mu"));
+  m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r) {
+    return region_json(checked(scene, "scene"), checked(r, "region"));
   });
-  m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r,
-                               const std::string& method, const std::string& resolution, const std::string& pusher_mu) {
-    const Rational res = parse_rational(resolution, "resolution"), mu = parse_rational(pusher_mu, "pusher_mu");
-    py::gil_scoped_release release;
-    write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"), method, res, mu);
-  });
+  m.def("write_region_svg",
+        [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r) {
+          py::gil_scoped_release release;
+          write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"));
+        });
   m.def("write_guaranteed_svg",
         [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const py::object& G,
            const std::string& theta, const std::optional<std::vector<std::string>>& impulse) {

@@ -8,6 +8,7 @@
 #include "bindings.h"
 #include "fixel/curve.h"
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 
 namespace fixel::python {
 namespace {

@@ -3,6 +3,7 @@
 // that rank and invertibility count only pivots that are exactly zero.
 
 #include <Eigen/LU>
+#include <vector>
 
 #include "fixel/rational.h"
 
@@ -13,5 +14,8 @@ inline Eigen::FullPivLU<MatrixQ> exact_lu(const MatrixQ& A) {
   lu.setThreshold(Rational(0));
   return lu;
 }
+
+// Rank of the rays (exact); each ray must have `dim` entries.
+int exact_rank(const std::vector<VectorQ>& rays, int dim);
 
 }  // namespace fixel::internal

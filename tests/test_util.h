@@ -1,12 +1,15 @@
 #pragma once
-// Seeded random scenes with exact unit normals, shared by the tests.
+// Helpers shared by the tests (namespace fixel::test, so that GoogleTest's
+// ::testing stays visible): exact literals, bundled scenes, and seeded
+// random scenes with exact unit normals.
 
 #include <random>
 #include <string>
 
 #include "fixel/scene.h"
+#include "fixel/scene_json.h"
 
-namespace fixel::testing {
+namespace fixel::test {
 
 // An exact vector or matrix from literals.
 inline VectorQ vec(std::initializer_list<Rational> xs) {
@@ -25,6 +28,7 @@ inline MatrixQ mat(std::initializer_list<std::initializer_list<int>> rows) {
   }
   return m;
 }
+inline VectorQ v2(Rational a, Rational b) { return vec({a, b}); }
 inline VectorQ v3(Rational a, Rational b, Rational c) { return vec({a, b, c}); }
 
 // A bundled scene from data/scenes/ by name.
@@ -75,14 +79,14 @@ inline Scene random_scene(std::mt19937_64& rng, int dof = 3, int max_mu_tenths =
   return s;
 }
 
-}  // namespace fixel::testing
+}  // namespace fixel::test
 
 #include <cmath>
 #include <memory>
 
 #include "fixel/curve.h"
 
-namespace fixel::testing {
+namespace fixel::test {
 
 // A random closed uniform cubic B-spline blob around the origin (radii in
 // [1, 2], counter-clockwise), with three fixels in the pattern of the
@@ -139,4 +143,4 @@ inline Scene random_blob_scene(std::mt19937_64& rng, const Rational& pusher_mu =
   return s;
 }
 
-}  // namespace fixel::testing
+}  // namespace fixel::test

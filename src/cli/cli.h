@@ -1,0 +1,60 @@
+// Shared pieces of the command line: exit codes, run control, and one
+// `add_*` per subcommand. Each registers its options on the app and returns
+// the function that runs it; src/cli only parses arguments and calls the
+// library.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+
+#include "fixel/progress.h"
+#include "fixel/rational.h"
+
+namespace fixel::cli {
+
+// Exit codes: 0 success, 1 a verification failed, 2 bad input or usage,
+// 3 a bug in fixel, 4 --max-seconds reached, 130 interrupted (Ctrl-C).
+constexpr int kExitBadInput = 2;
+constexpr int kExitBug = 3;
+constexpr int kExitTimeLimit = 4;
+constexpr int kExitInterrupted = 130;
+
+/// A registered subcommand and the function that runs it (returns the exit code).
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+/// `--max-seconds` and `--quiet`, for the commands whose length comes from input.
+struct RunOptions {
+  double max_seconds = 0;
+  bool quiet = false;
+};
+void add_run_options(CLI::App* cmd, RunOptions& options);
+
+/// Arms the run's control block: deadline, progress on a terminal, Ctrl-C.
+void arm_run_control(const RunOptions& options);
+/// The run's control block (polled by the library's long loops).
+RunControl* run_control();
+/// Ends a progress line, if one was shown.
+void end_progress();
+
+/// Throws InputError naming `flag` unless `path` can be written (its folder
+/// exists and is writable, and the file, if it exists, is writable); run
+/// before any output, so that a bad path never follows a printed report.
+void check_writable(const std::string& path, const std::string& flag);
+
+/// A pusher μ, or an interval "lo,hi", judged at its upper end.
+Rational parse_pusher_mu(const std::string& text);
+
+Command add_seat(CLI::App& app);
+Command add_dump(CLI::App& app);
+Command add_simulate(CLI::App& app);
+Command add_solutions(CLI::App& app);
+Command add_region(CLI::App& app);
+Command add_sample(CLI::App& app);
+Command add_push(CLI::App& app);
+Command add_verify(CLI::App& app);
+
+}  // namespace fixel::cli

@@ -1,0 +1,84 @@
+// Progress, deadline and Ctrl-C for the long commands.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli.h"
+#include "fixel/error.h"
+
+namespace fixel::cli {
+namespace {
+
+// The run's control block; the SIGINT handler only sets its lock-free flag.
+RunControl g_run;
+bool g_progress_shown = false;
+
+extern "C" void on_sigint(int) {
+  g_run.cancel.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
+}
+
+// Progress on stderr, rewriting one line (only installed on a terminal).
+void show_progress(const char* task, long done, long total, const char* unit) {
+  const double seconds = std::chrono::duration<double>(RunControl::Clock::now() - g_run.start).count();
+  if (total > 0)
+    std::fprintf(stderr, "\r%s: %ld of %ld %s (%.1f%%), %.0f s", task, done, total, unit, 100.0 * done / total,
+                 seconds);
+  else
+    std::fprintf(stderr, "\r%s: %ld %s, %.0f s", task, done, unit, seconds);
+  std::fflush(stderr);
+  g_progress_shown = true;
+}
+
+}  // namespace
+
+void add_run_options(CLI::App* cmd, RunOptions& options) {
+  cmd->add_option("--max-seconds", options.max_seconds, "Stop with exit 4 after this many seconds (default: no limit)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--quiet", options.quiet, "No progress line on stderr (shown on a terminal after 1 s)");
+}
+
+void arm_run_control(const RunOptions& options) {
+  const double max_seconds = options.max_seconds;
+  if (max_seconds < 0 || !std::isfinite(max_seconds))
+    throw InputError("--max-seconds", std::to_string(max_seconds), "must be > 0");
+  if (max_seconds > 0)
+    g_run.deadline = g_run.start + std::chrono::duration_cast<RunControl::Clock::duration>(
+                                       std::chrono::duration<double>(max_seconds));
+  if (!options.quiet && isatty(STDERR_FILENO)) g_run.on_progress = show_progress;
+  std::signal(SIGINT, on_sigint);
+}
+
+RunControl* run_control() { return &g_run; }
+
+void end_progress() {
+  if (g_progress_shown) std::fputs("\n", stderr);
+  g_progress_shown = false;
+}
+
+void check_writable(const std::string& path, const std::string& flag) {
+  if (path.empty()) return;
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) throw InputError(flag, path, "cannot be written: no such folder");
+  if (std::filesystem::is_directory(p, ec)) throw InputError(flag, path, "cannot be written: it is a folder");
+  const bool exists = std::filesystem::exists(p, ec);
+  if (access(exists ? path.c_str() : dir.c_str(), W_OK) != 0) throw InputError(flag, path, "cannot be written");
+}
+
+// The region shrinks as the pusher's μ grows (docs/theory.md §10), so an
+// interval is judged at its upper end.
+Rational parse_pusher_mu(const std::string& text) {
+  const auto mu = parse_rational_list(text, "--pusher-mu");
+  if (mu.size() > 2) throw InputError("--pusher-mu", text, "must be M or lo,hi");
+  if (mu.size() == 2 && mu[1] < mu[0]) throw InputError("--pusher-mu", text, "has lo > hi");
+  if (mu[0] < 0) throw InputError("--pusher-mu", text, "must be >= 0");
+  return mu.back();
+}
+
+}  // namespace fixel::cli
