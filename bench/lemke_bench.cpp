@@ -1,5 +1,7 @@
-// Exact lexicographic Lemke against a double-precision Lemke (and Siconos's
-// lcp_lexicolemke when available) on the seating LCPs of random scenes.
+// Exact lexicographic Lemke (forced exact, and filtered: interval tableau with
+// the exact tableau as fallback) against a double-precision Lemke and
+// Siconos's lcp_lexicolemke (when available) on the seating LCPs of random
+// scenes.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include "../tests/test_util.h"
 #include "bench_util.h"
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/lcp.h"
 #include "fixel/lemke.h"
@@ -184,6 +187,7 @@ int report_disagreements(const char* name, Solver solve) {
 
 void BM_ExactLemke(benchmark::State& state) {
   const auto& all = problems();
+  fixel::ForceExactScope exact;
   std::size_t k = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(fixel::solve_lcp_lemke(all[k].B, all[k].b));
@@ -191,6 +195,39 @@ void BM_ExactLemke(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ExactLemke)->Repetitions(5)->ReportAggregatesOnly(true);
+
+void BM_FilteredLemke(benchmark::State& state) {
+  const auto& all = problems();
+  fixel::ForceExactScope filtered(false);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fixel::solve_lcp_lemke(all[k].B, all[k].b));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_FilteredLemke)->Repetitions(5)->ReportAggregatesOnly(true);
+
+// Filtered against forced exact on all problems: status, pivots, w and z.
+void report_filtered_agreement() {
+  int differ = 0;
+  fixel::reset_filter_stats();
+  for (const auto& pr : problems()) {
+    fixel::LemkeResult f, e;
+    {
+      fixel::ForceExactScope filtered(false);
+      f = fixel::solve_lcp_lemke(pr.B, pr.b);
+    }
+    {
+      fixel::ForceExactScope exact;
+      e = fixel::solve_lcp_lemke(pr.B, pr.b);
+    }
+    differ += f.status != e.status || f.pivots != e.pivots || f.w != e.w || f.z != e.z;
+  }
+  const auto c = fixel::filter_stats().at(fixel::FilterSite::kLemke);
+  std::cout << "filtered Lemke: " << differ << " of " << problems().size()
+            << " problems differ from forced exact Lemke; interval path certified " << c.certified
+            << ", exact fallback " << c.fallbacks << "\n";
+}
 
 void BM_DoubleLemke(benchmark::State& state) {
   const auto& all = problems();
@@ -222,6 +259,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   std::cout << "Seating LCPs of " << problems().size()
             << " random 3-fixel scenes (size 12); one solve per iteration.\n";
+  report_filtered_agreement();
   report_disagreements("double Lemke", double_lemke);
 #ifdef FIXEL_HAVE_SICONOS
   report_disagreements("Siconos lcp_lexicolemke", siconos_lemke);

@@ -86,7 +86,8 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   for (const auto& cone : cones)
     for (const auto& g : cone.generators) {
       gens.push_back(g);
-      dirs.push_back({g[0], g[1]});
+      // A cone's generators come in pairs with one force part: keep one.
+      if (dirs.empty() || dirs.back().x != g[0] || dirs.back().y != g[1]) dirs.push_back({g[0], g[1]});
     }
   Vec2 first, last;
   const bool pointed = direction_extremes(dirs, first, last);
@@ -157,9 +158,11 @@ std::vector<Join> joins(const Boundary& b) {
   return out;
 }
 
+// `first`: no piece before it holds u (the caller knows; saves a scan of
+// every piece per corner, which made long polylines quadratic).
 RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>& js, int curve, const Rational& u,
-                       Magnitudes* mags, std::vector<Magnitudes>* set = nullptr) {
-  for (std::size_t k = 0; k < b.pieces.size(); ++k) {
+                       Magnitudes* mags, std::vector<Magnitudes>* set = nullptr, std::size_t first = 0) {
+  for (std::size_t k = first; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (piece.curve != curve) continue;
     const bool at_start = u == piece.u0, inside = u > piece.u0 && u < piece.u1;
@@ -234,7 +237,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
     const BezierPiece& piece = b.pieces[k];
     if (js[k].corner) {
       RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
-      corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set);
+      corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set, k);
       corner.half_line = in_half_line(target, corner);
       raw.push_back(corner);
     }

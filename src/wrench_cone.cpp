@@ -8,6 +8,7 @@
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/wrench_cone_detail.h"
 
 namespace fixel {
@@ -27,12 +28,21 @@ VectorQ wrench(const Vec2& d, const Rational& moment) {
 }  // namespace
 
 bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
+  // Every sign below is filtered (intervals first, exact products when they
+  // cannot decide); the enclosures are made once per vector.
+  std::vector<internal::FVec2> f;
+  f.reserve(v.size());
+  for (const auto& x : v) f.push_back(internal::to_interval(x));
+  auto orient = [&](std::size_t i, std::size_t j) {
+    return i == j ? 0 : internal::orientation_filtered(v[i], f[i], v[j], f[j]);
+  };
   int s = -1, e = -1;
   for (std::size_t i = 0; i < v.size(); ++i) {
     bool all_ccw = true, all_cw = true;
-    for (const auto& w : v) {
-      all_ccw = all_ccw && cross(v[i], w) >= 0;
-      all_cw = all_cw && cross(w, v[i]) >= 0;
+    for (std::size_t j = 0; j < v.size() && (all_ccw || all_cw); ++j) {
+      const int o = orient(i, j);
+      all_ccw = all_ccw && o >= 0;
+      all_cw = all_cw && o <= 0;
     }
     if (all_ccw && s < 0) s = static_cast<int>(i);
     if (all_cw && e < 0) e = static_cast<int>(i);
@@ -40,12 +50,20 @@ bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
   if (s < 0 || e < 0) return false;
   first = v[s];
   last = v[e];
-  const Rational c = cross(first, last);
+  const int c = orient(s, e);
   if (c < 0 || (c == 0 && dot(first, last) < 0)) return false;  // spans π or more
   // Anti-parallel legs inside (span exactly π) are caught by the test above
-  // only through the extremes; check every pair against the extremes too.
-  for (const auto& w : v)
-    if (!in_cone(w, first, last) && !(c == 0 && cross(first, w) == 0 && dot(first, w) > 0)) return false;
+  // only through the extremes; check every pair against the extremes too
+  // (in_cone(w, first, last), or w along first when they are parallel).
+  for (std::size_t j = 0; j < v.size(); ++j) {
+    const int a = orient(s, j);
+    bool inside;
+    if (c == 0)
+      inside = a == 0 && dot(first, v[j]) > 0;
+    else
+      inside = a >= 0 && orient(j, e) >= 0;
+    if (!inside && !(c == 0 && a == 0 && dot(first, v[j]) > 0)) return false;
+  }
   return true;
 }
 
@@ -74,15 +92,62 @@ WrenchCone finish(std::vector<VectorQ> gens, bool with_facets) {
   return cone;
 }
 
+// min_k and max_k of r_k ⊗ d over the points, r_k = point_k − c. Filtered:
+// the enclosures name the candidates for each extreme, and only those are
+// computed exactly (one candidate each in the generic case).
+void moment_extremes(const std::vector<Vec2>& pts, const std::vector<internal::FVec2>& fr, const Vec2& c, const Vec2& d,
+                     Rational& lo, Rational& hi) {
+  const std::size_t n = pts.size();
+  auto exact = [&](std::size_t k) { return cross({pts[k].x - c.x, pts[k].y - c.y}, d); };
+  if (fr.size() == n && n <= 16) {
+    const internal::FVec2 fd = internal::to_interval(d);
+    internal::FI m[16];
+    double min_sup = 0, max_inf = 0;
+    {
+      internal::Protect guard;
+      for (std::size_t k = 0; k < n; ++k) {
+        m[k] = fr[k].x * fd.y - fr[k].y * fd.x;
+        min_sup = k == 0 ? m[k].sup() : std::min(min_sup, m[k].sup());
+        max_inf = k == 0 ? m[k].inf() : std::max(max_inf, m[k].inf());
+      }
+    }
+    int lo_n = 0, hi_n = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      lo_n += m[k].inf() <= min_sup;
+      hi_n += m[k].sup() >= max_inf;
+    }
+    internal::record_filter(FilterSite::kCone, lo_n == 1 && hi_n == 1);
+    bool lo_set = false, hi_set = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool lo_cand = m[k].inf() <= min_sup, hi_cand = m[k].sup() >= max_inf;
+      if (!lo_cand && !hi_cand) continue;
+      const Rational v = exact(k);
+      if (lo_cand && (!lo_set || v < lo)) lo = v, lo_set = true;
+      if (hi_cand && (!hi_set || v > hi)) hi = v, hi_set = true;
+    }
+    return;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Rational m = exact(k);  // r ⊗ d, linear in r
+    if (k == 0 || m < lo) lo = m;
+    if (k == 0 || m > hi) hi = m;
+  }
+}
+
 WrenchCone tight(const SegmentBounds& b, const Vec2& p_AoCm_A, const Vec2& ds, const Vec2& de, bool with_facets) {
+  std::vector<internal::FVec2> fr;
+  if (!force_exact()) {
+    const internal::FVec2 fc = internal::to_interval(p_AoCm_A);
+    internal::Protect guard;
+    for (const auto& p : b.hull) {
+      const internal::FVec2 fp = internal::to_interval(p);
+      fr.push_back({fp.x - fc.x, fp.y - fc.y});
+    }
+  }
   std::vector<VectorQ> gens;
   for (const Vec2& d : {ds, de}) {
     Rational lo = 0, hi = 0;
-    for (std::size_t k = 0; k < b.hull.size(); ++k) {
-      const Rational m = cross({b.hull[k].x - p_AoCm_A.x, b.hull[k].y - p_AoCm_A.y}, d);  // r ⊗ d, linear in r
-      if (k == 0 || m < lo) lo = m;
-      if (k == 0 || m > hi) hi = m;
-    }
+    moment_extremes(b.hull, fr, p_AoCm_A, d, lo, hi);
     gens.push_back(wrench(d, lo));
     gens.push_back(wrench(d, hi));
   }

@@ -258,5 +258,16 @@ expect 2 'candidates[0].u: 6 is off curve 0' -- "$fixel" design "$tmp/house.json
 expect 2 'body.boundary: is missing' -- "$fixel" design "$src/data/scenes/example2.json"
 expect 2 'cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --svg "$tmp/no/x.svg"
 expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --max-seconds 0.5 --quiet
+# --exact-only turns the interval filters off: the same output byte for byte
+# (wall time masked), and the filter counters show which path ran.
+mask() { sed -E 's/"seconds": [0-9.e+-]+/"seconds": X/'; }
+for cmd in "region $src/data/scenes/blob.json --json --pusher-mu 1/10" "seat $src/data/scenes/nonunique.json --guaranteed --json" \
+           "simulate $src/data/scenes/example2.json --impulse -1,-1,-1 --json"; do
+  # shellcheck disable=SC2086
+  a=$("$fixel" $cmd | mask); b=$("$fixel" $cmd --exact-only | mask)
+  if [ -z "$a" ] || [ "$a" != "$b" ]; then echo "FAIL: $cmd differs with --exact-only"; fail=1; fi
+done
+expect 0 'fixel: filters (certified/exact fallbacks): lemke 0/0 ray test ' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --json
+expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
 
 exit $fail

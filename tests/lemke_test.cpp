@@ -6,6 +6,7 @@
 #include <random>
 
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
@@ -157,6 +158,91 @@ GTEST_TEST(Lemke, FindsTheUniqueSolutionOfPMatrixProblems) {
     ASSERT_EQ(r.status, LemkeStatus::kSolved);
     EXPECT_EQ(r.z, all[0]);
   }
+}
+
+// The filtered run (interval tableau) and the forced exact run agree on
+// status, pivots, w and z, problem by problem: seating LCPs of random
+// scenes at impulses around S, and random degenerate PSD problems.
+LemkeResult solve_forced_exact(const MatrixQ& B, const VectorQ& b) {
+  ForceExactScope exact;
+  return solve_lcp_lemke(B, b);
+}
+
+void expect_same(const LemkeResult& a, const LemkeResult& b, int trial) {
+  EXPECT_EQ(a.status, b.status) << "trial " << trial;
+  EXPECT_EQ(a.pivots, b.pivots) << "trial " << trial;
+  EXPECT_EQ(a.w, b.w) << "trial " << trial;
+  EXPECT_EQ(a.z, b.z) << "trial " << trial;
+}
+
+GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) {
+  ForceExactScope filtered(false);
+  reset_filter_stats();
+  std::mt19937_64 rng(2026);
+  int problems = 0;
+  while (problems < 40) {
+    Scene scene = test::random_scene(rng, 3);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    VectorQ p = S.apex;
+    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+    const TimeSteppingLcp lcp = build_lcp(scene);
+    const VectorQ b = lcp.b(p);
+    expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
+    ++problems;
+  }
+  // Every problem went through the filter. (Most fall back: the friction-cone
+  // rows have b = 0, so after the first pivot they tie exactly in the ratio
+  // test, and an interval cannot certify a tie.)
+  const FilterCounts c = filter_stats().at(FilterSite::kLemke);
+  EXPECT_EQ(c.certified + c.fallbacks, 40);
+  EXPECT_GT(c.certified, 0);
+}
+
+GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {
+  ForceExactScope filtered(false);
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<int> small(-2, 2), size(1, 6);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = size(rng);
+    MatrixQ A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = Rational(small(rng), 1 + trial % 3);
+    const MatrixQ B = A.transpose() * A;
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) b[i] = trial % 2 ? Rational(small(rng), 3) : Rational(small(rng) < 0 ? -1 : 0);
+    expect_same(solve_lcp_lemke(B, b), solve_forced_exact(B, b), trial);
+  }
+}
+
+// Ratio ties between rows whose entries are not exact in double (thirds):
+// the intervals cannot certify the tie, so the exact tableau must run.
+GTEST_TEST(FilteredLemke, FallsBackToTheExactTableauOnATieItCannotCertify) {
+  ForceExactScope filtered(false);
+  const MatrixQ B = mat({{1, 0}, {0, 1}});
+  VectorQ b(2);
+  b << Rational(-1, 3), Rational(-1, 3);
+  reset_filter_stats();
+  const auto r = solve_lcp_lemke(B, b);
+  EXPECT_EQ(filter_stats().at(FilterSite::kLemke).fallbacks, 1);
+  EXPECT_EQ(filter_stats().at(FilterSite::kLemke).certified, 0);
+  ASSERT_EQ(r.status, LemkeStatus::kSolved);
+  EXPECT_EQ(r.z, (VectorQ(2) << Rational(1, 3), Rational(1, 3)).finished());
+  // The same tie in dyadic numbers is exact in double: certified.
+  reset_filter_stats();
+  b << Rational(-1, 4), Rational(-1, 4);
+  EXPECT_EQ(solve_lcp_lemke(B, b).z, (VectorQ(2) << Rational(1, 4), Rational(1, 4)).finished());
+  EXPECT_EQ(filter_stats().at(FilterSite::kLemke).certified, 1);
+}
+
+GTEST_TEST(FilteredLemke, ForcedExactRunsCountNoFilterDecision) {
+  reset_filter_stats();
+  solve_forced_exact(mat({{2, 1}, {1, 2}}), vec({-1, -1}));
+  EXPECT_EQ(filter_stats().at(FilterSite::kLemke).certified + filter_stats().at(FilterSite::kLemke).fallbacks, 0);
 }
 
 GTEST_TEST(IsSolution, RejectsEachViolatedCondition) {

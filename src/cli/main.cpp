@@ -7,6 +7,7 @@
 
 #include "cli.h"
 #include "fixel/error.h"
+#include "fixel/filter.h"
 
 namespace {
 
@@ -52,6 +53,18 @@ std::string user_message(const fixel::InputError& e) {
   return it->second + what.substr(e.field().size());
 }
 
+// FIXEL_FILTER_STATS=1: the filter counters on stderr after the run.
+void maybe_print_filter_stats() {
+  const char* v = std::getenv("FIXEL_FILTER_STATS");
+  if (!v || !*v || std::string(v) == "0") return;
+  const fixel::FilterStats st = fixel::filter_stats();
+  std::cerr << "fixel: filters (certified/exact fallbacks):";
+  for (int k = 0; k < static_cast<int>(fixel::FilterSite::kCount); ++k)
+    std::cerr << " " << fixel::to_string(static_cast<fixel::FilterSite>(k)) << " " << st.site[k].certified << "/"
+              << st.site[k].fallbacks;
+  std::cerr << (fixel::force_exact() ? " (exact only)\n" : "\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,6 +76,11 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {add_seat(app),   add_dump(app),     add_simulate(app), add_solutions(app),
                                          add_region(app), add_sample(app),   add_push(app),     add_verify(app),
                                          add_design(app), add_push_plan(app)};
+  bool exact_only = false;
+  for (const auto& command : commands)
+    command.app->add_flag("--exact-only", exact_only,
+                          "Turn the floating-point filters off: every decision in exact rationals (same output, "
+                          "slower; also FIXEL_FORCE_EXACT=1)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -71,8 +89,13 @@ int main(int argc, char** argv) {
 
   try {
     maybe_inject_fault();
+    if (exact_only) fixel::set_force_exact(true);
     for (const auto& command : commands)
-      if (command.app->parsed()) return command.run();
+      if (command.app->parsed()) {
+        const int code = command.run();
+        maybe_print_filter_stats();
+        return code;
+      }
     return kExitBadInput;
   } catch (const fixel::StoppedError& e) {
     end_progress();

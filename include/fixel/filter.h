@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// Floating-point filters with exact fallback (after CGAL's filtered
+/// predicates): a decision is first evaluated in outward-rounded interval
+/// arithmetic; when the interval certifies the sign, that is the exact
+/// answer, otherwise the decision is recomputed in exact rationals. No answer
+/// depends on which path ran. This header holds the global switch that forces
+/// the exact path and the counters of how often each filter decided.
+
+#include <string>
+
+namespace fixel {
+
+/// The filtered decisions, one counter pair each.
+enum class FilterSite {
+  kLemke,        ///< Lemke's pivot path and final basis (interval tableau).
+  kRayTest,      ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
+  kOutTest,      ///< Does a segment's wrench cone miss the seating set (before the exact LP).
+  kOrientation,  ///< Signs of planar cross products (direction extremes).
+  kCone,         ///< The extreme moments of a segment's tight wrench cone.
+  kCount,
+};
+
+/// "lemke", "ray test", "out test", "orientation", "cone".
+std::string to_string(FilterSite site);
+
+/// How often one filter decided (certified) and how often it could not and
+/// the exact path ran (fallbacks). Runs under force_exact() count neither.
+struct FilterCounts {
+  long certified = 0;  ///< Decided by the interval filter.
+  long fallbacks = 0;  ///< Undecided by the filter: the exact path ran.
+};
+
+/// Counters of every site since the last reset_filter_stats().
+struct FilterStats {
+  FilterCounts site[static_cast<int>(FilterSite::kCount)];
+  /// The counters of one site.
+  const FilterCounts& at(FilterSite s) const { return site[static_cast<int>(s)]; }
+  /// Sum of the fallbacks of every site.
+  long total_fallbacks() const;
+  /// Sum of the certified decisions of every site.
+  long total_certified() const;
+};
+
+/// Forces (true) or releases (false) the exact path for every filtered
+/// decision in the process. The initial value is true when the environment
+/// variable FIXEL_FORCE_EXACT is set to anything but "" or "0". Answers are
+/// identical either way; only the time differs.
+void set_force_exact(bool on);
+
+/// Whether the exact path is forced (see set_force_exact).
+bool force_exact();
+
+/// A snapshot of the counters (thread-safe, relaxed).
+FilterStats filter_stats();
+
+/// Sets every counter to zero.
+void reset_filter_stats();
+
+/// Sets force_exact() for the lifetime of the object and restores the
+/// previous value after (tests, the CLI's --exact-only).
+class ForceExactScope {
+ public:
+  /// Sets force_exact() to `on`.
+  explicit ForceExactScope(bool on = true) : previous_(force_exact()) { set_force_exact(on); }
+  ~ForceExactScope() { set_force_exact(previous_); }
+  ForceExactScope(const ForceExactScope&) = delete;
+  ForceExactScope& operator=(const ForceExactScope&) = delete;
+
+ private:
+  bool previous_;
+};
+
+}  // namespace fixel

@@ -1,0 +1,78 @@
+#pragma once
+// Interval filters with exact fallback (fixel/filter.h): CGAL's Interval_nt
+// without per-operation rounding protection, used inside one
+// Protect_FPU_rounding scope per predicate, so the rounding mode is set once
+// and restored on every exit (also by exceptions). Data stays rational; an
+// interval enclosure of each value is made on demand (or cached by callers).
+#include <CGAL/Interval_nt.h>
+#include <gmp.h>
+
+#include <cmath>
+#include <limits>
+
+#include "fixel/filter.h"
+#include "fixel/geometry.h"
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+
+// Arithmetic valid only while a Protect scope is alive.
+using FI = CGAL::Interval_nt<false>;
+// Rounds towards +∞ for its lifetime, then restores the caller's mode.
+using Protect = CGAL::Protect_FPU_rounding<true>;
+
+// Counts one filtered decision (certified) or one exact fallback.
+void record_filter(FilterSite site, bool certified);
+
+// An interval that certainly holds q: the point q when q is a dyadic
+// rational of at most 53 significant bits (common here: coordinates and
+// subdivision parameters), else mpq_get_d (which truncates) widened by one
+// ulp each way; the whole line when q is out of double range. Needs no
+// rounding mode.
+inline FI to_interval(const Rational& q) {
+  const auto& m = q.backend().data();
+  const double d = mpq_get_d(m);
+  if (!(std::abs(d) < 1e300)) return FI::largest();
+  const bool dyadic = mpz_popcount(mpq_denref(m)) == 1 && mpz_sizeinbase(mpq_denref(m), 2) < 900;
+  if (dyadic && mpz_sizeinbase(mpq_numref(m), 2) <= 53) return FI(d);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return FI(std::nextafter(d, -inf), std::nextafter(d, inf));
+}
+
+struct FVec2 {
+  FI x, y;
+};
+inline FVec2 to_interval(const Vec2& v) { return {to_interval(v.x), to_interval(v.y)}; }
+
+// Sign when the interval certifies it: -1, 0 (only the point 0) or +1;
+// kUndecided otherwise.
+constexpr int kUndecided = 2;
+inline int certain_sign(const FI& x) {
+  if (x.inf() > 0) return 1;
+  if (x.sup() < 0) return -1;
+  if (x.inf() == 0 && x.sup() == 0) return 0;
+  return kUndecided;
+}
+
+// Sign of a ⊗ b from enclosures (kUndecided when they cannot tell).
+inline int cross_sign(const FVec2& a, const FVec2& b) {
+  Protect p;
+  return certain_sign(a.x * b.y - a.y * b.x);
+}
+
+// Sign of a ⊗ b, filtered: the enclosures first, the exact product when
+// they cannot decide or the exact path is forced.
+inline int orientation_filtered(const Vec2& a, const FVec2& fa, const Vec2& b, const FVec2& fb) {
+  if (!force_exact()) {
+    const int s = cross_sign(fa, fb);
+    record_filter(FilterSite::kOrientation, s != kUndecided);
+    if (s != kUndecided) return s;
+  }
+  return sign(cross(a, b));
+}
+
+inline int orientation_filtered(const Vec2& a, const Vec2& b) {
+  return orientation_filtered(a, to_interval(a), b, to_interval(b));
+}
+
+}  // namespace fixel::internal

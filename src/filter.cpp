@@ -1,0 +1,82 @@
+#include "fixel/filter.h"
+
+#include <atomic>
+#include <cstdlib>
+
+#include "fixel/internal/filtered.h"
+
+namespace fixel {
+
+namespace {
+
+bool initial_force_exact() {
+  const char* v = std::getenv("FIXEL_FORCE_EXACT");
+  return v && *v && std::string(v) != "0";
+}
+
+std::atomic<bool> g_force_exact{initial_force_exact()};
+
+constexpr int kSites = static_cast<int>(FilterSite::kCount);
+std::atomic<long> g_certified[kSites];
+std::atomic<long> g_fallbacks[kSites];
+
+}  // namespace
+
+std::string to_string(FilterSite site) {
+  switch (site) {
+    case FilterSite::kLemke:
+      return "lemke";
+    case FilterSite::kRayTest:
+      return "ray test";
+    case FilterSite::kOutTest:
+      return "out test";
+    case FilterSite::kOrientation:
+      return "orientation";
+    case FilterSite::kCone:
+      return "cone";
+    case FilterSite::kCount:
+      break;
+  }
+  return "?";
+}
+
+long FilterStats::total_fallbacks() const {
+  long t = 0;
+  for (const auto& s : site) t += s.fallbacks;
+  return t;
+}
+
+long FilterStats::total_certified() const {
+  long t = 0;
+  for (const auto& s : site) t += s.certified;
+  return t;
+}
+
+void set_force_exact(bool on) { g_force_exact.store(on, std::memory_order_relaxed); }
+bool force_exact() { return g_force_exact.load(std::memory_order_relaxed); }
+
+FilterStats filter_stats() {
+  FilterStats s;
+  for (int i = 0; i < kSites; ++i) {
+    s.site[i].certified = g_certified[i].load(std::memory_order_relaxed);
+    s.site[i].fallbacks = g_fallbacks[i].load(std::memory_order_relaxed);
+  }
+  return s;
+}
+
+void reset_filter_stats() {
+  for (int i = 0; i < kSites; ++i) {
+    g_certified[i].store(0, std::memory_order_relaxed);
+    g_fallbacks[i].store(0, std::memory_order_relaxed);
+  }
+}
+
+namespace internal {
+
+void record_filter(FilterSite site, bool certified) {
+  (certified ? g_certified : g_fallbacks)[static_cast<int>(site)].fetch_add(1, std::memory_order_relaxed);
+}
+
+}  // namespace internal
+
+}  // namespace fixel

@@ -1,0 +1,192 @@
+// The filter layer (fixel/filter.h): every filtered answer equals the forced
+// exact answer, byte for byte in JSON, and degenerate inputs reach the exact
+// fallback (checked through the counters).
+#include "fixel/filter.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <regex>
+
+#include "fixel/guaranteed.h"
+#include "fixel/io.h"
+#include "fixel/region.h"
+#include "fixel/region_target.h"
+#include "fixel/seat_report.h"
+#include "fixel/seating.h"
+#include "fixel/stepper.h"
+#include "fixel/sustained.h"
+#include "fixel/wrench_cone.h"
+#include "test_util.h"
+
+namespace fixel {
+namespace {
+
+// Wall-clock time is the one field allowed to differ.
+std::string masked(const std::string& json) {
+  return std::regex_replace(json, std::regex("\"seconds\": [0-9.e+-]+"), "\"seconds\": X");
+}
+
+template <typename F>
+auto run(bool exact, F f) {
+  ForceExactScope scope(exact);
+  return f();
+}
+
+std::string region_json_of(const Scene& scene, const SeatingSet& S, const RegionOptions& opt) {
+  const Region r = compute_region(scene, S, opt);
+  return masked(region_json(scene, r));
+}
+
+GTEST_TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
+  const bool before = force_exact();
+  {
+    ForceExactScope on(true);
+    EXPECT_TRUE(force_exact());
+    {
+      ForceExactScope off(false);
+      EXPECT_FALSE(force_exact());
+    }
+    EXPECT_TRUE(force_exact());
+  }
+  EXPECT_EQ(force_exact(), before);
+}
+
+GTEST_TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
+  for (const char* name : {"example2_rounded", "blob", "polygon", "blob32", "nonunique_part"}) {
+    const Scene scene = test::scene_file(name);
+    const SeatingSet S = seating_set(scene);
+    for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+      RegionOptions opt;
+      opt.resolution = Rational(1, 1024);
+      opt.pusher_mu = mu;
+      const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+      const std::string exact = run(true, [&] { return region_json_of(scene, S, opt); });
+      EXPECT_EQ(filtered, exact) << name << " mu " << to_string(mu);
+    }
+  }
+}
+
+GTEST_TEST(Filter, RegionsOfRandomBlobsAreIdenticalJsonAndMostDecisionsAreCertified) {
+  std::mt19937_64 rng(12);
+  reset_filter_stats();
+  for (int trial = 0; trial < 6; ++trial) {
+    const Scene scene = test::random_blob_scene(rng, Rational(trial % 3, 10));
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    RegionOptions opt;
+    opt.resolution = Rational(1, 256);
+    opt.cone = trial % 2 ? ConeMethod::kPaper : ConeMethod::kTight;
+    EXPECT_EQ(run(false, [&] { return region_json_of(scene, S, opt); }),
+              run(true, [&] { return region_json_of(scene, S, opt); }))
+        << "trial " << trial;
+  }
+  const FilterStats st = filter_stats();
+  EXPECT_GT(st.at(FilterSite::kRayTest).certified, 100);
+  EXPECT_LT(st.at(FilterSite::kRayTest).fallbacks * 20, st.at(FilterSite::kRayTest).certified);
+}
+
+GTEST_TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFilters) {
+  const Scene part = test::scene_file("nonunique_part");
+  const SeatingSet S = seating_set(part);
+  const GuaranteedSet G = guaranteed_set(part, S);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 64);
+  opt.guaranteed = &G;
+  EXPECT_EQ(run(false, [&] { return region_json_of(part, S, opt); }),
+            run(true, [&] { return region_json_of(part, S, opt); }));
+
+  const Scene polygon = test::scene_file("polygon");
+  const SustainedSet J = sustained_set(polygon);
+  auto sustained = [&] {
+    const auto target = sustained_target(J);
+    RegionOptions o;
+    o.resolution = Rational(1, 256);
+    const Region r = compute_region(polygon, *target, o);
+    return masked(region_json(polygon, r)) + masked(sustained_json(polygon, J, std::nullopt));
+  };
+  EXPECT_EQ(run(false, sustained), run(true, sustained));
+}
+
+GTEST_TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFilters) {
+  std::mt19937_64 rng(5);
+  int done = 0;
+  for (int trial = 0; trial < 40 && done < 12; ++trial) {
+    const Scene scene = test::random_scene(rng, 3);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    VectorQ p = S.apex;
+    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+    auto both = [&] {
+      return seat_json(scene, S, seat_report(scene, S, p, nullptr, false)) +
+             simulation_json(scene, simulate(scene, {p}, 3));
+    };
+    EXPECT_EQ(run(false, both), run(true, both)) << "trial " << trial;
+    ++done;
+  }
+  EXPECT_EQ(done, 12);
+}
+
+// Rays exactly along a facet of S (α = 0 for that facet, β = 0): the
+// intervals see an α that is a non-point enclosure of 0 (thirds are not
+// doubles), so the ray test must fall back to the exact one, and agree.
+GTEST_TEST(Filter, ARayAlongAFacetOfSFallsBackToTheExactRayTest) {
+  const Scene scene = test::scene_file("example2");
+  const SeatingSet S = seating_set(scene);
+  ForceExactScope filtered(false);
+  // g = −(a generator of S): the ray from the apex runs along S's edge.
+  const VectorQ b0 = S.apex;
+  const auto target = seating_target(S, b0);
+  reset_filter_stats();
+  int fallbacks_expected = 0;
+  for (const VectorQ& ray : S.rays) {
+    const std::vector<VectorQ> gens = {ray};
+    const Magnitudes exact = ray_magnitudes(S, b0, ray);
+    RegionInterval detail;
+    EXPECT_EQ(target->contains_cone(gens, nullptr, nullptr, &detail), !exact.empty);
+    ++fallbacks_expected;
+  }
+  EXPECT_GE(filter_stats().at(FilterSite::kRayTest).fallbacks, 1);
+  EXPECT_LE(filter_stats().at(FilterSite::kRayTest).fallbacks, fallbacks_expected);
+}
+
+// Region endpoints at dyadic parameters: a polyline whose edge directions
+// are exactly parallel makes every direction-extreme comparison an exact
+// zero; dyadic coordinates are exact in double, so those zeros are
+// certified without the exact path, while thirds need it.
+GTEST_TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise) {
+  ForceExactScope filtered(false);
+  Vec2 first, last;
+  reset_filter_stats();
+  EXPECT_TRUE(direction_extremes({{Rational(1, 4), Rational(1, 2)}, {Rational(1, 2), Rational(1)}}, first, last));
+  EXPECT_EQ(filter_stats().at(FilterSite::kOrientation).fallbacks, 0);
+  reset_filter_stats();
+  EXPECT_TRUE(direction_extremes({{Rational(1, 3), Rational(2, 3)}, {Rational(2, 3), Rational(4, 3)}}, first, last));
+  EXPECT_GE(filter_stats().at(FilterSite::kOrientation).fallbacks, 1);
+  EXPECT_EQ(first.x, Rational(1, 3));
+  // Anti-parallel thirds: spans π, found only by the exact zero.
+  EXPECT_FALSE(direction_extremes({{Rational(1, 3), Rational(2, 3)}, {Rational(-1, 3), Rational(-2, 3)}}, first, last));
+}
+
+GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {
+  const Scene scene = test::scene_file("blob");
+  const SeatingSet S = seating_set(scene);
+  reset_filter_stats();
+  RegionOptions opt;
+  opt.resolution = Rational(1, 64);
+  run(true, [&] { return compute_region(scene, S, opt); });
+  EXPECT_EQ(filter_stats().total_certified() + filter_stats().total_fallbacks(), 0);
+  run(false, [&] { return compute_region(scene, S, opt); });
+  EXPECT_GT(filter_stats().total_certified(), 0);
+}
+
+}  // namespace
+}  // namespace fixel
