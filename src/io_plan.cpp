@@ -67,8 +67,8 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
 
 std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   std::ostringstream out;
-  out << "Push plan for scene \"" << scene.name << "\" at curve " << plan.curve << ", u = " << internal::readable(plan.u)
-      << "\n";
+  out << "Push plan for scene \"" << scene.name << "\" at curve " << plan.curve
+      << ", u = " << internal::readable(plan.u) << "\n";
   out << "  point (m, frame A) = (" << internal::readable(plan.point_A.x) << ", " << internal::readable(plan.point_A.y)
       << "), push along the inward normal (" << internal::readable(plan.normal_A.x) << ", "
       << internal::readable(plan.normal_A.y) << ")\n";

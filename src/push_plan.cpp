@@ -26,9 +26,9 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
     throw InputError("plan_push(curve)", std::to_string(curve), "is not a curve of the boundary");
   const Curve& c = b.curves[curve];
   if (u < c.u_begin() || u > c.u_end())
-    throw InputError("plan_push(u)", to_string(u),
-                     "is outside the curve's parameter range [" + to_string(c.u_begin()) + ", " +
-                         to_string(c.u_end()) + "]");
+    throw InputError(
+        "plan_push(u)", to_string(u),
+        "is outside the curve's parameter range [" + to_string(c.u_begin()) + ", " + to_string(c.u_end()) + "]");
   PushPlan plan;
   plan.curve = curve;
   plan.u = u;

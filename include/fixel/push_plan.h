@@ -18,11 +18,11 @@ namespace fixel {
 struct PushPlan {
   int curve = 0;
   Rational u;
-  Vec2 point_A;   ///< The boundary point (m, frame A).
-  Vec2 normal_A;  ///< Inward normal there (not unit; the push direction).
+  Vec2 point_A;              ///< The boundary point (m, frame A).
+  Vec2 normal_A;             ///< Inward normal there (not unit; the push direction).
   VectorQ wrench_direction;  ///< g = (n, r ⊗ n), r from the centre of mass (frame A).
   RegionStatus in_S = RegionStatus::kOut;
-  Magnitudes magnitudes_S;  ///< Euclidean |p| (N·s) of impulses along g that land in S (inner bound).
+  Magnitudes magnitudes_S;           ///< Euclidean |p| (N·s) of impulses along g that land in S (inner bound).
   std::optional<RegionStatus> in_G;  ///< With G (dof 3, frictionless pusher).
   Magnitudes magnitudes_G;           ///< The same for G (one of its pieces).
   /// At a representative impulse of the S window (τ* g with τ* rational in
