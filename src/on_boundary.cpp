@@ -365,10 +365,10 @@ BoundaryFit fit_to_boundary(const Boundary& b, const Vec2& p, const Vec2* n) {
   fit.inward_normal_approx = {normal.x, normal.y};
   if (n) {
     const Approx nd = approx(*n);
-    fit.angle_degrees = fit.normal_matches ? 0.0
-                                           : std::abs(std::atan2(nd.x * normal.y - nd.y * normal.x,
-                                                                 nd.x * normal.x + nd.y * normal.y)) *
-                                                 180 / M_PI;
+    fit.angle_degrees =
+        fit.normal_matches
+            ? 0.0
+            : std::abs(std::atan2(nd.x * normal.y - nd.y * normal.x, nd.x * normal.x + nd.y * normal.y)) * 180 / M_PI;
   }
   return fit;
 }

@@ -72,8 +72,7 @@ void check_fixels_on_boundary(const Scene& scene) {
     if (!fit.on_boundary)
       throw SceneError(path + ".point", exact_text(f.p_AoF_A),
                        "is not on the part's outline: it is " + num(fit.distance) + " m from it (nearest point ≈ " +
-                           pair_text(fit.nearest[0], fit.nearest[1]) + " on " + where +
-                           ", where the inward normal ≈ " +
+                           pair_text(fit.nearest[0], fit.nearest[1]) + " on " + where + ", where the inward normal ≈ " +
                            pair_text(fit.inward_normal_approx[0], fit.inward_normal_approx[1]) + " is " +
                            num(fit.angle_degrees) +
                            "° from this fixel's normal). The point is the contact point on the part at the "
@@ -85,8 +84,8 @@ void check_fixels_on_boundary(const Scene& scene) {
                            (fit.corner ? ", a corner: the normal must lie between the two edges' inward normals, "
                                          "around "
                                        : ", where it is ") +
-                           pair_text(fit.inward_normal_approx[0], fit.inward_normal_approx[1]) + "): " +
-                           num(fit.angle_degrees) + "° apart. Give \"normal\": \"boundary\", or set " + path +
+                           pair_text(fit.inward_normal_approx[0], fit.inward_normal_approx[1]) +
+                           "): " + num(fit.angle_degrees) + "° apart. Give \"normal\": \"boundary\", or set " + path +
                            ".off_boundary: true");
   }
 }

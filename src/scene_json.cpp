@@ -129,8 +129,7 @@ std::string approx_text(double v) {
 // A suggestion for a direction that is not an exact unit vector.
 std::string suggest_unit(double radians) {
   const Vec2 u = nearby_exact_unit(radians);
-  return "the nearest exact unit normal (within 1e-9 rad) is [\"" + to_string(u.x) + "\", \"" + to_string(u.y) +
-         "\"]";
+  return "the nearest exact unit normal (within 1e-9 rad) is [\"" + to_string(u.x) + "\", \"" + to_string(u.y) + "\"]";
 }
 
 // A fixel's normal: ["x", "y"] of unit length, {"degrees": "D"}, or
@@ -183,13 +182,15 @@ Vec2 boundary_normal(const Scene& scene, const Vec2& p, int i) {
     throw SceneError(path + ".point", pt,
                      "is not on the part's outline (" + approx_text(fit.distance) +
                          " m from it), so \"normal\": \"boundary\" has no normal to take");
-  const std::string near = "≈ (" + approx_text(fit.inward_normal_approx[0]) + ", " +
-                           approx_text(fit.inward_normal_approx[1]) + ")";
+  const std::string near =
+      "≈ (" + approx_text(fit.inward_normal_approx[0]) + ", " + approx_text(fit.inward_normal_approx[1]) + ")";
   const double angle = std::atan2(fit.inward_normal_approx[1], fit.inward_normal_approx[0]);
   if (fit.corner)
     throw SceneError(path + ".normal", "\"boundary\"",
-                     "is ambiguous: " + pt + " is a corner of the outline; give the normal explicitly, between the "
-                     "two edges' inward normals (their bisector is " + near + ")");
+                     "is ambiguous: " + pt +
+                         " is a corner of the outline; give the normal explicitly, between the "
+                         "two edges' inward normals (their bisector is " +
+                         near + ")");
   if (!fit.inward_normal)
     throw SceneError(path + ".normal", "\"boundary\"",
                      "cannot be taken exactly: " + pt + " is at an irrational parameter of body.boundary[" +
@@ -200,8 +201,10 @@ Vec2 boundary_normal(const Scene& scene, const Vec2& p, int i) {
     throw SceneError(path + ".normal", "\"boundary\"",
                      "cannot be taken exactly: the inward normal at " + pt + " is " + near +
                          ", whose length is irrational (the tangent there is (" + to_string(-fit.inward_normal->y) +
-                         ", " + to_string(fit.inward_normal->x) + ")); move the point to where the tangent has a "
-                         "rational length, or give the normal (" + suggest_unit(angle) + ")");
+                         ", " + to_string(fit.inward_normal->x) +
+                         ")); move the point to where the tangent has a "
+                         "rational length, or give the normal (" +
+                         suggest_unit(angle) + ")");
   return *u;
 }
 

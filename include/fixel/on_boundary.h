@@ -30,11 +30,11 @@ struct BoundaryFit {
   /// The inward normal at p, any positive length, exact: set when p is on the
   /// boundary at a known rational parameter and not at a corner.
   std::optional<Vec2> inward_normal;
-  double u_approx = 0;                                ///< Display: parameter of the nearest point.
-  double distance = 0;                                ///< Display: distance from p to the loop (m); 0 when on it.
-  std::array<double, 2> nearest{};                    ///< Display: the nearest boundary point (m, frame A).
-  std::array<double, 2> inward_normal_approx{};       ///< Display: unit inward normal there (at a corner, the bisector).
-  double angle_degrees = 0;                           ///< Display: angle between n and inward_normal_approx (degrees).
+  double u_approx = 0;                           ///< Display: parameter of the nearest point.
+  double distance = 0;                           ///< Display: distance from p to the loop (m); 0 when on it.
+  std::array<double, 2> nearest{};               ///< Display: the nearest boundary point (m, frame A).
+  std::array<double, 2> inward_normal_approx{};  ///< Display: unit inward normal there (at a corner, the bisector).
+  double angle_degrees = 0;                      ///< Display: angle between n and inward_normal_approx (degrees).
 };
 
 /// Fits p (and n, when given: it must then be of unit length) to the

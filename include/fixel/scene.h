@@ -53,7 +53,7 @@ struct Fixel {
 struct Scene {
   std::string name;
   std::string description;  ///< Free text: what the scene is, and any caveat.
-  Rational time_step;  ///< h > 0.
+  Rational time_step;       ///< h > 0.
   Body body;
   std::vector<Fixel> fixels;
   Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0; the lower end of an interval).
@@ -88,8 +88,8 @@ void check_fixels_on_boundary(const Scene& scene);
 
 /// Every value check on a scene built in code: h > 0, dof 2 or 3, mass and
 /// inertia > 0, vector lengths equal to dof, unit normals, friction and
-/// gaps >= 0, fixels on the outline (check_fixels_on_boundary). Throws SceneError as above. (The one-step rules n_c == dof
-/// and W_n nonsingular belong to the analyses that need them.)
+/// gaps >= 0, fixels on the outline (check_fixels_on_boundary). Throws SceneError as above. (The one-step rules n_c ==
+/// dof and W_n nonsingular belong to the analyses that need them.)
 void validate_scene(const Scene& scene);
 
 }  // namespace fixel
