@@ -207,8 +207,10 @@ void nearest_point(const Boundary& b, const Approx& p, int& best_piece, double& 
         const double len2 = d[0].x * d[0].x + d[0].y * d[0].y;
         s = len2 > 0 ? std::clamp(((p.x - c[0].x) * d[0].x + (p.y - c[0].y) * d[0].y) / len2, 0.0, 1.0) : 0.0;
       } else {
-        for (int it = 0; it < 20; ++it) {  // Newton on |B(s) − p|²
-          const Approx q = point_d(c, s), t = point_d(d, s);
+        for (int it = 0; it < 30; ++it) {  // Newton on |B(s) − p|²
+          const Approx q = point_d(c, s), legs = point_d(d, s);
+          const double degree = static_cast<double>(d.size());
+          const Approx t{degree * legs.x, degree * legs.y};
           const double g = (q.x - p.x) * t.x + (q.y - p.y) * t.y, h = t.x * t.x + t.y * t.y;
           if (!(h > 0)) break;
           s = std::clamp(s - g / h, 0.0, 1.0);
@@ -311,8 +313,21 @@ BoundaryFit fit_to_boundary(const Boundary& b, const Vec2& p, const Vec2* n) {
     if (g.size() <= 1 || tarski_query(g, Poly{Rational(1)}) == 0) continue;
     fit.on_boundary = true;
     fit.curve = piece.curve;
-    if (g.size() == 2) {  // one rational root
-      const Rational s = -g[0] / g[1];
+    std::optional<Rational> rational_root;
+    if (g.size() == 2) rational_root = -g[0] / g[1];
+    if (g.size() == 3) {  // monic quadratic: rational roots when the discriminant is a square
+      const Rational disc = g[1] * g[1] - 4 * g[0];
+      const Integer num = boost::multiprecision::numerator(disc), den = boost::multiprecision::denominator(disc);
+      const Integer rn = disc > 0 ? Integer(boost::multiprecision::sqrt(num)) : Integer(0),
+                    rd = boost::multiprecision::sqrt(den);
+      if (disc > 0 && rn * rn == num && rd * rd == den) {
+        const Rational root(rn, rd);
+        for (const Rational& s : {(-g[1] + root) / 2, (-g[1] - root) / 2})
+          if (s > 0 && s < 1) rational_root = s;
+      }
+    }
+    if (rational_root) {
+      const Rational s = *rational_root;
       fit.u = piece.u0 + s * (piece.u1 - piece.u0);
       fit.inward_normal = rot90(piece.derivative(s));
       if (is_zero(*fit.inward_normal)) fit.inward_normal.reset();
