@@ -3,7 +3,7 @@
 # Idempotent: does nothing (and touches no network) when all are present.
 set -euo pipefail
 packages=(
-  cmake g++ make
+  cmake g++ make librsvg2-bin
   clang clang-format libclang-rt-14-dev
   libcgal-dev libgmp-dev libeigen3-dev libboost-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev

@@ -1,5 +1,7 @@
 #include "fixel/interval.h"
 
+#include "fixel/internal/readable.h"
+
 namespace fixel {
 
 bool Magnitudes::ends_cross(const Rational& lo, bool lo_closed, const std::optional<Rational>& hi, bool hi_closed) {
@@ -61,6 +63,12 @@ std::vector<Magnitudes> Magnitudes::subtract(const Magnitudes& B) const {
 std::string Magnitudes::describe() const {
   if (empty) return "no common magnitude";
   return std::string(lo_closed ? "[" : "(") + to_string(lo) + ", " + (hi ? to_string(*hi) : "inf") +
+         (hi && hi_closed ? "]" : ")");
+}
+
+std::string Magnitudes::describe_readable() const {
+  if (empty) return "no common magnitude";
+  return std::string(lo_closed ? "[" : "(") + internal::readable(lo) + ", " + (hi ? internal::readable(*hi) : "inf") +
          (hi && hi_closed ? "]" : ")");
 }
 

@@ -1,4 +1,5 @@
 #include "fixel/io.h"
+#include "fixel/internal/json_approx.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -9,6 +10,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/readable.h"
 #include "fixel/off_io.h"
 #include "fixel/wrench_cone.h"
 
@@ -24,10 +26,15 @@ json exact(const VectorQ& v) {
   return out;
 }
 
-std::string text(const VectorQ& v) {
-  std::string s = "(";
-  for (int k = 0; k < v.size(); ++k) s += (k ? ", " : "") + to_string(v[k]);
-  return s + ")";
+// Exact with decimals beside (docs/cli.md, "Numbers").
+std::string text(const VectorQ& v) { return internal::readable(v); }
+
+// The warning that other one-step outcomes exist.
+std::string outcomes_warning(const OutcomeCount& c) {
+  if (c.total <= 1) return "";
+  return "  warning: the one-step model has " + std::to_string(c.total) + " outcomes for this impulse (" +
+         std::to_string(c.seating) + " seat, " + std::to_string(c.total - c.seating) +
+         " do not); `fixel solutions` lists them, `fixel seat --guaranteed` says whether every one seats.\n";
 }
 
 std::string halfspace_text(const Halfspace& h) {
@@ -40,7 +47,9 @@ std::string halfspace_text(const Halfspace& h) {
     s += s.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ");
     s += coef + names[k];
   }
-  return s + " >= " + to_string(h.c);
+  const std::string c = to_string(h.c);
+  const std::string r = internal::readable(h.c);
+  return s + " >= " + (r == c ? c : r);
 }
 
 }  // namespace
@@ -97,7 +106,7 @@ json seat_extras_json(const SeatReport& report, const GuaranteedSet* G) {
 std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
   std::ostringstream out;
   if (G) {
-    out << "Guaranteed set G (impulses whose every one-step outcome seats): " << G->pieces.size()
+    out << "Guaranteed set G (one-step: guaranteed, every outcome of the one-step model seats): " << G->pieces.size()
         << " convex piece(s); " << G->non_seating.size() << " non-seating set(s) meet S\n";
     for (const auto& n : G->non_seating)
       out << "  non-seating: modes " << modes_text(n.modes) << ", fixel " << n.open_fixel << " stays open, where\n"
@@ -105,15 +114,21 @@ std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
     out << "  lost fraction of S (grid sample, docs/theory.md §9): " << to_string(*report.lost_fraction) << "\n";
     if (report.impulse)
       out << "Impulse p = " << text(report.impulse->impulse)
-          << (*report.impulse->guaranteed ? " is GUARANTEED to seat the part.\n"
-                                          : " is NOT guaranteed to seat the part.\n");
+          << (*report.impulse->guaranteed
+                  ? " is IN G (one-step: guaranteed): every one-step outcome seats.\n"
+                  : " is NOT in G: not every one-step outcome seats (one-step: not guaranteed).\n");
   }
   if (report.stable) {
-    out << "Seat-and-stay set S ∩ h·C_stab:\n" << polyhedron_text(report.seat_and_stay);
+    out << "Seat-and-stay set S ∩ h·C_stab (one-step: can seat, and the same wrench, sustained, is weakly stable at "
+           "the seat):\n"
+        << polyhedron_text(report.seat_and_stay);
     if (report.impulse)
       out << "Impulse p = " << text(report.impulse->impulse)
-          << (*report.impulse->seat_and_stay ? " seats the part and keeps it seated.\n"
-                                             : " is not in the seat-and-stay set.\n");
+          << (*report.impulse->seat_and_stay
+                  ? " is in the seat-and-stay set: some one-step outcome seats, and the same wrench held would keep "
+                    "the seat weakly stable. This is not a guarantee: other outcomes and later steps may reopen a gap "
+                    "(see --guaranteed, `fixel solutions`, and `seat --sustained`).\n"
+                  : " is not in the seat-and-stay set.\n");
   }
   return out.str();
 }
@@ -135,6 +150,8 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport&
   if (report.impulse) {
     doc["impulse"] = exact(report.impulse->impulse);
     doc["contains"] = report.impulse->in_S;
+    doc["meaning"] = "one-step: can seat";
+    doc["outcomes"] = {{"total", report.impulse->outcomes.total}, {"seating", report.impulse->outcomes.seating}};
     if (report.impulse->y) {
       doc["y"] = exact(*report.impulse->y);
       doc["y_names"] = report.impulse->y_names;
@@ -142,6 +159,7 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport&
   }
   const json extras = seat_extras_json(report, G);  // items() must not outlive it
   for (const auto& [key, value] : extras.items()) doc[key] = value;
+  internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
 
@@ -154,10 +172,12 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport&
 static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const SeatReport& report) {
   std::ostringstream out;
   out << "Seating set S of scene \"" << scene.name << "\" (dof " << S.dof << ", " << scene.num_contacts()
-      << " fixels)\n";
+      << " fixels; the one-step model: one impulse, one backward-Euler step of h = "
+      << internal::readable(scene.time_step) << " s)\n";
+  out << "  units: impulses in N*s (px, py) and N*m*s (ptheta); velocities in m/s and rad/s; frame A\n";
   out << "  seating velocity nu+ = " << text(S.nu_plus) << "\n";
   for (int i = 0; i < scene.num_contacts(); ++i)
-    out << "  fixel " << i << ": v_t = " << to_string(S.tangential_velocity[i])
+    out << "  fixel " << i << ": v_t = " << internal::readable(S.tangential_velocity[i]) << " m/s"
         << (S.sliding[i] > 0   ? ", slides +t"
             : S.sliding[i] < 0 ? ", slides -t"
                                : ", sticks")
@@ -170,20 +190,24 @@ static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, cons
   if (report.impulse) {
     const bool in = report.impulse->in_S;
     out << "Impulse p = " << text(report.impulse->impulse) << " is " << (in ? "IN" : "NOT in") << " S";
-    out << (in ? ": it is consistent with seating in one step.\n" : ".\n");
+    out << (in ? " (one-step: can seat): some outcome of the one-step model seats the part.\n"
+               : " (one-step: cannot seat): no outcome of the one-step model seats the part.\n");
+    out << outcomes_warning(report.impulse->outcomes);
     if (!report.impulse->y) return out.str();  // eq. 27 needs every fixel sliding
     const VectorQ& y = *report.impulse->y;
     out << "  eq. (27) y = K^-1 (P p + a):\n";
     for (int k = 0; k < y.size(); ++k)
-      out << "    " << report.impulse->y_names[k] << " = " << to_string(y[k]) << (y[k] < 0 ? "   < 0" : "") << "\n";
+      out << "    " << report.impulse->y_names[k] << " = " << internal::readable(y[k]) << (y[k] < 0 ? "   < 0" : "")
+          << "\n";
   }
   return out.str();
 }
 
-std::string simulation_json(const Scene& scene, const Simulation& sim) {
+std::string simulation_json(const Scene& scene, const Simulation& sim, const OutcomeCount* first_step) {
   json doc;
   doc["scene"] = scene.name;
   doc["seated"] = sim.seated;
+  if (first_step) doc["outcomes_of_first_step"] = {{"total", first_step->total}, {"seating", first_step->seating}};
   doc["steps"] = json::array();
   for (const auto& s : sim.steps)
     doc["steps"].push_back({{"q", exact(s.q)},
@@ -192,17 +216,22 @@ std::string simulation_json(const Scene& scene, const Simulation& sim) {
                             {"p_n", exact(s.p_n)},
                             {"p_f", exact(s.p_f)},
                             {"pivots", s.pivots}});
+  internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
 
-std::string simulation_text(const Scene& scene, const Simulation& sim) {
+std::string simulation_text(const Scene& scene, const Simulation& sim, const OutcomeCount* first_step) {
   std::ostringstream out;
-  out << "Simulation of scene \"" << scene.name << "\", " << sim.steps.size() << " step(s), exact Lemke per step\n";
+  out << "Simulation of scene \"" << scene.name << "\", " << sim.steps.size()
+      << " step(s) of h = " << internal::readable(scene.time_step)
+      << " s, exact Lemke per step (one outcome per step: the one Lemke finds)\n";
+  out << "  units: q in m, m, rad; velocity in m/s, m/s, rad/s; gaps in m; impulses in N*s\n";
   for (std::size_t k = 0; k < sim.steps.size(); ++k) {
     const auto& s = sim.steps[k];
     out << "  step " << k + 1 << ": q = " << text(s.q) << ", velocity = " << text(s.velocity) << "\n";
     out << "          gaps = " << text(s.gaps) << ", p_n = " << text(s.p_n) << ", p_f = " << text(s.p_f) << "\n";
   }
+  if (first_step) out << outcomes_warning(*first_step);
   out << (sim.seated ? "SEATED: every gap is exactly 0 after the last step.\n"
                      : "NOT seated: some gap is open after the last step.\n");
   return out.str();
@@ -234,13 +263,15 @@ std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::v
   }
   doc["seating"] = seating;
   doc["non_seating"] = static_cast<int>(outcomes.size()) - seating;
+  internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
 
 std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
   std::ostringstream out;
-  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " (" << outcomes.size()
-      << " distinct, by exact enumeration of contact modes)\n";
+  out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " N*s ("
+      << outcomes.size() << " distinct, by exact enumeration of contact modes)\n";
+  out << "  units: velocity in m/s, m/s, rad/s; gaps in m; impulses in N*s\n";
   int seating = 0;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {
     const auto& o = outcomes[k];
@@ -275,6 +306,7 @@ std::string verification_json(const std::vector<VerificationCheck>& checks) {
     all = all && c.passed;
   }
   doc["passed"] = all;
+  internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
 

@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fixel/internal/json_approx.h"
+#include "fixel/internal/readable.h"
 #include "fixel/io.h"
 
 namespace fixel {
@@ -22,6 +24,20 @@ json magnitudes_json(const RegionInterval& r) {
           {"approx", {to_double(m.lo), m.hi ? json(to_double(*m.hi)) : json(nullptr)}}};
 }
 
+json point_json(const Vec2& p) { return json::array({to_string(p.x), to_string(p.y)}); }
+
+// Arc length per status, m (display).
+std::map<std::string, double> status_arc_lengths(const Region& region) {
+  std::map<std::string, double> len{{"in", 0}, {"out", 0}, {"partial", 0}};
+  for (std::size_t k = 0; k < region.intervals.size() && k < region.places.size(); ++k)
+    len[to_string(region.intervals[k].status)] += region.places[k].arc_length;
+  return len;
+}
+
+std::string percent(double part, double whole) {
+  return whole > 0 ? internal::decimal(100 * part / whole, 3) + "%" : "n/a";
+}
+
 std::map<std::string, Rational> status_lengths(const Region& region) {
   std::map<std::string, Rational> len{{"in", 0}, {"out", 0}, {"partial", 0}};
   for (const auto& r : region.intervals) len[to_string(r.status)] += r.u1 - r.u0;
@@ -35,9 +51,12 @@ std::string region_json(const Scene& scene, const Region& region) {
   doc["method"] = method_of(region);
   doc["resolution"] = region.resolution ? json(to_string(*region.resolution)) : json(nullptr);
   doc["pusher_mu"] = to_string(region.pusher_mu);
+  doc["target"] = region.target;
+  doc["meaning"] = {{"in", in_meaning(region)}, {"physics", "docs/physics.md"}};
   doc["intervals"] = json::array();
   std::map<std::string, int> counts{{"in", 0}, {"out", 0}, {"partial", 0}};
-  for (const auto& r : region.intervals) {
+  for (std::size_t k = 0; k < region.intervals.size(); ++k) {
+    const RegionInterval& r = region.intervals[k];
     ++counts[to_string(r.status)];
     doc["intervals"].push_back({{"curve", r.curve},
                                 {"u0", to_string(r.u0)},
@@ -45,6 +64,15 @@ std::string region_json(const Scene& scene, const Region& region) {
                                 {"status", to_string(r.status)},
                                 {"half_line", r.half_line},
                                 {"magnitudes", magnitudes_json(r)}});
+    if (k < region.places.size()) {
+      const IntervalPlace& at = region.places[k];
+      json& j = doc["intervals"].back();
+      j["start"] = point_json(at.start_A);
+      j["end"] = point_json(at.end_A);
+      j["arc_length"] = at.arc_length;
+      j["push_direction"] =
+          at.push_direction_A ? json::array({(*at.push_direction_A)[0], (*at.push_direction_A)[1]}) : json(nullptr);
+    }
     if (!r.magnitude_set.empty()) {
       json set = json::array();
       for (const auto& m : r.magnitude_set) {
@@ -59,6 +87,9 @@ std::string region_json(const Scene& scene, const Region& region) {
   json lengths;
   for (const auto& [k, v] : status_lengths(region)) lengths[k] = to_string(v);
   doc["lengths"] = lengths;
+  json arc = {{"outline", region.outline_length}};
+  for (const auto& [k, v] : status_arc_lengths(region)) arc[k] = v;
+  doc["arc_lengths"] = arc;
   doc["stats"] = {{"cone_tests", region.stats.cone_tests},
                   {"lp_tests", region.stats.lp_tests},
                   {"point_tests", region.stats.point_tests},
@@ -66,33 +97,56 @@ std::string region_json(const Scene& scene, const Region& region) {
                   {"partial_length", to_string(region.stats.partial_length)},
                   {"seconds", region.stats.seconds}};
   if (region.push != "step") doc["push"] = region.push;
+  internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
 
 std::string region_text(const Scene& scene, const Region& region) {
   std::ostringstream out;
   const bool sustained = region.push == "sustained";
+  const std::string meaning = in_meaning(region);
   out << "Pushing region of scene \"" << scene.name << "\" (" << (sustained ? "sustained push, " : "")
       << method_of(region);
   if (region.resolution) out << ", resolution " << to_string(*region.resolution);
   out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
-  for (const auto& r : region.intervals) {
+  out << "  IN means \"" << meaning << "\""
+      << (region.target == "S"   ? ": some outcome of the one-step model seats"
+          : region.target == "G" ? ": every outcome of the one-step model seats"
+                                 : ": the held push drives the part into its seat")
+      << "; what it is worth in a physics engine: docs/physics.md\n";
+  out << "  each line: curve and parameter span, status, where it is on the part (m, frame A), outline length, the "
+         "frictionless push direction\n";
+  for (std::size_t k = 0; k < region.intervals.size(); ++k) {
+    const RegionInterval& r = region.intervals[k];
     out << "  curve " << r.curve << "  u in [" << to_string(r.u0) << ", " << to_string(r.u1) << "]  ";
     out << (r.status == RegionStatus::kIn ? "IN     " : r.status == RegionStatus::kOut ? "out    " : "partial");
+    if (k < region.places.size()) {
+      const IntervalPlace& at = region.places[k];
+      auto xy = [](const Vec2& p) {
+        return "(" + internal::decimal(to_double(p.x), 4) + ", " + internal::decimal(to_double(p.y), 4) + ")";
+      };
+      out << "  " << (r.u0 == r.u1 ? "at " + xy(at.start_A) : xy(at.start_A) + " to " + xy(at.end_A));
+      if (r.u0 != r.u1) out << ", " << internal::decimal(at.arc_length, 3) << " m";
+      if (r.status == RegionStatus::kIn && at.push_direction_A)
+        out << ", push along (" << internal::decimal((*at.push_direction_A)[0], 3) << ", "
+            << internal::decimal((*at.push_direction_A)[1], 3) << ")";
+    }
     if (r.status == RegionStatus::kIn) {
-      out << (r.half_line ? "  half-line" : "");
+      out << "  [" << meaning << "]" << (r.half_line ? " half-line" : "");
       if (sustained)
-        out << "  any magnitude (sustained push: seats and stays)";
+        out << ", any magnitude";
       else if (!r.magnitudes.empty)
-        out << "  |p| in " << r.magnitudes.describe() << " N*s";
+        out << ", |p| in " << r.magnitudes.describe_readable() << " N*s";
       else
-        out << "  no common magnitude";
+        out << ", no common magnitude";
     }
     out << "\n";
   }
-  const auto len = status_lengths(region);
-  out << "parameter length: in " << to_string(len.at("in")) << ", out " << to_string(len.at("out")) << ", partial "
-      << to_string(len.at("partial")) << "\n";
+  const auto arc = status_arc_lengths(region);
+  out << "outline " << internal::decimal(region.outline_length, 4) << " m: IN (" << meaning << ") "
+      << percent(arc.at("in"), region.outline_length) << ", out " << percent(arc.at("out"), region.outline_length)
+      << ", partial " << percent(arc.at("partial"), region.outline_length)
+      << " of its arc length (exact parameter lengths: --json \"lengths\")\n";
   out << "cone tests " << region.stats.cone_tests << ", LP tests " << region.stats.lp_tests << ", point tests "
       << region.stats.point_tests << ", depth " << region.stats.depth << ", " << region.stats.seconds << " s\n";
   return out.str();

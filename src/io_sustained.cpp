@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/json_approx.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
 
@@ -92,6 +93,7 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
     doc["contains"] = wrench->contains ? json(*wrench->contains) : json(nullptr);
     if (!wrench->why_not.empty()) doc["why_not"] = wrench->why_not;
   }
+  internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
 

@@ -220,4 +220,11 @@ bool same_outcome(const Outcome& a, const Outcome& b) {
   return a.velocity == b.velocity && a.p_n == b.p_n && a.p_t == b.p_t;
 }
 
+OutcomeCount count_outcomes(const std::vector<Outcome>& outcomes) {
+  OutcomeCount c;
+  c.total = static_cast<int>(outcomes.size());
+  for (const auto& o : outcomes) c.seating += o.seated ? 1 : 0;
+  return c;
+}
+
 }  // namespace fixel

@@ -245,6 +245,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   region.cone = options.cone;
   region.resolution = options.resolution;
   region.pusher_mu = mu;
+  locate_intervals(scene, region);
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
 }
@@ -300,6 +301,7 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   region.target = target.name();
   region.sampled = true;
   region.pusher_mu = mu;
+  locate_intervals(scene, region);
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
 }

@@ -26,6 +26,7 @@ SeatReport seat_report(const Scene& scene, const SeatingSet& S, const std::optio
   }
   if (G) v.guaranteed = G->contains(*impulse, S);
   if (stable) v.seat_and_stay = r.seat_and_stay.contains(*impulse);
+  v.outcomes = count_outcomes(enumerate_outcomes(scene, *impulse));
   r.impulse = v;
   return r;
 }

@@ -327,7 +327,7 @@ std::string SustainedSet::why_not(const VectorQ& w_W) const {
   }
 }
 
-SustainedSet sustained_set(const Scene& scene) {
+SustainedSet sustained_set(const Scene& scene, bool check_stability) {
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "the sustained-push set needs a rigid body (dof 3)");
   const int nc = scene.num_contacts();
   if (nc != 3) throw SceneError("fixels", std::to_string(nc) + " fixels", "the sustained-push set needs exactly 3");
@@ -364,7 +364,7 @@ SustainedSet sustained_set(const Scene& scene) {
   }
   std::visit([&](const auto& data) { internal::fill_public(J, data); }, d->data);
   J.data = d;
-  J.stability_checks = check_strong_stability(scene, J);
+  J.stability_checks = check_stability ? check_strong_stability(scene, J) : 0;
   return J;
 }
 

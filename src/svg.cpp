@@ -8,7 +8,7 @@
 
 namespace fixel {
 
-void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet& G,
+void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet* G,
                           const Rational& theta, const std::optional<VectorQ>& impulse) {
   if (S.dof != 3) throw InputError("svg(path)", path, "the S/G picture needs dof 3");
   // The window: the apex and the tips apex + 2 r of every ray, in (px, py).
@@ -35,11 +35,15 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
     for (int j = 0; j < n; ++j) {
       VectorQ p(3);
       p << cx - span / 2 + span * Rational(2 * i + 1, 2 * n), cy + span / 2 - span * Rational(2 * j + 1, 2 * n), theta;
-      const bool s = S.contains(p), g = s && G.contains(p, S);
+      const bool s = S.contains(p), g = s && G && G->contains(p, S);
       if (!s) continue;
       (g ? in_g : lost)++;
       svg << "<rect x='" << left + i * size / n << "' y='" << top + j * size / n << "' width='" << size / n + 0.3
-          << "' height='" << size / n + 0.3 << "' fill='" << (g ? "#1a9850" : "#d73027") << "'/>\n";
+          << "' height='" << size / n + 0.3 << "' fill='"
+          << (!G  ? "#74add1"
+              : g ? "#1a9850"
+                  : "#d73027")
+          << "'/>\n";
     }
   auto mark = [&](const VectorQ& p, const char* label, const char* colour) {
     const double x = left + to_double((p[0] - (cx - span / 2)) / span) * size;
@@ -52,17 +56,24 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
   if (impulse && (*impulse)[2] == theta) mark(*impulse, "p", "black");
   svg << "<rect x='" << left << "' y='" << top << "' width='" << size << "' height='" << size
       << "' fill='none' stroke='#999'/>\n<text x='" << left << "' y='24' font-size='16' font-weight='bold'>"
-      << "seating set S and guaranteed set G: " << scene.name << "</text>\n<text x='" << left
-      << "' y='44'>slice p_theta = " << to_string(theta) << ", p_x in [" << to_double(cx - span / 2) << ", "
-      << to_double(cx + span / 2) << "], p_y in [" << to_double(cy - span / 2) << ", " << to_double(cy + span / 2)
-      << "] (N*s)</text>\n";
+      << (G ? "seating set S and guaranteed set G: " : "seating set S (one-step: can seat): ") << scene.name
+      << "</text>\n<text x='" << left << "' y='44'>slice p_theta = " << to_string(theta) << ", p_x in ["
+      << to_double(cx - span / 2) << ", " << to_double(cx + span / 2) << "], p_y in [" << to_double(cy - span / 2)
+      << ", " << to_double(cy + span / 2) << "] (N*s)</text>\n";
   const double ly = top + size + 28;
-  svg << "<rect x='" << left << "' y='" << ly - 10 << "' width='14' height='10' fill='#1a9850'/><text x='" << left + 20
-      << "' y='" << ly << "'>in G: every outcome seats (" << in_g << " cells)</text>\n<rect x='" << left + 330
-      << "' y='" << ly - 10 << "' width='14' height='10' fill='#d73027'/><text x='" << left + 350 << "' y='" << ly
-      << "'>in S, not in G (" << lost << " cells)</text>\n<text x='" << left << "' y='" << ly + 22
-      << "'>white: outside S. Each cell's centre is decided exactly; " << G.pieces.size() << " pieces, "
-      << G.non_seating.size() << " non-seating sets meet S.</text>\n</svg>\n";
+  if (!G) {
+    svg << "<rect x='" << left << "' y='" << ly - 10 << "' width='14' height='10' fill='#74add1'/><text x='"
+        << left + 20 << "' y='" << ly << "'>in S: one-step: can seat (" << lost << " cells)</text>\n<text x='" << left
+        << "' y='" << ly + 22
+        << "'>white: outside S. Each cell's centre is decided exactly (--guaranteed adds G).</text>\n</svg>\n";
+  } else {
+    svg << "<rect x='" << left << "' y='" << ly - 10 << "' width='14' height='10' fill='#1a9850'/><text x='"
+        << left + 20 << "' y='" << ly << "'>in G: one-step: guaranteed (" << in_g << " cells)</text>\n<rect x='"
+        << left + 330 << "' y='" << ly - 10 << "' width='14' height='10' fill='#d73027'/><text x='" << left + 350
+        << "' y='" << ly << "'>in S, not in G (" << lost << " cells)</text>\n<text x='" << left << "' y='" << ly + 22
+        << "'>white: outside S. Each cell's centre is decided exactly; " << G->pieces.size() << " pieces, "
+        << G->non_seating.size() << " non-seating sets meet S.</text>\n</svg>\n";
+  }
   std::ofstream out(path);
   if (!out) throw InputError("svg(path)", path, "cannot be written");
   out << svg.str();

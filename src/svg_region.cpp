@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/readable.h"
 #include "fixel/svg.h"
 #include "fixel/wrench_cone.h"
 
@@ -37,10 +38,11 @@ std::pair<double, double> lonlat(double fx, double fy, double m) {
 double px(double lon) { return kPanel + 2 * kMargin + 20 + (lon + 180) / 360 * kPanel; }
 double py(double lat) { return kMargin + 50 + kPanel / 4 + (90 - lat) / 180 * kPanel / 2; }  // equal-angle scale
 
-// Does the ray from b0 along w hit S? Doubles, for shading only.
-bool hits_display(const SeatingSet& S, const VectorQ& b0, double fx, double fy, double m) {
+// Does the ray from b0 along w meet {p : a·p >= c for every row}? Doubles,
+// for shading only.
+bool hits_display(const std::vector<Halfspace>& rows, const VectorQ& b0, double fx, double fy, double m) {
   double lo = 0, hi = INFINITY;
-  for (const auto& h : S.halfspaces) {
+  for (const auto& h : rows) {
     const double a = d(h.a[0]) * fx + d(h.a[1]) * fy + d(h.a[2]) * m;
     const double b = d(h.c) - (d(h.a[0]) * d(b0[0]) + d(h.a[1]) * d(b0[1]) + d(h.a[2]) * d(b0[2]));
     if (a > 1e-15)
@@ -111,7 +113,13 @@ void draw_legend(std::ostream& svg, const Scene& scene, const Region& region, co
 void draw_outline_panel(std::ostream& svg, const Frame& F, const Boundary& b, const Region& region) {
   svg << "<rect x='" << kMargin << "' y='" << kMargin + 50 << "' width='" << kPanel << "' height='" << kPanel
       << "' fill='none' stroke='#ddd'/>\n";
-  for (const auto& r : region.intervals) {
+  // Out first, then in, then partial: an undecided stretch is never hidden under another colour.
+  std::vector<const RegionInterval*> order;
+  for (RegionStatus s : {RegionStatus::kOut, RegionStatus::kIn, RegionStatus::kPartial})
+    for (const auto& r : region.intervals)
+      if (r.status == s) order.push_back(&r);
+  for (const RegionInterval* rp : order) {
+    const RegionInterval& r = *rp;
     for (const auto& piece : b.pieces) {
       if (piece.curve != r.curve || piece.u1 < r.u0 || piece.u0 > r.u1) continue;
       const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
@@ -129,6 +137,60 @@ void draw_outline_panel(std::ostream& svg, const Frame& F, const Boundary& b, co
       }
       svg << "'/>\n";
     }
+  }
+}
+
+// Axes of frame A through its origin (when in view) and a scale bar of a
+// round length, so that distances can be read off the picture.
+void draw_axes_and_scale(std::ostream& svg, const Frame& F, double span) {
+  const double left = kMargin, top = kMargin + 50, right = kMargin + kPanel, bottom = kMargin + 50 + kPanel;
+  svg << "<g id='axes' stroke='#999' stroke-width='0.8'>";
+  const double ox = F.x(0), oy = F.y(0);
+  if (ox > left && ox < right)
+    svg << "<line x1='" << ox << "' y1='" << bottom << "' x2='" << ox << "' y2='" << top << "'/>";
+  if (oy > top && oy < bottom)
+    svg << "<line x1='" << left << "' y1='" << oy << "' x2='" << right << "' y2='" << oy << "'/>";
+  svg << "</g>\n<text x='" << right - 12 << "' y='" << (oy > top && oy < bottom ? oy - 4 : bottom - 4)
+      << "' fill='#666'>x</text><text x='" << (ox > left && ox < right ? ox + 4 : left + 4) << "' y='" << top + 12
+      << "' fill='#666'>y</text>\n";
+  // A 1, 2 or 5 times 10^k length of at most a quarter of the panel.
+  double bar = std::pow(10.0, std::floor(std::log10(span / 4)));
+  for (double m : {5.0, 2.0})
+    if (bar * m <= span / 4) {
+      bar *= m;
+      break;
+    }
+  const double x0 = left + 12, y0 = bottom - 14, w = bar * F.scale;
+  svg << "<g id='scale-bar'><line x1='" << x0 << "' y1='" << y0 << "' x2='" << x0 + w << "' y2='" << y0
+      << "' stroke='black' stroke-width='2'/><line x1='" << x0 << "' y1='" << y0 - 4 << "' x2='" << x0 << "' y2='"
+      << y0 + 4 << "' stroke='black'/><line x1='" << x0 + w << "' y1='" << y0 - 4 << "' x2='" << x0 + w << "' y2='"
+      << y0 + 4 << "' stroke='black'/><text x='" << x0 << "' y='" << y0 - 6 << "'>" << internal::decimal(bar, 3)
+      << " m</text></g>\n";
+}
+
+// Each curve's number at its start point.
+void draw_curve_labels(std::ostream& svg, const Frame& F, const Boundary& b) {
+  for (std::size_t k = 0; k < b.curves.size(); ++k) {
+    const Vec2 p = b.curves[k].point(b.curves[k].u_begin());
+    svg << "<text class='curve-label' x='" << F.x(d(p.x)) + 5 << "' y='" << F.y(d(p.y)) - 5
+        << "' fill='#555' font-size='11'>curve " << k << "</text>\n";
+  }
+}
+
+// An arrow onto the middle of every IN stretch, along the push direction.
+void draw_push_arrows(std::ostream& svg, const Frame& F, const Region& region, double length) {
+  for (std::size_t k = 0; k < region.intervals.size() && k < region.places.size(); ++k) {
+    const RegionInterval& r = region.intervals[k];
+    const IntervalPlace& at = region.places[k];
+    if (r.status != RegionStatus::kIn || !at.push_direction_A || r.u0 == r.u1) continue;
+    const double mx = (d(at.start_A.x) + d(at.end_A.x)) / 2, my = (d(at.start_A.y) + d(at.end_A.y)) / 2;
+    const double dx = (*at.push_direction_A)[0], dy = (*at.push_direction_A)[1];
+    const double tx = F.x(mx), ty = F.y(my), sx = F.x(mx - length * dx), sy = F.y(my - length * dy);
+    const double ux = (tx - sx) / std::hypot(tx - sx, ty - sy), uy = (ty - sy) / std::hypot(tx - sx, ty - sy);
+    svg << "<g class='push-arrow' stroke='#1a9850' fill='#1a9850'><line x1='" << sx << "' y1='" << sy << "' x2='"
+        << tx - 6 * ux << "' y2='" << ty - 6 * uy << "' stroke-width='2'/><polygon points='" << tx << "," << ty << " "
+        << tx - 9 * ux - 4 * uy << "," << ty - 9 * uy + 4 * ux << " " << tx - 9 * ux + 4 * uy << ","
+        << ty - 9 * uy - 4 * ux << "'/></g>\n";
   }
 }
 
@@ -178,8 +240,8 @@ void draw_wrench_panel(std::ostream& svg, const Scene& scene, const Region& regi
   svg << "<text x='" << x0 << "' y='" << y0 - 8
       << "'>unit wrench directions: longitude = push direction, latitude = "
          "atan(moment / |force|)</text>\n<text x='"
-      << x0 << "' y='" << py(-90) + 50
-      << "'>curve: frictionless boundary wrench by status; outlines: tight piece cones</text>\n";
+      << x0 << "' y='" << py(-90) + 50 << "'>curve: boundary push wrench by status"
+      << (region.pusher_mu > 0 ? " (dashed: friction edges)" : "") << "; outlines: piece cones</text>\n";
   const int nlon = 120, nlat = 60;
   for (int i = 0; i < nlon; ++i)
     for (int j = 0; j < nlat; ++j) {
@@ -195,28 +257,34 @@ void draw_wrench_panel(std::ostream& svg, const Scene& scene, const Region& regi
   svg << "<rect x='" << x0 << "' y='" << y0 << "' width='" << kPanel << "' height='" << py(-90) - py(90)
       << "' fill='none' stroke='#999'/>\n<text x='" << x0 + 4 << "' y='" << py(-90) + 16 << "' fill='#3182bd'>"
       << pic.shade_caption << "</text>\n";
-  // Boundary wrench curve (frictionless normal), coloured by status.
-  for (const auto& r : region.intervals)
-    for (const auto& piece : b.pieces) {
-      if (piece.curve != r.curve || piece.u1 <= r.u0 || piece.u0 >= r.u1) continue;
-      const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
-      double last_lon = 1e9;
-      for (int k = 0; k <= 12; ++k) {
-        const Rational s = piece.local(a + (e - a) * Rational(k, 12));
-        const Vec2 p = piece.point(s), T = piece.derivative(s);
-        const double nx = -d(T.y), ny = d(T.x), len = std::hypot(nx, ny);
-        if (len == 0) continue;
-        const double rx = d(p.x) - cx, ry = d(p.y) - cy;
-        const auto [lon, lat] = lonlat(nx / len, ny / len, (rx * ny - ry * nx) / len);
-        if (std::abs(lon - last_lon) < 180 && last_lon < 1e8)
-          svg << " L" << px(lon) << "," << py(lat);
-        else
-          svg << (last_lon < 1e8 ? "'/>\n" : "") << "<path fill='none' stroke-width='3' stroke='" << colour(r.status)
-              << "' d='M" << px(lon) << "," << py(lat);
-        last_lon = lon;
+  // Boundary wrench curves coloured by status: the frictionless normal, or
+  // with a frictional pusher both edges of its friction cone (dashed).
+  std::vector<EdgeFamily> families = {EdgeFamily::kNormal};
+  if (region.pusher_mu > 0) families = {EdgeFamily::kPlus, EdgeFamily::kMinus};
+  for (EdgeFamily family : families)
+    for (const auto& r : region.intervals)
+      for (const auto& piece : b.pieces) {
+        if (piece.curve != r.curve || piece.u1 <= r.u0 || piece.u0 >= r.u1) continue;
+        const Rational a = std::max(piece.u0, r.u0), e = std::min(piece.u1, r.u1);
+        double last_lon = 1e9;
+        for (int k = 0; k <= 12; ++k) {
+          const Rational s = piece.local(a + (e - a) * Rational(k, 12));
+          const Vec2 p = piece.point(s), T = piece.derivative(s);
+          if (T.x == 0 && T.y == 0) continue;
+          const Vec2 dir = push_direction(T, family, region.pusher_mu);
+          const double nx = d(dir.x), ny = d(dir.y), len = std::hypot(nx, ny);
+          const double rx = d(p.x) - cx, ry = d(p.y) - cy;
+          const auto [lon, lat] = lonlat(nx / len, ny / len, (rx * ny - ry * nx) / len);
+          if (std::abs(lon - last_lon) < 180 && last_lon < 1e8)
+            svg << " L" << px(lon) << "," << py(lat);
+          else
+            svg << (last_lon < 1e8 ? "'/>\n" : "") << "<path class='wrench-curve' fill='none' stroke-width='3'"
+                << (family == EdgeFamily::kNormal ? "" : " stroke-dasharray='7,3'") << " stroke='" << colour(r.status)
+                << "' d='M" << px(lon) << "," << py(lat);
+          last_lon = lon;
+        }
+        if (last_lon < 1e8) svg << "'/>\n";
       }
-      if (last_lon < 1e8) svg << "'/>\n";
-    }
   // Tight cones of the Bézier pieces (frictionless), as outlines.
   for (const auto& piece : b.pieces) {
     const auto cone = segment_wrench_cone(piece, scene.body.p_AoCm_A, EdgeFamily::kNormal, 0, ConeMethod::kTight);
@@ -250,7 +318,10 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
       << "' font-family='sans-serif' font-size='13'>\n<rect width='100%' height='100%' fill='white'/>\n";
 
   draw_legend(svg, scene, region, method, pic);
+  draw_axes_and_scale(svg, F, span);
   draw_outline_panel(svg, F, *scene.body.boundary, region);
+  draw_curve_labels(svg, F, *scene.body.boundary);
+  draw_push_arrows(svg, F, region, 0.08 * span);
   draw_fixels(svg, F, scene, 0.12 * span);
   if (pic.ghost) draw_ghost(svg, F, scene, *pic.ghost);
   const double cx = d(scene.body.p_AoCm_A.x), cy = d(scene.body.p_AoCm_A.y);
@@ -268,13 +339,28 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
 
 }  // namespace
 
-void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region) {
+void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
+                      const GuaranteedSet* G) {
   Picture pic;
-  pic.in_label = "in: one push seats the part";
-  pic.shade_caption = "shaded: directions whose ray meets S (b0 + tau w in S, display grid)";
-  pic.shade = [&](double fx, double fy, double m) {
-    return hits_display(S, scene.background_impulse, fx, fy, m) ? 1 : 0;
-  };
+  const VectorQ& b0 = scene.background_impulse;
+  if (region.target == "G" && G) {
+    pic.in_label = "in: one-step: guaranteed (every one-step outcome seats)";
+    pic.shade_caption = "shaded: directions whose ray meets G (b0 + tau w in G, display grid)";
+    std::vector<std::vector<Halfspace>> pieces;
+    for (const auto& p : G->pieces) {
+      pieces.push_back(p.closed);
+      for (const auto& h : p.strict) pieces.back().push_back(h);  // the closure, for display
+    }
+    pic.shade = [pieces, &b0](double fx, double fy, double m) {
+      for (const auto& rows : pieces)
+        if (hits_display(rows, b0, fx, fy, m)) return 1;
+      return 0;
+    };
+  } else {
+    pic.in_label = "in: one-step: can seat (some one-step outcome seats)";
+    pic.shade_caption = "shaded: directions whose ray meets S (b0 + tau w in S, display grid)";
+    pic.shade = [&](double fx, double fy, double m) { return hits_display(S.halfspaces, b0, fx, fy, m) ? 1 : 0; };
+  }
   draw_region(path, scene, region, method_of(region) + (region.target == "G" ? ", against G" : ""), pic);
 }
 
@@ -297,7 +383,7 @@ void write_sustained_region_svg(const std::string& path, const Scene& scene, con
   for (const auto& jam : J.jam_cones)
     jams.push_back(jam.cone.exact ? rows(jam.cone.closed) : mids(jam.cone.closed_enclosure));
   Picture pic;
-  pic.in_label = "in: sustained push seats and stays (J)";
+  pic.in_label = "in: sustained push: seats and stays (J)";
   pic.shade_caption = "blue: directions in J; orange: into the seat, but two fixels can hold it";
   pic.push_caption = "push model: sustained (a held wrench, judged at the seated pose q*; dashed: the part at q*)";
   pic.ghost = J.pose.approx;

@@ -44,14 +44,15 @@ expect 2 '--points: 0 must be >= 1' -- "$fixel" sample "$src/data/scenes/blob.js
 P=29157/10540,-71119/105400,-1169839/263500
 expect 0 '"guaranteed": false' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --impulse $P --json
 expect 0 '"lost_fraction": "5/14"' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --json
-expect 0 'is NOT guaranteed' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --impulse $P --svg "$tmp/g.svg"
+expect 0 'is NOT in G: not every one-step outcome seats' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --impulse $P --svg "$tmp/g.svg"
 grep -q "<svg" "$tmp/g.svg" || { echo "FAIL: no S/G svg"; fail=1; }
 expect 0 '"seat_and_stay_contains": true' -- "$fixel" seat "$src/data/scenes/example2.json" --stable --impulse -1,-1,-1 --json
 expect 0 'guaranteed_0.off' -- "$fixel" dump "$src/data/scenes/nonunique.json" --guaranteed --off "$tmp/g"
 expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --json
 expect 0 '"magnitude_intervals"' -- "$fixel" sample "$src/data/scenes/nonunique_part.json" --guaranteed --points 8 --json
 expect 2 'with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
-expect 2 '--svg: ' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
+expect 0 'wrote' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
+grep -q "seating set S (one-step: can seat)" "$tmp/x.svg" || { echo "FAIL: seat --svg without G"; fail=1; }
 # push (Box2D) and region --validate: docs/physics.md.
 cat > "$tmp/square.json" <<'EOF2'
 {"name": "square", "time_step": "1",
@@ -113,7 +114,7 @@ expect 0 'IN J (sustained push: seats and stays)' -- "$fixel" seat "$P" --sustai
 expect 0 '"contains": false' -- "$fixel" seat "$P" --sustained --wrench 1,0,0 --json
 expect 0 'can escape' -- "$fixel" seat "$P" --sustained --wrench 1,0,0
 expect 0 '"push": "sustained"' -- "$fixel" region "$P" --push sustained --json
-expect 0 'any magnitude (sustained push: seats and stays)' -- "$fixel" region "$P" --push sustained --pusher-mu 0,1/10
+expect 0 '[sustained push: seats and stays] half-line, any magnitude' -- "$fixel" region "$P" --push sustained --pusher-mu 0,1/10
 expect 0 'wrote' -- "$fixel" region "$P" --push sustained --svg "$tmp/sus.svg"
 grep -q "push model: sustained" "$tmp/sus.svg" || { echo "FAIL: sustained svg legend"; fail=1; }
 expect 0 'sustained_jam_0_1.off' -- "$fixel" dump "$P" --off "$tmp/sus" --sustained
@@ -163,6 +164,49 @@ fi
 out=$("$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1.svg" 2>/dev/null); rc=$?
 if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: seat example1 --guaranteed --svg -> exit $rc, stdout '$out'"; fail=1; fi
 expect 2 'the S/G picture needs dof 3' -- "$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1.svg"
+
+# Answers say which model they belong to (issue: honest labels), and warn of other outcomes.
+N="$src/data/scenes/nonunique.json"; NP=29157/10540,-71119/105400,-1169839/263500
+expect 0 'is IN S (one-step: can seat): some outcome of the one-step model seats the part.' -- "$fixel" seat "$N" --impulse $NP
+expect 0 'warning: the one-step model has 3 outcomes for this impulse (1 seat, 2 do not)' -- "$fixel" seat "$N" --impulse $NP
+expect 0 'warning: the one-step model has 3 outcomes for this impulse' -- "$fixel" simulate "$N" --impulse $NP
+expect 0 '"outcomes_of_first_step": {' -- "$fixel" simulate "$N" --impulse $NP --json
+out=$("$fixel" seat "$src/data/scenes/example2.json" --impulse -1,-1,-1)
+if grep -q "warning:" <<<"$out"; then echo "FAIL: a one-outcome impulse warns"; fail=1; fi
+expect 0 'is in the seat-and-stay set: some one-step outcome seats, and the same wrench held would keep the seat weakly stable. This is not a guarantee' -- "$fixel" seat "$src/data/scenes/example2.json" --stable --impulse -1,-1,-1
+expect 0 'IN means "one-step: can seat"' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
+expect 0 '[one-step: can seat] half-line' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
+expect 0 'IN means "one-step: guaranteed"' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64
+expect 0 'docs/physics.md' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
+expect 0 '"in": "sustained push: seats and stays"' -- "$fixel" region "$src/data/scenes/polygon.json" --push sustained --json
+# Numbers a person can read: decimals beside exact values, units, approx doubles in JSON.
+expect 0 'p_n[0] = 161/202 ≈ 0.79703' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse -1,-1,-1
+expect 0 'fixel 0: v_t = 1/10 = 0.1 m/s' -- "$fixel" seat "$src/data/scenes/example2.json"
+expect 0 'units: impulses in N*s (px, py) and N*m*s (ptheta)' -- "$fixel" seat "$src/data/scenes/example2.json"
+expect 0 '|p| in [≈ 1708.31 (exact in --json), inf) N*s' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
+expect 0 '"apex_approx": [' -- "$fixel" seat "$src/data/scenes/example2.json" --json
+expect 0 '"u0_approx": 3.0' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --json
+# Answers on the part: end points, outline length, push direction, arc-length shares.
+expect 0 '(1.763, 1.104) to (0.3793, 1.748), 1.57 m, push along (-0.44, -0.898)' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
+expect 0 'outline 12.54 m: IN (one-step: can seat) 12.5%' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64
+expect 0 '"push_direction": [' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --json
+expect 0 '"arc_lengths": {' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --json
+
+# The region picture: axes, a scale bar, curve numbers, push arrows on IN stretches, labels by model;
+# and it rasterises (librsvg, as a viewer would) to a PNG of the stated size.
+"$fixel" region "$src/data/scenes/example2_rounded.json" --resolution 1/256 --svg "$tmp/rr.svg" > /dev/null
+for element in "id='axes'" "id='scale-bar'" "class='curve-label'" "class='push-arrow'" "in: one-step: can seat"; do
+  grep -qF "$element" "$tmp/rr.svg" || { echo "FAIL: region svg lacks $element"; fail=1; }
+done
+[ "$(grep -c "class='push-arrow'" "$tmp/rr.svg")" -eq 2 ] || { echo "FAIL: want one arrow per IN stretch (2)"; fail=1; }
+"$fixel" region "$src/data/scenes/blob.json" --resolution 1/64 --pusher-mu 1/10 --svg "$tmp/rf.svg" > /dev/null
+grep -q "stroke-dasharray='7,3'" "$tmp/rf.svg" || { echo "FAIL: frictional pusher edges not drawn"; fail=1; }
+"$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --svg "$tmp/rg.svg" > /dev/null
+grep -q "ray meets G" "$tmp/rg.svg" || { echo "FAIL: --guaranteed picture not shaded by G"; fail=1; }
+if command -v rsvg-convert > /dev/null; then
+  rsvg-convert -w 1100 "$tmp/rr.svg" -o "$tmp/rr.png" || { echo "FAIL: svg does not rasterise"; fail=1; }
+  head -c 8 "$tmp/rr.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "FAIL: not a PNG"; fail=1; }
+fi
 
 # An unwritable picture path is refused before any report is printed.
 for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polygon.json --push sustained" \
@@ -216,5 +260,26 @@ expect 2 '--svg: x.svg draws one scene' -- "$fixel" region "$src/data/scenes/pol
 expect 0 'background_impulse b0 = (29157/10540' -- "$fixel" seat "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
 expect 0 '"non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --json
 expect 0 'b0 + p' -- "$fixel" simulate "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
+# fixel design (docs/design.md): the house part of tests/design_test.cpp, an empty fixels list, four listed
+# candidates; the mirror pair ties and keeps the candidates' order, and the two {B, L, R} triples are singular.
+cat > "$tmp/house.json" <<'JSON'
+{"name": "house", "time_step": "1",
+ "body": {"dof": 3, "mass": "1",
+          "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","0"], ["0","1"], ["-1","0"], ["-1","-1"]]}]},
+ "fixels": []}
+JSON
+echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}, {"curve": 0, "u": "9/2"}, {"curve": 0, "u": "3/2"}]}' > "$tmp/house_c.json"
+expect 0 '"triple": [' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
+expect 0 '"singular": 2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
+expect 0 '#1 fixels [0] curve 0 u=1/4 [1] curve 0 u=3/4 [2] curve 0 u=9/2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --jobs 2
+expect 0 'wrote' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --svg "$tmp/house.svg"
+echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}]}' > "$tmp/two.json"
+expect 0 'no layout: only 2 candidates: a layout needs three fixels' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json"
+expect 2 '--spacing: 0 must be > 0' -- "$fixel" design "$tmp/house.json" --spacing 0
+expect 2 '--top: 0 must be > 0' -- "$fixel" design "$tmp/house.json" --top 0
+expect 2 'candidates[0].u: 6 is off curve 0' -- "$fixel" design "$tmp/house.json" --candidates <(echo '{"candidates": [{"curve": 0, "u": "6"}]}')
+expect 2 'body.boundary: is missing' -- "$fixel" design "$src/data/scenes/example2.json"
+expect 2 'cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --svg "$tmp/no/x.svg"
+expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --max-seconds 0.5 --quiet
 
 exit $fail

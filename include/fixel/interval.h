@@ -34,6 +34,9 @@ struct Magnitudes {
   std::vector<Magnitudes> subtract(const Magnitudes& other) const;
   /// "[lo, hi)", "(0, inf)", or "no common magnitude" when empty (the CLI's wording).
   std::string describe() const;
+  /// The same for people: short fractions with their decimals, long ones
+  /// as decimals only (docs/cli.md, "Numbers"); "no common magnitude" when empty.
+  std::string describe_readable() const;
 };
 
 }  // namespace fixel

@@ -47,9 +47,12 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
 
 /// `fixel simulate --json`: {"seated", "steps": [{"q", "velocity", "gaps",
 /// "p_n", "p_f", "pivots"}]}.
-std::string simulation_json(const Scene& scene, const Simulation& sim);
+/// With `first_step`, the count of one-step outcomes of the first impulse
+/// ("outcomes_of_first_step": {"total", "seating"}; the text warns when
+/// there is more than one).
+std::string simulation_json(const Scene& scene, const Simulation& sim, const OutcomeCount* first_step = nullptr);
 /// The same as a readable report.
-std::string simulation_text(const Scene& scene, const Simulation& sim);
+std::string simulation_text(const Scene& scene, const Simulation& sim, const OutcomeCount* first_step = nullptr);
 
 /// `fixel solutions --json`: {"impulse", "solutions": [{"seated", "modes",
 /// "velocity", "gaps", "p_n", "p_t", "isolated"}], "seating": n, "non_seating": m}.

@@ -33,6 +33,13 @@ struct Outcome {
   bool isolated = true;
 };
 
+/// How many distinct one-step outcomes an impulse has, and how many seat.
+struct OutcomeCount {
+  int total = 0;
+  int seating = 0;
+};
+OutcomeCount count_outcomes(const std::vector<Outcome>& outcomes);
+
 /// A polyhedron {x : A_eq x = b_eq, A_in x ≥ b_in} in the variables
 /// x = (ν^{ℓ+1}, p_n, p_t) of size dof + 2 n_c.
 struct ModeSystem {

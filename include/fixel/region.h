@@ -3,6 +3,7 @@
 /// The pushing region (paper §5): where on the boundary a single
 /// push seats the part, and how hard to push.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,15 @@ enum class RegionStatus {
 std::string to_string(RegionStatus status);
 
 /// A stretch [u0, u1] of curve `curve` (u0 == u1 for a corner point).
+/// Where a region interval lies on the part, in frame A at the scene pose.
+struct IntervalPlace {
+  Vec2 start_A, end_A;    ///< Exact boundary points at u0 and u1 (m).
+  double arc_length = 0;  ///< Length of outline covered, m (display: Gauss–Legendre quadrature).
+  /// Unit inward normal at the interval's middle: the frictionless push
+  /// direction (display); unset where the normal is undefined (a corner).
+  std::optional<std::array<double, 2>> push_direction_A;
+};
+
 struct RegionInterval {
   int curve = 0;
   Rational u0, u1;
@@ -69,7 +79,19 @@ struct Region {
   Rational pusher_mu;                    ///< Pusher friction used.
   std::string target = "S";              ///< The target's name: "S", "G" or "J".
   bool sampled = false;                  ///< From sample_region (point tests), not subdivision.
+  /// Where each interval is on the part (parallel to `intervals`; filled
+  /// by locate_intervals, which compute_region and sample_region call).
+  std::vector<IntervalPlace> places;
+  double outline_length = 0;  ///< Arc length of the whole boundary, m (display).
 };
+
+/// What "in" means for this region's target, as every report labels it:
+/// "one-step: can seat" (S), "one-step: guaranteed" (G) or "sustained
+/// push: seats and stays" (J).
+std::string in_meaning(const Region& region);
+
+/// Fills region.places and region.outline_length from the scene's boundary.
+void locate_intervals(const Scene& scene, Region& region);
 
 /// How the region was computed, as reports name it: "sample" or the cone
 /// method ("tight", "paper").

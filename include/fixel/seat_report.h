@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixel/guaranteed.h"
+#include "fixel/outcomes.h"
 #include "fixel/polyhedron.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
@@ -24,6 +25,7 @@ struct ImpulseVerdict {
   std::vector<std::string> y_names;
   std::optional<bool> guaranteed;     ///< p ∈ G, when G was computed.
   std::optional<bool> seat_and_stay;  ///< p ∈ S ∩ h·C_stab, when asked.
+  OutcomeCount outcomes;              ///< All one-step outcomes of p (exact enumeration).
 };
 
 /// The seat report's derived results beyond S itself.

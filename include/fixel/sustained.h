@@ -87,7 +87,11 @@ struct SustainedSet {
 int check_strong_stability(const Scene& scene, SustainedSet& J);
 
 /// Computes q* and J. Throws what seated_pose throws, SceneError when W_n*
-/// is singular (a degenerate seat), and InputError for dof != 3.
-SustainedSet sustained_set(const Scene& scene);
+/// is singular (a degenerate seat), and InputError for dof != 3. With
+/// `check_stability` false the independent contact-mode check of strong
+/// stability is skipped (`strongly_stable` then rests on the theorem alone
+/// and `stability_checks` is 0): fixture design evaluates J for thousands of
+/// layouts, and the check costs most of J's time.
+SustainedSet sustained_set(const Scene& scene, bool check_stability = true);
 
 }  // namespace fixel

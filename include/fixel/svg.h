@@ -21,7 +21,9 @@ namespace fixel {
 /// cannot be written.
 /// `region` must come from compute_region (it records its cone method,
 /// resolution, pusher μ and target).
-void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region);
+/// With a region against G, pass G to shade the wrench panel by G.
+void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
+                      const GuaranteedSet* G = nullptr);
 
 /// The same picture for the sustained-push region against J: the seated
 /// pose as a ghost outline beside the scene pose, and the wrench panel
@@ -32,9 +34,9 @@ void write_sustained_region_svg(const std::string& path, const Scene& scene, con
 
 /// Draws the slice p_θ = theta of S and G (dof 3): impulses in G, in S but
 /// not in G, and outside S, each decided exactly on a display grid, with the
-/// apex and an optional impulse marked. Throws InputError if the file cannot
-/// be written or dof != 3.
-void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet& G,
+/// apex and an optional impulse marked; with G null, S alone. Throws
+/// InputError if the file cannot be written or dof != 3.
+void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet* G,
                           const Rational& theta, const std::optional<VectorQ>& impulse);
 
 }  // namespace fixel

@@ -15,6 +15,7 @@ import numpy as np
 
 from . import _fixel
 from ._exact import exact, frac, fracs, text, vector
+from ._design import Candidate, Design, Layout, design, design_candidates
 from ._region import Magnitudes, Region, RegionInterval, RegionStats, region, sample
 from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
 
@@ -25,6 +26,7 @@ __all__ = [
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
     "to_off", "to_svg", "SustainedSet", "sustained_set", "push",
+    "design", "design_candidates", "Design", "Layout", "Candidate",
 ]  # fmt: skip
 
 

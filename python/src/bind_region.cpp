@@ -106,7 +106,7 @@ void bind_region(py::module_& m) {
           std::optional<VectorQ> p;
           if (impulse) p = exact_vector(*impulse, checked(S, "seating").dof, "impulse");
           py::gil_scoped_release release;
-          write_guaranteed_svg(path, checked(scene, "scene"), checked(S, "seating"), *g, t, p);
+          write_guaranteed_svg(path, checked(scene, "scene"), checked(S, "seating"), g, t, p);
         });
   m.def("dump_off", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& dir, const std::string& length,
                        const py::object& G) {

@@ -50,5 +50,6 @@ void bind_scene(py::module_& m);
 void bind_sets(py::module_& m);
 void bind_region(py::module_& m);
 void bind_sustained(py::module_& m);
+void bind_design(py::module_& m);
 
 }  // namespace fixel::python

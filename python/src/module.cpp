@@ -79,4 +79,5 @@ PYBIND11_MODULE(_fixel, m) {
   fixel::python::bind_sets(m);
   fixel::python::bind_region(m);
   fixel::python::bind_sustained(m);
+  fixel::python::bind_design(m);
 }

@@ -76,5 +76,6 @@ Command add_region(CLI::App& app);
 Command add_sample(CLI::App& app);
 Command add_push(CLI::App& app);
 Command add_verify(CLI::App& app);
+Command add_design(CLI::App& app);
 
 }  // namespace fixel::cli

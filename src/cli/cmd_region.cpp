@@ -91,7 +91,7 @@ int run_region(const RegionArgs& a) {
   }
   print_region(scene, r, a, v);
   if (!a.svg_path.empty()) {
-    write_region_svg(a.svg_path, scene, S, r);
+    write_region_svg(a.svg_path, scene, S, r, G ? &*G : nullptr);
     if (!a.json) std::cout << "wrote " << a.svg_path << "\n";
   }
   return 0;

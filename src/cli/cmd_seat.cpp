@@ -44,7 +44,6 @@ int run_seat(const SeatArgs& a) {
   const GuaranteedSet* g = G ? &*G : nullptr;
   std::optional<VectorQ> impulse;
   if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
-  if (!a.svg_path.empty() && !g) throw InputError("--svg", a.svg_path, "needs --guaranteed");
   // Every input check before any output (the picture is a p_theta slice).
   if (!a.svg_path.empty() && scene.body.dof != 3)
     throw InputError("--svg", a.svg_path, "the S/G picture needs dof 3 (a slice at constant p_theta)");
@@ -52,7 +51,7 @@ int run_seat(const SeatArgs& a) {
   const SeatReport report = seat_report(scene, S, impulse, g, a.stable);
   std::cout << (a.json ? seat_json(scene, S, report, g) : seat_text(scene, S, report, g));
   if (!a.svg_path.empty()) {
-    write_guaranteed_svg(a.svg_path, scene, S, *g, impulse ? (*impulse)[2] : S.apex[2], impulse);
+    write_guaranteed_svg(a.svg_path, scene, S, g, impulse ? (*impulse)[2] : S.apex[2], impulse);
     if (!a.json) std::cout << "wrote " << a.svg_path << "\n";
   }
   return 0;
@@ -88,7 +87,7 @@ Command add_seat(CLI::App& app) {
   cmd->add_option("--impulse", a->impulse_text, "Test an impulse: px,py[,ptheta] (exact numbers; b0 is added)");
   cmd->add_flag("--guaranteed", a->guaranteed, "Also compute G, the impulses whose every outcome seats");
   cmd->add_flag("--stable", a->stable, "Also give the seat-and-stay set S ∩ h·C_stab");
-  cmd->add_option("--svg", a->svg_path, "With --guaranteed: draw the slice p_theta = const of S and G");
+  cmd->add_option("--svg", a->svg_path, "Draw the slice p_theta = const of S (and of G with --guaranteed); dof 3");
   cmd->add_flag("--sustained", a->sustained,
                 "The sustained-push wrench set J at the seated pose q* instead of S (past the paper)");
   cmd->add_option("--wrench", a->wrench_text, "With --sustained: test a world-frame wrench wx,wy,wm (exact numbers)");

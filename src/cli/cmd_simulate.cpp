@@ -22,10 +22,11 @@ struct ImpulseArgs {
 int run_simulate(const ImpulseArgs& a) {
   arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
-  const auto sim =
-      simulate(scene, {with_background(scene, parse_impulse(a.impulse_text, scene.body.dof))}, a.steps, run_control());
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
+  const auto sim = simulate(scene, {p}, a.steps, run_control());
+  const OutcomeCount first = count_outcomes(enumerate_outcomes(scene, p, run_control()));
   end_progress();
-  std::cout << (a.json ? simulation_json(scene, sim) : simulation_text(scene, sim));
+  std::cout << (a.json ? simulation_json(scene, sim, &first) : simulation_text(scene, sim, &first));
   return 0;
 }
 

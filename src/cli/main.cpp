@@ -35,6 +35,14 @@ std::string user_message(const fixel::InputError& e) {
       {"dump_off(directory)", "--off"},
       {"dump_sustained_off(directory)", "--off"},
       {"svg(path)", "--svg"},
+      {"boundary_candidates(spacing)", "--spacing"},
+      {"load_candidates(path)", "--candidates"},
+      {"DesignOptions.resolution", "--resolution"},
+      {"DesignOptions.mu", "--mu"},
+      {"DesignOptions.pusher_mu", "--pusher-mu"},
+      {"DesignOptions.gap", "--gap"},
+      {"DesignOptions.top", "--top"},
+      {"DesignOptions.jobs", "--jobs"},
   };
   const std::string what = e.what();
   const auto it = kFlagOf.find(e.field());
@@ -50,9 +58,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("fixel 0.1.0"));
 
-  const std::vector<Command> commands = {add_seat(app),      add_dump(app),   add_simulate(app),
-                                         add_solutions(app), add_region(app), add_sample(app),
-                                         add_push(app),      add_verify(app), add_info(app)};
+  const std::vector<Command> commands = {add_seat(app),   add_dump(app),   add_simulate(app), add_solutions(app),
+                                         add_region(app), add_sample(app), add_push(app),     add_verify(app),
+                                         add_design(app), add_info(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -82,7 +82,7 @@ def test_region_agrees(path):
         m = a.magnitudes
         assert (None if m is None else (m.lo, m.lo_closed, m.hi, m.hi_closed)) == magnitudes(b["magnitudes"])
     assert r.counts() == doc["counts"]
-    assert {k: F(v) for k, v in doc["lengths"].items()} == r.lengths()
+    assert {k: F(v) for k, v in doc["lengths"].items() if not k.endswith("_approx")} == r.lengths()
     assert r.stats.cone_tests == doc["stats"]["cone_tests"] and r.stats.depth == doc["stats"]["depth"]
     assert r.resolution == F(1, 1024) and r.pusher_mu == F(doc["pusher_mu"])
 

@@ -1,0 +1,198 @@
+// Fixture design throughput (docs/design.md): layouts per second on one
+// thread and the speedup with 2 threads, on a bundled part; then, per
+// bundled part, the best layout's score against the layout shipped in the
+// scene file; and, with --stages, what one layout's evaluation costs.
+//
+//   design_bench [--part NAME] [--candidates N] [--resolution R] [--jobs J]
+//                [--stages] [--parts] [--top K]
+#include <chrono>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "fixel/design.h"
+#include "fixel/region_target.h"
+#include "fixel/scene_json.h"
+#include "fixel/seating.h"
+#include "fixel/sustained.h"
+
+namespace {
+
+fixel::Scene bundled(const std::string& name) {
+  return fixel::load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Evenly spread n of the part's 24 default candidates... or more: a spacing
+// of perimeter / n.
+std::vector<fixel::DesignCandidate> candidates(const fixel::Scene& part, int n) {
+  auto all = fixel::boundary_candidates(part, std::nullopt);
+  if (n <= static_cast<int>(all.size())) {
+    std::vector<fixel::DesignCandidate> out;
+    for (int k = 0; k < n; ++k) out.push_back(all[k * all.size() / n]);
+    return out;
+  }
+  double perimeter = 0;  // rough, for the spacing only
+  for (const auto& p : part.body.boundary->pieces)
+    for (int j = 0; j < 64; ++j) {
+      const auto a = p.point(fixel::Rational(j, 64)), b = p.point(fixel::Rational(j + 1, 64));
+      perimeter += std::hypot(fixel::to_double(b.x - a.x), fixel::to_double(b.y - a.y));
+    }
+  const long long q = 1 << 20;
+  return fixel::boundary_candidates(part, fixel::Rational(static_cast<long long>(perimeter / n * q), q));
+}
+
+void stages(const fixel::Scene& part, const std::vector<fixel::DesignCandidate>& c, const fixel::DesignOptions& o) {
+  double t_scene = 0, t_j = 0, t_jregion = 0, t_s = 0, t_sregion = 0;
+  int n = 0, nonempty = 0;
+  const long T = fixel::triple_count(static_cast<long>(c.size()));
+  for (long idx = 0; idx < T && n < 60; idx += std::max(1L, T / 60)) {
+    const auto f = fixel::triple_at(static_cast<long>(c.size()), idx);
+    auto t0 = std::chrono::steady_clock::now();
+    const fixel::Scene s = fixel::layout_scene(part, c, f, o, false);
+    t_scene += seconds_since(t0);
+    try {
+      t0 = std::chrono::steady_clock::now();
+      const auto J = fixel::sustained_set(s, false);
+      t_j += seconds_since(t0);
+      if (!J.empty) {
+        ++nonempty;
+        t0 = std::chrono::steady_clock::now();
+        fixel::RegionOptions ro;
+        ro.resolution = o.resolution;
+        ro.pusher_mu = o.pusher_mu;
+        compute_region(s, *fixel::sustained_target(J), ro);
+        t_jregion += seconds_since(t0);
+      }
+      const fixel::Scene st = fixel::layout_scene(part, c, f, o, true);
+      t0 = std::chrono::steady_clock::now();
+      const auto S = fixel::seating_set(st);
+      t_s += seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
+      fixel::RegionOptions ro;
+      ro.resolution = o.resolution;
+      ro.pusher_mu = o.pusher_mu;
+      compute_region(st, S, ro);
+      t_sregion += seconds_since(t0);
+    } catch (const fixel::Error&) {
+      continue;  // singular
+    }
+    ++n;
+  }
+  std::cout << "per layout (mean of " << n << " non-singular, " << nonempty << " with J non-empty), ms: scene "
+            << 1e3 * t_scene / n << ", J " << 1e3 * t_j / n << ", J region " << 1e3 * t_jregion / std::max(nonempty, 1)
+            << ", S " << 1e3 * t_s / n << ", S region " << 1e3 * t_sregion / n << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string part_name = "polygon", resolution = "1/256";
+  int n = 16, jobs = 2, top = 5;
+  bool want_stages = false, want_parts = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::cerr << a << " needs a value\n";
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--part")
+      part_name = next();
+    else if (a == "--candidates")
+      n = std::atoi(next().c_str());
+    else if (a == "--resolution")
+      resolution = next();
+    else if (a == "--jobs")
+      jobs = std::atoi(next().c_str());
+    else if (a == "--top")
+      top = std::atoi(next().c_str());
+    else if (a == "--stages")
+      want_stages = true;
+    else if (a == "--parts")
+      want_parts = true;
+    else {
+      std::cerr << "usage: design_bench [--part NAME] [--candidates N] [--resolution R] [--jobs J] [--top K] "
+                   "[--stages] [--parts]\n";
+      return 2;
+    }
+  }
+  try {
+    fixel::DesignOptions o;
+    o.resolution = fixel::parse_rational(resolution, "--resolution");
+    o.top = top;
+    if (want_parts) {
+      // Best layout (n of the 24 default boundary candidates) against the shipped layout, same μ.
+      std::cout << "| part | candidates | triples | kept | best sustained | best one-step | shipped sustained | "
+                   "shipped one-step | seconds ("
+                << jobs << " threads) |\n|---|---|---|---|---|---|---|---|---|\n";
+      for (const char* name : {"polygon", "example2_rounded", "blob", "blob32", "fig6", "nonunique_part"}) {
+        const fixel::Scene part = bundled(name);
+        fixel::DesignOptions p = o;
+        p.jobs = jobs;
+        p.mu = part.fixels.at(0).mu_upper();
+        for (const auto& f : part.fixels) p.mu = std::max(p.mu, f.mu_upper());
+        p.pusher_mu = part.pusher_mu_upper();
+        const auto c = candidates(part, n);
+        const auto r = fixel::design(part, c, p);
+        auto pct = [](const std::optional<fixel::Rational>& q) {
+          std::ostringstream s;
+          if (q)
+            s << std::fixed << std::setprecision(1) << 100 * fixel::to_double(*q) << "%";
+          else
+            s << "–";
+          return s.str();
+        };
+        std::string shipped_s = "error", shipped_t = "error";
+        try {
+          const auto sh = fixel::score_scene_layout(part, p);
+          shipped_s = pct(sh.sustained_score) + (sh.sustained_empty.value_or(false) ? " (J empty)" : "");
+          shipped_t = pct(sh.step_score);
+          if (!sh.note.empty()) shipped_s += " [" + sh.note + "]";
+        } catch (const fixel::Error& e) {
+          shipped_s = std::string("error: ") + e.what();
+        }
+        std::cout << "| " << name << " (mu " << fixel::to_string(p.mu) << ") | " << r.stats.candidates << " | "
+                  << r.stats.triples << " | " << r.stats.regions << " | "
+                  << (r.layouts.empty() ? "–" : pct(r.layouts[0].sustained_score)) << " | "
+                  << (r.layouts.empty() ? "–" : pct(r.layouts[0].step_score)) << " | " << shipped_s << " | "
+                  << shipped_t << " | " << std::setprecision(3) << r.stats.seconds << " |\n";
+      }
+      return 0;
+    }
+    const fixel::Scene part = bundled(part_name);
+    const auto c = candidates(part, n);
+    if (want_stages) {
+      stages(part, c, o);
+      return 0;
+    }
+    o.jobs = 1;
+    const auto one = fixel::design(part, c, o);
+    o.jobs = jobs;
+    const auto many = fixel::design(part, c, o);
+    const double per1 = one.stats.triples / one.stats.seconds, perN = many.stats.triples / many.stats.seconds;
+    std::cout << part_name << ": " << c.size() << " candidates, " << one.stats.triples << " triples ("
+              << one.stats.singular << " singular, " << one.stats.no_form_closure << " without form closure, "
+              << one.stats.j_empty << " J empty, " << one.stats.regions << " regions), resolution " << resolution
+              << "\n";
+    std::cout << std::fixed << std::setprecision(2) << "1 thread: " << one.stats.seconds << " s, " << per1
+              << " layouts/s\n"
+              << jobs << " threads: " << many.stats.seconds << " s, " << perN << " layouts/s, speedup "
+              << one.stats.seconds / many.stats.seconds << "\n";
+    bool same = one.layouts.size() == many.layouts.size();
+    for (std::size_t k = 0; same && k < one.layouts.size(); ++k)
+      same = one.layouts[k].fixels == many.layouts[k].fixels && one.layouts[k].score == many.layouts[k].score;
+    std::cout << "same ranking: " << (same ? "yes" : "NO") << "\n";
+    return same ? 0 : 1;
+  } catch (const fixel::Error& e) {
+    std::cerr << "design_bench: " << e.what() << "\n";
+    return 2;
+  }
+}

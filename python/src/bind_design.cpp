@@ -1,0 +1,137 @@
+/// @file
+/// Fixture design (docs/design.md): candidates, the thread-pool run, and the
+/// batch function that fixel.design maps over a Dask cluster. Candidates
+/// cross as (curve, u) with u exact text, options as a dict of exact texts,
+/// results as exact texts or the `fixel design --json` document.
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+#include "bindings.h"
+#include "fixel/design.h"
+
+namespace fixel::python {
+namespace {
+
+using ScenePtr = std::shared_ptr<Scene>;
+using CandidateList = std::vector<std::pair<int, std::string>>;
+
+std::vector<DesignCandidate> candidates_of(const Scene& part, const CandidateList& list) {
+  std::vector<DesignCandidate> out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string field = "candidates[" + std::to_string(i) + "]";
+    out.push_back(candidate_at(part, list[i].first, parse_rational(list[i].second, field + ".u"), field));
+  }
+  return out;
+}
+
+CandidateList list_of(const std::vector<DesignCandidate>& cands) {
+  CandidateList out;
+  for (const auto& c : cands) out.emplace_back(c.curve, to_string(c.u));
+  return out;
+}
+
+std::string text_item(const py::dict& d, const char* key, const char* fallback) {
+  if (!d.contains(key) || d[key].is_none()) return fallback;
+  return py::str(d[key]);
+}
+
+// {"push", "resolution", "mu", "mu_hi", "pusher_mu", "gap", "top", "jobs"}.
+DesignOptions options_of(const py::dict& d) {
+  DesignOptions o;
+  const std::string push = text_item(d, "push", "sustained");
+  if (push != "sustained" && push != "step") throw InputError("push", push, "must be sustained or step");
+  o.push = push == "step" ? DesignPush::kStep : DesignPush::kSustained;
+  o.resolution = parse_rational(text_item(d, "resolution", "1/256"), "resolution");
+  o.mu = parse_rational(text_item(d, "mu", "1/10"), "mu");
+  if (d.contains("mu_hi") && !d["mu_hi"].is_none()) o.mu_hi = parse_rational(py::str(d["mu_hi"]), "mu");
+  o.pusher_mu = parse_rational(text_item(d, "pusher_mu", "0"), "pusher_mu");
+  o.gap = parse_rational(text_item(d, "gap", "0"), "gap");
+  o.top = d.contains("top") ? d["top"].cast<int>() : 5;
+  o.jobs = d.contains("jobs") && !d["jobs"].is_none() ? d["jobs"].cast<int>() : 0;
+  return o;
+}
+
+}  // namespace
+
+void bind_design(py::module_& m) {
+  m.def("design_candidates", [](const ScenePtr& scene, const std::optional<std::string>& spacing) {
+    const Scene& s = checked(scene, "scene");
+    std::optional<Rational> sp;
+    if (spacing) sp = parse_rational(*spacing, "spacing");
+    return list_of(boundary_candidates(s, sp));
+  });
+  m.def("design_check_candidates", [](const ScenePtr& scene, const CandidateList& list) {
+    return list_of(candidates_of(checked(scene, "scene"), list));
+  });
+  m.def("design_load_candidates", [](const ScenePtr& scene, const std::string& path) {
+    return list_of(load_candidates(checked(scene, "scene"), path));
+  });
+  m.def("design_candidate", [](const ScenePtr& scene, int curve, const std::string& u) {
+    const DesignCandidate c = candidate_at(checked(scene, "scene"), curve, parse_rational(u, "u"), "candidate");
+    return py::make_tuple(std::vector<std::string>{to_string(c.point.x), to_string(c.point.y)},
+                          std::vector<std::string>{to_string(c.normal.x), to_string(c.normal.y)});
+  });
+  m.def("design_triples", [](long n) { return triple_count(n); });
+  // The whole run on the C++ thread pool: the `fixel design --json` document.
+  m.def("design_json", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts) {
+    const Scene& s = checked(scene, "scene");
+    const auto cands = candidates_of(s, list);
+    const DesignOptions o = options_of(opts);
+    py::gil_scoped_release release;
+    const DesignResult r = design(s, cands, o);
+    return design_json(s, r, o, shipped_layout(s, o));
+  });
+  // One batch (idempotent): ([(i, j, k, index, score)], (singular,
+  // no_form_closure, j_empty, regions)).
+  m.def("design_batch", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, long first,
+                           long count) {
+    const Scene& s = checked(scene, "scene");
+    const auto cands = candidates_of(s, list);
+    DesignOptions o = options_of(opts);
+    DesignStats stats;
+    std::vector<DesignLayout> best;
+    {
+      py::gil_scoped_release release;
+      best = design_batch(s, cands, o, first, count, stats);
+    }
+    py::list layouts;
+    for (const auto& l : best)
+      layouts.append(py::make_tuple(l.fixels[0], l.fixels[1], l.fixels[2], l.index, to_string(l.score)));
+    return py::make_tuple(layouts, py::make_tuple(stats.singular, stats.no_form_closure, stats.j_empty, stats.regions));
+  });
+  // The report of a distributed run: re-scores the chosen triples (their
+  // scores are a pure function of the triple), completes them and writes
+  // the `fixel design --json` document with the run's counts.
+  m.def("design_report",
+        [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, const std::vector<long>& indices,
+           const std::vector<long>& counts, double seconds, int jobs) {
+          const Scene& s = checked(scene, "scene");
+          const auto cands = candidates_of(s, list);
+          DesignOptions o = options_of(opts);
+          if (counts.size() != 4) throw InputError("counts", std::to_string(counts.size()), "must have 4 entries");
+          py::gil_scoped_release release;
+          DesignResult r;
+          r.candidates = cands;
+          r.stats.candidates = static_cast<long>(cands.size());
+          r.stats.triples = triple_count(r.stats.candidates);
+          r.stats.singular = counts[0];
+          r.stats.no_form_closure = counts[1];
+          r.stats.j_empty = counts[2];
+          r.stats.regions = counts[3];
+          r.stats.seconds = seconds;
+          r.stats.jobs = jobs;
+          DesignStats ignored;
+          for (long index : indices)
+            for (auto& l : design_batch(s, cands, o, index, 1, ignored)) r.layouts.push_back(std::move(l));
+          rank_layouts(r.layouts, o.top);
+          complete_layouts(s, cands, o, r.layouts);
+          r.no_layout = no_layout_reason(r.stats, r.layouts.size());
+          return design_json(s, r, o, shipped_layout(s, o));
+        });
+  m.def("design_check_options",
+        [](const ScenePtr& scene, const py::dict& opts) { check_design(checked(scene, "scene"), options_of(opts)); });
+}
+
+}  // namespace fixel::python

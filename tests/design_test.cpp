@@ -1,0 +1,260 @@
+#include "fixel/design.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "fixel/error.h"
+#include "fixel/progress.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
+
+namespace fixel {
+namespace {
+
+using test::scene_file;
+
+// The "house": the rectangle [−1, 1] × [−1, 0] under the roof (1, 0),
+// (0, 1), (−1, 0), mirror-symmetric about x = 0. Curve parameters: bottom
+// [0, 1], right side [1, 2], right roof [2, 3], left roof [3, 4], left side
+// [4, 5]. Area 3, centre of mass (0, −2/9).
+Scene house(const std::string& mu = "0") {
+  return parse_scene(R"({"name": "house", "time_step": "1",
+    "body": {"dof": 3, "mass": "1",
+             "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","0"], ["0","1"], ["-1","0"], ["-1","-1"]]}]},
+    "fixels": [], "pusher": {"mu": ")" +
+                     mu + R"("}})");
+}
+
+// B1 = (−1/2, −1), B2 = (1/2, −1) on the bottom, L = (−1, −1/2) on the left
+// side, R = (1, −1/2) on the right side.
+std::vector<DesignCandidate> house_candidates(const Scene& part) {
+  return parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
+                                                   {"curve": 0, "u": "9/2"}, {"curve": 0, "u": "3/2"}]})");
+}
+
+DesignOptions frictionless(int jobs = 1) {
+  DesignOptions o;
+  o.mu = 0;
+  o.pusher_mu = 0;
+  o.resolution = Rational(1, 64);
+  o.jobs = jobs;
+  o.top = 10;
+  return o;
+}
+
+GTEST_TEST(Design, CandidatesAreExactBoundaryPointsWithInwardNormals) {
+  const Scene part = house();
+  const auto c = house_candidates(part);
+  ASSERT_EQ(c.size(), 4u);
+  EXPECT_EQ(c[0].point.x, Rational(-1, 2));
+  EXPECT_EQ(c[0].point.y, Rational(-1));
+  EXPECT_EQ(c[2].point.x, Rational(-1));
+  EXPECT_EQ(c[2].point.y, Rational(-1, 2));
+  // Inward: up from the bottom, +x from the left side, −x from the right side.
+  EXPECT_EQ(c[0].normal.x, 0);
+  EXPECT_GT(c[0].normal.y, 0);
+  EXPECT_GT(c[2].normal.x, 0);
+  EXPECT_EQ(c[2].normal.y, 0);
+  EXPECT_LT(c[3].normal.x, 0);
+}
+
+GTEST_TEST(Design, TriplesAreIndexedLexicographically) {
+  EXPECT_EQ(triple_count(2), 0);
+  EXPECT_EQ(triple_count(4), 4);
+  EXPECT_EQ(triple_count(200), 1313400);
+  const long n = 7;
+  long index = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      for (int k = j + 1; k < n; ++k) {
+        const auto t = triple_at(n, index++);
+        EXPECT_EQ(t, (std::array<int, 3>{i, j, k}));
+      }
+  EXPECT_EQ(index, triple_count(n));
+  EXPECT_THROW(triple_at(n, index), InputError);
+}
+
+// By hand: L and R push along one line through the centre of mass in
+// opposite directions, so {B, L, R} has a singular W_n; {B1, B2, L} and
+// {B1, B2, R} are mirror images, so their scores are equal and the tie
+// keeps the lexicographic order. For {B1, B2, L} (W_n columns (0, 1, −1/2),
+// (0, 1, 1/2), (1, 0, 5/18)), a frictionless push −w = λ·W_n needs d_x < 0
+// and d_y < 0: only the right roof (d = (−1, −1)) at u = 2 + t, where
+// λ = (2t, 1 − 2t, 1): IN exactly for t in (0, 1/2). With μ = 0 the jam
+// cones are faces of cone(W_n), so J is the whole open cone, and the score
+// is that half unit of parameter out of 5, up to the resolution.
+GTEST_TEST(Design, TheHousesBestLayoutsAreTheMirrorPairInCandidateOrder) {
+  const Scene part = house();
+  const DesignOptions o = frictionless();
+  const DesignResult r = design(part, house_candidates(part), o);
+  EXPECT_EQ(r.stats.triples, 4);
+  EXPECT_EQ(r.stats.singular, 2);
+  EXPECT_EQ(r.stats.no_form_closure, 0);
+  EXPECT_EQ(r.stats.j_empty, 0);
+  EXPECT_EQ(r.stats.regions, 2);
+  ASSERT_EQ(r.layouts.size(), 2u);
+  EXPECT_EQ(r.layouts[0].fixels, (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(r.layouts[1].fixels, (std::array<int, 3>{0, 1, 3}));
+  EXPECT_EQ(r.layouts[0].score, r.layouts[1].score);
+  const Rational res = o.resolution;
+  EXPECT_LE(r.layouts[0].score, Rational(1, 10));
+  EXPECT_GE(r.layouts[0].score, (Rational(1, 2) - 4 * res) / 5);
+  EXPECT_EQ(r.layouts[0].sustained_empty, std::optional<bool>(false));
+  ASSERT_TRUE(r.layouts[0].step_score.has_value());  // completed for the reported layouts
+}
+
+// By hand, on the square [−1, 1]² with B1 = (−1/2, −1), B2 = (1/2, −1),
+// L = (−1, 0), R = (1, 0): {B, L, R} is singular (L and R push along one line
+// through the centre), and {B1, B2, L} needs a push with d_x < 0 and d_y < 0,
+// which no flat edge gives a frictionless finger (its push is along ±x or
+// ±y) and no corner gives for its whole fan (the fan holds an edge normal);
+// {B1, B2, R} is its mirror image. So every triple is dropped.
+GTEST_TEST(Design, TheSquaresAxisAlignedLayoutsHaveNoFormClosureWithAFinger) {
+  const Scene part = parse_scene(R"({"name": "square", "time_step": "1",
+    "body": {"dof": 3, "mass": "1",
+             "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","1"], ["-1","1"], ["-1","-1"]]}]},
+    "fixels": []})");
+  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
+                                                          {"curve": 0, "u": "7/2"}, {"curve": 0, "u": "3/2"}]})");
+  const DesignResult r = design(part, c, frictionless());
+  EXPECT_EQ(r.stats.singular, 2);
+  EXPECT_EQ(r.stats.no_form_closure, 2);
+  EXPECT_TRUE(r.layouts.empty());
+  EXPECT_EQ(r.no_layout, "every one of the 4 triples was dropped (2 with W_n singular, 2 without form closure)");
+}
+
+GTEST_TEST(Design, FrictionShrinksTheScoreButKeepsTheMirrorTie) {
+  const Scene part = house();
+  DesignOptions o = frictionless();
+  const Rational frictionless_score = design(part, house_candidates(part), o).layouts[0].score;
+  o.mu = Rational(1, 2);
+  const DesignResult r = design(part, house_candidates(part), o);
+  ASSERT_EQ(r.layouts.size(), 2u);
+  EXPECT_EQ(r.layouts[0].score, r.layouts[1].score);
+  EXPECT_LE(r.layouts[0].score, frictionless_score);  // J(μ) shrinks as μ grows (docs/theory.md §10.4)
+}
+
+GTEST_TEST(Design, TheRankingIsTheSameWithOneAndTwoThreads) {
+  const Scene part = scene_file("polygon");
+  const auto cands = boundary_candidates(part, std::nullopt);
+  std::vector<DesignCandidate> few(cands.begin(), cands.begin() + 9);  // 84 triples
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  o.top = 84;
+  o.jobs = 1;
+  const DesignResult one = design(part, few, o);
+  o.jobs = 2;
+  const DesignResult two = design(part, few, o);
+  EXPECT_EQ(two.stats.jobs, 2);
+  ASSERT_EQ(one.layouts.size(), two.layouts.size());
+  ASSERT_FALSE(one.layouts.empty());
+  for (std::size_t k = 0; k < one.layouts.size(); ++k) {
+    EXPECT_EQ(one.layouts[k].fixels, two.layouts[k].fixels);
+    EXPECT_EQ(one.layouts[k].score, two.layouts[k].score);
+  }
+  EXPECT_EQ(one.stats.singular, two.stats.singular);
+  EXPECT_EQ(one.stats.no_form_closure, two.stats.no_form_closure);
+  EXPECT_EQ(one.stats.j_empty, two.stats.j_empty);
+  // Every triple is accounted for exactly once.
+  EXPECT_EQ(one.stats.singular + one.stats.no_form_closure + one.stats.j_empty + one.stats.regions, one.stats.triples);
+}
+
+GTEST_TEST(Design, BatchesMergeToTheWholeRun) {
+  const Scene part = scene_file("polygon");
+  const auto all = boundary_candidates(part, std::nullopt);
+  std::vector<DesignCandidate> few(all.begin(), all.begin() + 8);  // 56 triples
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  o.top = 5;
+  o.jobs = 1;
+  const DesignResult whole = design(part, few, o);
+  std::vector<DesignLayout> merged;
+  DesignStats stats;
+  for (long first = 0; first < 56; first += 20)
+    for (auto& l : design_batch(part, few, o, first, std::min(20L, 56 - first), stats)) merged.push_back(l);
+  rank_layouts(merged, o.top);
+  ASSERT_EQ(merged.size(), whole.layouts.size());
+  for (std::size_t k = 0; k < merged.size(); ++k) {
+    EXPECT_EQ(merged[k].fixels, whole.layouts[k].fixels);
+    EXPECT_EQ(merged[k].score, whole.layouts[k].score);
+  }
+  EXPECT_EQ(stats.pruned(), whole.stats.pruned());
+}
+
+GTEST_TEST(Design, FewerThanThreeCandidatesIsNoLayoutWithAReason) {
+  const Scene part = house();
+  auto c = house_candidates(part);
+  c.resize(2);
+  const DesignResult r = design(part, c, frictionless());
+  EXPECT_TRUE(r.layouts.empty());
+  EXPECT_NE(r.no_layout.find("only 2 candidates"), std::string::npos) << r.no_layout;
+}
+
+GTEST_TEST(Design, BoundaryCandidatesAvoidCornersAndFollowTheSpacing) {
+  const Scene part = scene_file("polygon");
+  const auto c = boundary_candidates(part, Rational(1, 2));
+  EXPECT_GT(c.size(), 10u);
+  for (const auto& d : c) EXPECT_FALSE(is_zero(d.normal));
+  const auto d24 = boundary_candidates(part, std::nullopt);
+  EXPECT_LE(d24.size(), 24u);
+  EXPECT_GE(d24.size(), 20u);
+  const auto blob = boundary_candidates(scene_file("blob"), std::nullopt);
+  EXPECT_EQ(blob.size(), 24u);  // a smooth outline has no corner to skip
+}
+
+GTEST_TEST(Design, BadInputNamesTheFieldAndValue) {
+  const Scene part = house();
+  try {
+    boundary_candidates(part, Rational(0));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "boundary_candidates(spacing)");
+    EXPECT_EQ(e.value(), "0");
+  }
+  try {
+    parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "6"}]})");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "candidates[0].u");
+    EXPECT_EQ(e.value(), "6");
+  }
+  try {
+    parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 3, "u": "0"}]})");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "candidates[1].curve");
+  }
+  try {
+    parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "2"}]})");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "candidates[0].u");
+    EXPECT_NE(std::string(e.what()).find("corner"), std::string::npos);
+  }
+  DesignOptions o = frictionless();
+  o.top = 0;
+  try {
+    design(part, house_candidates(part), o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "DesignOptions.top");
+    EXPECT_EQ(e.value(), "0");
+  }
+  const Scene no_outline = scene_file("example2");
+  EXPECT_THROW(boundary_candidates(no_outline, std::nullopt), SceneError);
+  EXPECT_THROW(design(no_outline, {}, frictionless()), SceneError);
+}
+
+GTEST_TEST(Design, AStoppedRunThrowsStoppedError) {
+  const Scene part = scene_file("polygon");
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  RunControl control;
+  control.cancel = true;
+  o.control = &control;
+  EXPECT_THROW(design(part, boundary_candidates(part, std::nullopt), o), StoppedError);
+}
+
+}  // namespace
+}  // namespace fixel

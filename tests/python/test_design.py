@@ -1,0 +1,129 @@
+"""fixel.design: the thread pool, and the same run mapped over a Dask
+LocalCluster on loopback (docs/design.md)."""
+
+import json
+import time
+from fractions import Fraction
+
+import pytest
+
+import fixel
+from conftest import SCENE_DIR, cli_json, run_cli
+
+# The mirror-symmetric "house" of tests/design_test.cpp: the rectangle
+# [-1, 1] x [-1, 0] under the roof (1, 0), (0, 1), (-1, 0).
+HOUSE = {
+    "name": "house",
+    "time_step": "1",
+    "body": {
+        "dof": 3,
+        "mass": "1",
+        "boundary": [{"type": "polyline", "points": [[-1, -1], [1, -1], [1, 0], [0, 1], [-1, 0], [-1, -1]]}],
+    },
+    "fixels": [],
+}
+# B1 = (-1/2, -1), B2 = (1/2, -1), L = (-1, -1/2), R = (1, -1/2).
+HOUSE_CANDIDATES = [(0, "1/4"), (0, "3/4"), (0, "9/2"), (0, "3/2")]
+SMALL = dict(resolution="1/32", top=5)
+
+
+@pytest.fixture(scope="module")
+def client():
+    distributed = pytest.importorskip("dask.distributed")
+    cluster = distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None
+    )
+    c = distributed.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def polygon_candidates():
+    # Every third default candidate: 8 candidates, 56 triples.
+    return [(c.curve, c.u) for c in fixel.design_candidates(SCENE_DIR / "polygon.json")[::3]]
+
+
+def test_the_house_ranks_its_mirror_pair_first_with_equal_exact_scores():
+    d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=0, pusher_mu=0, resolution="1/64", top=10, jobs=1)
+    assert d.stats["triples"] == 4 and d.stats["singular"] == 2
+    assert [l.triple for l in d.layouts] == [(0, 1, 2), (0, 1, 3)]
+    assert d.layouts[0].score == d.layouts[1].score
+    assert isinstance(d.layouts[0].score, Fraction)
+    # By hand: IN only on the right roof for t in (0, 1/2), 1/2 of 5 units of parameter.
+    assert Fraction(1, 2) / 5 - Fraction(4, 64) / 5 <= d.layouts[0].score <= Fraction(1, 10)
+    assert d.layouts[0].fixels[2].point == (Fraction(-1), Fraction(-1, 2))
+
+
+def test_the_python_thread_pool_agrees_with_the_cli(tmp_path, polygon_candidates):
+    path = tmp_path / "candidates.json"
+    path.write_text(json.dumps({"candidates": [{"curve": c, "u": str(u)} for c, u in polygon_candidates]}))
+    doc = cli_json("design", SCENE_DIR / "polygon.json", "--candidates", path, "--resolution", "1/32", "--top", 5)
+    d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, **SMALL)
+    assert [(tuple(l["triple"]), Fraction(l["score"])) for l in doc["layouts"]] == d.ranking()
+
+
+def test_dask_gives_the_thread_pools_ranking(client, polygon_candidates):
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, **SMALL)
+    dask = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
+                        **SMALL)  # fmt: skip
+    assert dask.ranking() == pool.ranking()
+    assert len(pool.layouts) == 5
+    for key in ("triples", "singular", "no_form_closure", "j_empty", "regions"):
+        assert dask.stats[key] == pool.stats[key]
+    assert [l.step_score for l in dask.layouts] == [l.step_score for l in pool.layouts]
+
+
+def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, polygon_candidates, tmp_path):
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=1, **SMALL)
+    marker = str(tmp_path / "failed-once")
+    d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
+                     retries=1, _fail_once=(2, marker), **SMALL)  # fmt: skip
+    assert (tmp_path / "failed-once").exists()  # it did fail once
+    assert d.ranking() == pool.ranking()
+
+
+def test_a_rerun_with_the_output_file_resumes_after_a_failed_batch(client, polygon_candidates, tmp_path):
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=1, **SMALL)
+    out = str(tmp_path / "design.jsonl")
+    marker = str(tmp_path / "failed-once")
+    with pytest.raises(fixel.Error, match="rerun with it to resume"):
+        fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
+                     retries=0, output=out, _fail_once=(3, marker), **SMALL)  # fmt: skip
+    with open(out) as f:
+        assert len(f.readlines()) == 5  # 6 batches of 56 triples, one failed
+    d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
+                     retries=0, output=out, **SMALL)  # fmt: skip
+    assert d.stats["batches"] == 6 and d.stats["batches_resumed"] == 5
+    assert d.ranking() == pool.ranking()
+
+
+def test_an_unreachable_scheduler_is_a_clear_error_within_a_bounded_time():
+    t0 = time.monotonic()
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, client="tcp://127.0.0.1:9", timeout=2)
+    assert e.value.field == "client"
+    assert "unreachable" in str(e.value)
+    assert time.monotonic() - t0 < 30
+
+
+def test_fewer_than_three_candidates_is_no_layout_with_a_reason():
+    d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES[:2])
+    assert d.layouts == [] and "only 2 candidates" in d.no_layout
+
+
+def test_bad_input_names_the_field_and_value():
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(HOUSE, candidates=[(0, "6")])
+    assert (e.value.field, e.value.value) == ("candidates[0].u", "6")
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(HOUSE, spacing=0)
+    assert e.value.value == "0"
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(HOUSE, top=0)
+    assert (e.value.field, e.value.value) == ("DesignOptions.top", "0")
+    with pytest.raises(TypeError):
+        fixel.design(HOUSE, mu=0.1)
+    with pytest.raises(fixel.SceneError):
+        fixel.design(SCENE_DIR / "example2.json")  # no outline
