@@ -61,7 +61,7 @@ std::vector<Magnitudes> Magnitudes::subtract(const Magnitudes& B) const {
 }
 
 std::string Magnitudes::describe() const {
-  if (empty) return "empty";
+  if (empty) return "no common magnitude";
   return std::string(lo_closed ? "[" : "(") + to_string(lo) + ", " + (hi ? to_string(*hi) : "inf") +
          (hi && hi_closed ? "]" : ")");
 }

@@ -1,6 +1,11 @@
 #include "fixel/scene.h"
 
+#include <cmath>
+#include <cstdio>
 #include <string>
+
+#include "fixel/curve.h"
+#include "fixel/on_boundary.h"
 
 namespace fixel {
 
@@ -42,6 +47,49 @@ void check_length(const VectorQ& v, int dof, const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// Display: six significant digits, and float noise below 1e-9 shown as 0.
+std::string num(double v) {
+  if (std::abs(v) < 1e-9) v = 0;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+std::string pair_text(double x, double y) { return "(" + num(x) + ", " + num(y) + ")"; }
+std::string exact_text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
+
+}  // namespace
+
+void check_fixels_on_boundary(const Scene& scene) {
+  if (!scene.body.boundary) return;
+  for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
+    const Fixel& f = scene.fixels[i];
+    if (f.off_boundary) continue;
+    const std::string path = "fixels[" + std::to_string(i) + "]";
+    const BoundaryFit fit = fit_to_boundary(*scene.body.boundary, f.p_AoF_A, &f.n_A);
+    const std::string where = "body.boundary[" + std::to_string(fit.curve) + "] at u ≈ " + num(fit.u_approx);
+    if (!fit.on_boundary)
+      throw SceneError(path + ".point", exact_text(f.p_AoF_A),
+                       "is not on the part's outline: it is " + num(fit.distance) + " m from it (nearest point ≈ " +
+                           pair_text(fit.nearest[0], fit.nearest[1]) + " on " + where + ", where the inward normal ≈ " +
+                           pair_text(fit.inward_normal_approx[0], fit.inward_normal_approx[1]) + " is " +
+                           num(fit.angle_degrees) +
+                           "° from this fixel's normal). The point is the contact point on the part at the "
+                           "scene pose (the fixel sits at point − gap·normal): move it onto the outline, or set " +
+                           path + ".off_boundary: true");
+    if (!fit.normal_matches)
+      throw SceneError(path + ".normal", exact_text(f.n_A),
+                       std::string("is not the outline's inward normal at ") + path + ".point (on " + where +
+                           (fit.corner ? ", a corner: the normal must lie between the two edges' inward normals, "
+                                         "around "
+                                       : ", where it is ") +
+                           pair_text(fit.inward_normal_approx[0], fit.inward_normal_approx[1]) +
+                           "): " + num(fit.angle_degrees) + "° apart. Give \"normal\": \"boundary\", or set " + path +
+                           ".off_boundary: true");
+  }
+}
+
 void validate_scene(const Scene& scene) {
   check_positive(scene.time_step, "time_step");
   const Body& b = scene.body;
@@ -59,6 +107,7 @@ void validate_scene(const Scene& scene) {
   }
   check_friction(scene.pusher_mu, scene.pusher_mu_hi, "pusher.mu");
   check_length(scene.background_impulse, b.dof, "background_impulse");
+  check_fixels_on_boundary(scene);
 }
 
 }  // namespace fixel

@@ -2,6 +2,8 @@
 // JSON path in errors.
 #include "fixel/scene_json.h"
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -9,6 +11,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/internal/json_exact.h"
+#include "fixel/on_boundary.h"
 
 namespace fixel {
 
@@ -116,6 +119,95 @@ void parse_friction(const json& v, const std::string& path, Rational& lo, std::o
   check_nonnegative(lo, path);
 }
 
+std::string approx_text(double v) {
+  if (std::abs(v) < 1e-9) v = 0;  // display: float noise
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// A suggestion for a direction that is not an exact unit vector.
+std::string suggest_unit(double radians) {
+  const Vec2 u = nearby_exact_unit(radians);
+  return "the nearest exact unit normal (within 1e-9 rad) is [\"" + to_string(u.x) + "\", \"" + to_string(u.y) + "\"]";
+}
+
+// A fixel's normal: ["x", "y"] of unit length, {"degrees": "D"}, or
+// "boundary" (the outline's inward normal at the point, filled in later).
+Vec2 parse_normal(const json& v, const std::string& path, bool& from_boundary) {
+  from_boundary = false;
+  if (v.is_string() && v.get<std::string>() == "boundary") {
+    from_boundary = true;
+    return {Rational(0), Rational(0)};
+  }
+  if (v.is_object()) {
+    expect_object(v, path, {"degrees"});
+    const Rational deg = number(require(v, "degrees", path), path + ".degrees");
+    // Niven: the only rational angles in degrees with rational sine and
+    // cosine are the multiples of 90°.
+    const Rational quarter = deg / 90;
+    if (boost::multiprecision::denominator(quarter) != 1)
+      throw SceneError(path + ".degrees", to_string(deg),
+                       "is not an exact direction: a rational angle in degrees has rational cosine and sine only at "
+                       "multiples of 90°; " +
+                           suggest_unit(to_double(deg) * M_PI / 180));
+    const int k = static_cast<int>(((boost::multiprecision::numerator(quarter) % 4) + 4) % 4);
+    static const int cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    return {Rational(cs[k][0]), Rational(cs[k][1])};
+  }
+  if (v.is_string())
+    throw SceneError(path, describe(v), "must be [\"x\", \"y\"], {\"degrees\": \"D\"} or \"boundary\"");
+  const Vec2 n = vec2(v, path);
+  if (n.x * n.x + n.y * n.y != 1) {
+    std::string hint = "x²+y² must be exactly 1, e.g. (3/5, 4/5)";
+    if (!is_zero(n)) {
+      if (const auto u = exact_unit(n))
+        hint += "; normalised exactly it is [\"" + to_string(u->x) + "\", \"" + to_string(u->y) + "\"]";
+      else
+        hint += "; " + suggest_unit(std::atan2(to_double(n.y), to_double(n.x)));
+    }
+    throw SceneError(path, "(" + to_string(n.x) + ", " + to_string(n.y) + ")", "is not of unit length (" + hint + ")");
+  }
+  return n;
+}
+
+// "normal": "boundary": the outline's inward normal at the point, which must
+// be an exact unit vector there.
+Vec2 boundary_normal(const Scene& scene, const Vec2& p, int i) {
+  const std::string path = "fixels[" + std::to_string(i) + "]";
+  if (!scene.body.boundary) throw SceneError(path + ".normal", "\"boundary\"", "needs body.boundary");
+  const BoundaryFit fit = fit_to_boundary(*scene.body.boundary, p, nullptr);
+  const std::string pt = "(" + to_string(p.x) + ", " + to_string(p.y) + ")";
+  if (!fit.on_boundary)
+    throw SceneError(path + ".point", pt,
+                     "is not on the part's outline (" + approx_text(fit.distance) +
+                         " m from it), so \"normal\": \"boundary\" has no normal to take");
+  const std::string near =
+      "≈ (" + approx_text(fit.inward_normal_approx[0]) + ", " + approx_text(fit.inward_normal_approx[1]) + ")";
+  const double angle = std::atan2(fit.inward_normal_approx[1], fit.inward_normal_approx[0]);
+  if (fit.corner)
+    throw SceneError(path + ".normal", "\"boundary\"",
+                     "is ambiguous: " + pt +
+                         " is a corner of the outline; give the normal explicitly, between the "
+                         "two edges' inward normals (their bisector is " +
+                         near + ")");
+  if (!fit.inward_normal)
+    throw SceneError(path + ".normal", "\"boundary\"",
+                     "cannot be taken exactly: " + pt + " is at an irrational parameter of body.boundary[" +
+                         std::to_string(fit.curve) + "], where the inward normal " + near +
+                         " is not rational; give it explicitly (" + suggest_unit(angle) + ")");
+  const auto u = exact_unit(*fit.inward_normal);
+  if (!u)
+    throw SceneError(path + ".normal", "\"boundary\"",
+                     "cannot be taken exactly: the inward normal at " + pt + " is " + near +
+                         ", whose length is irrational (the tangent there is (" + to_string(-fit.inward_normal->y) +
+                         ", " + to_string(fit.inward_normal->x) +
+                         ")); move the point to where the tangent has a "
+                         "rational length, or give the normal (" +
+                         suggest_unit(angle) + ")");
+  return *u;
+}
+
 int parse_dof(const json& v) {
   if (!v.is_string()) throw SceneError("body.dof", describe(v), "must be 2 or 3");
   const std::string s = v.get<std::string>();
@@ -127,13 +219,19 @@ int parse_dof(const json& v) {
 
 Scene parse_scene(const std::string& json_text, const std::string& source) {
   const json root = internal::parse_json_exact(json_text, source);
-  expect_object(root, "", {"name", "time_step", "body", "fixels", "pusher", "background_impulse"}, source);
+  expect_object(root, "", {"name", "description", "time_step", "body", "fixels", "pusher", "background_impulse"},
+                source);
 
   Scene scene;
   const auto name_it = root.find("name");
   if (name_it != root.end()) {
     if (!name_it->is_string()) throw SceneError("name", describe(*name_it), "must be a string");
     scene.name = name_it->get<std::string>();
+  }
+  const auto description_it = root.find("description");
+  if (description_it != root.end()) {
+    if (!description_it->is_string()) throw SceneError("description", describe(*description_it), "must be a string");
+    scene.description = description_it->get<std::string>();
   }
   scene.time_step = number(require(root, "time_step", ""), "time_step");
   check_positive(scene.time_step, "time_step");
@@ -151,11 +249,13 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
     check_positive(b.mass, "body.mass");
   } else {
     b.mass = b.boundary->mass.area;
+    b.mass_from_area = true;
   }
   if (body.contains("center_of_mass"))
     b.p_AoCm_A = vec2(body.at("center_of_mass"), "body.center_of_mass");
   else
     b.p_AoCm_A = has_boundary ? b.boundary->mass.centroid : Vec2{Rational(0), Rational(0)};
+  b.center_of_mass_from_area = has_boundary && !body.contains("center_of_mass");
   if (b.dof == 3) {
     if (body.contains("inertia")) {
       b.inertia = number(body.at("inertia"), "body.inertia");
@@ -163,6 +263,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
     } else if (has_boundary) {
       // Uniform density m / A about the centre of mass.
       b.inertia = b.mass / b.boundary->mass.area * b.boundary->mass.polar_moment_about(b.p_AoCm_A);
+      b.inertia_from_area = true;
     } else {
       throw SceneError("body.inertia", "", "is missing (required for dof 3 without a boundary)");
     }
@@ -178,11 +279,20 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
   for (std::size_t i = 0; i < fixels.size(); ++i) {
     const std::string path = "fixels[" + std::to_string(i) + "]";
     const json& f = fixels[i];
-    expect_object(f, path, {"point", "normal", "mu", "gap"});
+    expect_object(f, path, {"point", "normal", "mu", "gap", "off_boundary"});
     Fixel fx;
     fx.p_AoF_A = vec2(require(f, "point", path), path + ".point");
-    fx.n_A = vec2(require(f, "normal", path), path + ".normal");
-    check_unit_normal(fx.n_A, path + ".normal");
+    bool from_boundary = false;
+    fx.n_A = parse_normal(require(f, "normal", path), path + ".normal", from_boundary);
+    if (f.contains("off_boundary")) {
+      if (!f.at("off_boundary").is_boolean())
+        throw SceneError(path + ".off_boundary", describe(f.at("off_boundary")), "must be true or false");
+      fx.off_boundary = f.at("off_boundary").get<bool>();
+    }
+    if (from_boundary)  // the outline is parsed already: take its normal
+      fx.n_A = boundary_normal(scene, fx.p_AoF_A, static_cast<int>(i));
+    else
+      check_unit_normal(fx.n_A, path + ".normal");
     parse_friction(require(f, "mu", path), path + ".mu", fx.mu, fx.mu_hi);
     fx.gap = number(require(f, "gap", path), path + ".gap");
     check_nonnegative(fx.gap, path + ".gap");
@@ -201,7 +311,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
       root.contains("background_impulse")
           ? vector(root.at("background_impulse"), "background_impulse", b.dof, "dof " + std::to_string(b.dof))
           : VectorQ::Zero(b.dof);
-
+  check_fixels_on_boundary(scene);
   return scene;
 }
 

@@ -237,6 +237,49 @@ for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polyg
 done
 expect 2 '--svg: '"$tmp"'/no/x.svg cannot be written: no such folder' -- "$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/no/x.svg"
 
+# Scene checks (issue 16 §4): fixels on the outline, friendlier normals, info, stdin, batches, b0.
+python3 - "$src/data/scenes/polygon.json" "$tmp" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1])); t = sys.argv[2]
+d["fixels"][1]["point"] = ["10", "10"]; json.dump(d, open(t + "/far.json", "w"))
+d["fixels"][1]["off_boundary"] = True; json.dump(d, open(t + "/far_ok.json", "w"))
+d = json.load(open(sys.argv[1])); d["fixels"][1]["normal"] = ["0", "-1"]; json.dump(d, open(t + "/outward.json", "w"))
+d = json.load(open(sys.argv[1])); d["fixels"][1]["normal"] = "boundary"; json.dump(d, open(t + "/bnormal.json", "w"))
+d["fixels"][1]["normal"] = {"degrees": "45"}; json.dump(d, open(t + "/deg45.json", "w"))
+d["fixels"][1]["normal"] = {"degrees": "90"}; json.dump(d, open(t + "/deg90.json", "w"))
+d["fixels"][1]["normal"] = ["3", "4"]; json.dump(d, open(t + "/nonunit34.json", "w"))
+PY
+expect 2 'fixels[1].point: (10, 10) is not on the part' -- "$fixel" seat "$tmp/far.json"
+expect 2 'm from it' -- "$fixel" seat "$tmp/far.json"
+expect 0 'marked off_boundary' -- "$fixel" info "$tmp/far_ok.json"
+expect 2 '180° apart' -- "$fixel" seat "$tmp/outward.json"
+expect 0 'n = (0, 1)' -- "$fixel" info "$tmp/bnormal.json"
+expect 0 'n = (0, 1)' -- "$fixel" info "$tmp/deg90.json"
+expect 2 'fixels[1].normal.degrees: 45 is not an exact direction' -- "$fixel" seat "$tmp/deg45.json"
+expect 2 'normalised exactly it is ["3/5", "4/5"]' -- "$fixel" seat "$tmp/nonunit34.json"
+expect 0 'warning: body.mass is not given' -- "$fixel" info "$src/data/scenes/polygon.json"
+expect 0 'inertia I = ' -- "$fixel" info "$src/data/scenes/polygon.json"
+expect 0 'seated configuration q*' -- "$fixel" info "$src/data/scenes/polygon.json"
+expect 0 '"from_area": true' -- "$fixel" info "$src/data/scenes/polygon.json" --json
+expect 0 'on body.boundary[0] at u = 639/100' -- "$fixel" info "$src/data/scenes/fig6.json"
+for s in "$src"/data/scenes/*.json; do
+  expect 0 '"description": "' -- "$fixel" info "$s" --json
+  grep -q '"description"' "$s" || { echo "FAIL: $s has no description"; fail=1; }
+done
+out=$("$fixel" info - --json < "$src/data/scenes/example2.json" 2>&1)
+grep -q '"scene": "example2"' <<<"$out" || { echo "FAIL: info - (stdin)"; fail=1; }
+out=$("$fixel" seat - --impulse -1,-1,-1 < "$src/data/scenes/example2.json" 2>&1)
+grep -q 'is IN S' <<<"$out" || { echo "FAIL: seat - (stdin)"; fail=1; }
+n=$("$fixel" seat "$src/data/scenes/example2.json" "$src/data/scenes/polygon.json" --json | wc -l)
+[ "$n" -eq 2 ] || { echo "FAIL: seat batch gave $n JSON lines, want 2"; fail=1; }
+n=$("$fixel" info "$src"/data/scenes/*.json --json | grep -c '"file"')
+[ "$n" -eq 9 ] || { echo "FAIL: info batch gave $n lines with file, want 9"; fail=1; }
+expect 0 '"status"' -- "$fixel" region "$src/data/scenes/polygon.json" "$src/data/scenes/example2_rounded.json" --json --resolution 1/16
+expect 2 '"error"' -- "$fixel" region "$src/data/scenes/polygon.json" "$src/data/scenes/example2.json" --json --resolution 1/16
+expect 2 '--svg: x.svg draws one scene' -- "$fixel" region "$src/data/scenes/polygon.json" "$src/data/scenes/blob.json" --svg x.svg
+expect 0 'background_impulse b0 = (29157/10540' -- "$fixel" seat "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
+expect 0 '"non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --json
+expect 0 'b0 + p' -- "$fixel" simulate "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
 # fixel design (docs/design.md): the house part of tests/design_test.cpp, an empty fixels list, four listed
 # candidates; the mirror pair ties and keeps the candidates' order, and the two {B, L, R} triples are singular.
 cat > "$tmp/house.json" <<'JSON'

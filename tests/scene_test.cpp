@@ -125,7 +125,14 @@ GTEST_TEST(Scene, RejectsNonUnitNormal) {
   expect_error<SceneError>(
       example2_with(R"("normal": ["0", "1"], "mu": "1/10", "gap": "1/20")",
                     R"("normal": ["3/5", "3/5"], "mu": "1/10", "gap": "1/20")"),
-      "fixels[1].normal: (3/5, 3/5) is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5))");
+      "fixels[1].normal: (3/5, 3/5) is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5); the nearest "
+      "exact unit normal (within 1e-9 rad) is [\"31509019101/44560482149\", \"31509019100/44560482149\"])");
+  // A direction of rational length gets its exact normalisation as the hint.
+  expect_error<SceneError>(
+      example2_with(R"("normal": ["0", "1"], "mu": "1/10", "gap": "1/20")",
+                    R"("normal": ["3", "4"], "mu": "1/10", "gap": "1/20")"),
+      "fixels[1].normal: (3, 4) is not of unit length (x²+y² must be exactly 1, e.g. (3/5, 4/5); normalised exactly "
+      "it is [\"3/5\", \"4/5\"])");
   // A normal that is unit only to double precision is still rejected.
   EXPECT_THROW(parse_scene(example2_with(R"("normal": ["1", "0"])", R"("normal": ["0.6000000000000000001", "0.8"])")),
                SceneError);
@@ -229,7 +236,8 @@ namespace fixel {
 namespace {
 
 GTEST_TEST(Scene, ValidateSceneAcceptsEveryBundledScene) {
-  for (const char* name : {"example1", "example2", "blob", "blob32", "nonunique"})
+  for (const char* name :
+       {"example1", "example2", "example2_rounded", "blob", "blob32", "fig6", "nonunique", "nonunique_part", "polygon"})
     EXPECT_NO_THROW(validate_scene(test::scene_file(name))) << name;
 }
 
@@ -251,6 +259,73 @@ GTEST_TEST(Scene, ValidateSceneNamesTheFieldOfACodeBuiltSceneWithTheJsonPath) {
   s = test::scene_file("example2");
   s.background_impulse = VectorQ::Zero(2);
   EXPECT_THROW(validate_scene(s), SceneError);
+}
+
+}  // namespace
+}  // namespace fixel
+
+namespace fixel {
+namespace {
+
+// A square part [0, 2]² with three fixels; FIXEL1 is the second fixel's JSON.
+std::string square_with(const std::string& fixel1) {
+  return R"({"name": "square", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "boundary": [{"type": "polyline",
+             "points": [["0","0"], ["2","0"], ["2","2"], ["0","2"], ["0","0"]]}]},
+    "fixels": [{"point": ["0", "1"], "normal": ["1", "0"], "mu": "0", "gap": "1/10"}, )" +
+         fixel1 + R"(, {"point": ["3/2", "0"], "normal": ["0", "1"], "mu": "0", "gap": "1/10"}]})";
+}
+
+GTEST_TEST(Scene, AFixelOffTheOutlineIsAnErrorNamingItWithTheDistance) {
+  try {
+    parse_scene(square_with(R"({"point": ["1/2", "1/10"], "normal": ["0", "1"], "mu": "0", "gap": "0"})"));
+    FAIL() << "a fixel 1/10 m inside the part was accepted";
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("fixels[1].point: (1/2, 1/10) is not on the part's outline: it is 0.1 m from it", 0), 0u)
+        << what;
+    EXPECT_NE(what.find("fixels[1].off_boundary: true"), std::string::npos) << what;
+  }
+  // The opt-out accepts it, and says so.
+  const Scene s = parse_scene(
+      square_with(R"({"point": ["1/2", "1/10"], "normal": ["0", "1"], "mu": "0", "gap": "0", "off_boundary": true})"));
+  EXPECT_TRUE(s.fixels[1].off_boundary);
+}
+
+GTEST_TEST(Scene, AnOutwardNormalIsAnErrorGivingTheAngle) {
+  expect_error<SceneError>(
+      square_with(R"({"point": ["1/2", "0"], "normal": ["0", "-1"], "mu": "0", "gap": "0"})"),
+      "fixels[1].normal: (0, -1) is not the outline's inward normal at fixels[1].point (on body.boundary[0] at u ≈ "
+      "0.25, where it is (0, 1)): 180° apart. Give \"normal\": \"boundary\", or set fixels[1].off_boundary: true");
+}
+
+GTEST_TEST(Scene, NormalBoundaryTakesTheOutlinesExactInwardNormal) {
+  const Scene s = parse_scene(square_with(R"({"point": ["2", "1/2"], "normal": "boundary", "mu": "0", "gap": "0"})"));
+  EXPECT_EQ(s.fixels[1].n_A.x, -1);
+  EXPECT_EQ(s.fixels[1].n_A.y, 0);
+  try {
+    parse_scene(square_with(R"({"point": ["2", "2"], "normal": "boundary", "mu": "0", "gap": "0"})"));
+    FAIL() << "a corner gave a normal";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("fixels[1].normal: \"boundary\" is ambiguous: (2, 2) is a corner"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+GTEST_TEST(Scene, NormalInDegreesIsExactOnlyAtMultiplesOfNinety) {
+  const Scene s =
+      parse_scene(square_with(R"({"point": ["2", "1/2"], "normal": {"degrees": "-180"}, "mu": "0", "gap": "0"})"));
+  EXPECT_EQ(s.fixels[1].n_A.x, -1);
+  EXPECT_EQ(s.fixels[1].n_A.y, 0);
+  try {
+    parse_scene(square_with(R"({"point": ["2", "1/2"], "normal": {"degrees": "30"}, "mu": "0", "gap": "0"})"));
+    FAIL() << "30 degrees was accepted";
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("fixels[1].normal.degrees: 30 is not an exact direction", 0), 0u) << what;
+    EXPECT_NE(what.find("the nearest exact unit normal (within 1e-9 rad) is"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ struct Magnitudes {
   Magnitudes intersect(const Magnitudes& other) const;
   /// This minus `other`: at most two disjoint pieces, in increasing order.
   std::vector<Magnitudes> subtract(const Magnitudes& other) const;
-  /// "[lo, hi)", "(0, inf)", "empty".
+  /// "[lo, hi)", "(0, inf)", or "no common magnitude" when empty (the CLI's wording).
   std::string describe() const;
   /// The same for people: short fractions with their decimals, long ones
   /// as decimals only (docs/cli.md, "Numbers"); "no common magnitude" when empty.

@@ -25,13 +25,18 @@ struct Body {
   Rational inertia;  ///< I > 0 about the centre of mass (dof 3 only; 0 for dof 2).
   VectorQ velocity;  ///< ν^ℓ, length dof (m/s, rad/s).
   Vec2 p_AoCm_A;     ///< Centre of mass in frame A.
+  /// Which of mass, inertia and centre of mass were derived from the
+  /// boundary (uniform density) rather than given in the scene.
+  bool mass_from_area = false, inertia_from_area = false, center_of_mass_from_area = false;
   /// The part's outline (one closed counter-clockwise loop), if given.
   std::shared_ptr<const Boundary> boundary;
 };
 
 /// One fixture point ("fixel").
 struct Fixel {
-  Vec2 p_AoF_A;  ///< Contact point in frame A.
+  /// Contact point on the part at the scene pose, frame A (m). The fixel
+  /// itself sits at p − ψ n, a gap ψ outside the part.
+  Vec2 p_AoF_A;
   Vec2 n_A;      ///< Inward unit normal (into the part), exactly x²+y² == 1.
   Rational mu;   ///< Coulomb friction μ ≥ 0 (the lower end of an interval).
   Rational gap;  ///< Gap ψ ≥ 0 at the current configuration.
@@ -39,12 +44,16 @@ struct Fixel {
   std::optional<Rational> mu_hi;
   /// The upper end of the friction interval (mu for a single value).
   Rational mu_upper() const { return mu_hi.value_or(mu); }
+  /// The scene says this fixel is knowingly not on the part's outline (or
+  /// not along its normal): the outline check skips it.
+  bool off_boundary = false;
 };
 
 /// A whole scene file.
 struct Scene {
   std::string name;
-  Rational time_step;  ///< h > 0.
+  std::string description;  ///< Free text: what the scene is, and any caveat.
+  Rational time_step;       ///< h > 0.
   Body body;
   std::vector<Fixel> fixels;
   Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0; the lower end of an interval).
@@ -70,10 +79,17 @@ void check_nonnegative(const Rational& v, const std::string& path);
 /// n_A must be exactly of unit length (a rational point on the unit circle).
 void check_unit_normal(const Vec2& n_A, const std::string& path);
 
+/// With a boundary: every fixel not marked `off_boundary` has its point
+/// exactly on the outline and its normal exactly the outline's inward normal
+/// there (any normal in the cone between the two one-sided normals at a
+/// corner). Throws SceneError naming `fixels[i].point` (with the distance to
+/// the outline) or `fixels[i].normal` (with the angle to the inward normal).
+void check_fixels_on_boundary(const Scene& scene);
+
 /// Every value check on a scene built in code: h > 0, dof 2 or 3, mass and
 /// inertia > 0, vector lengths equal to dof, unit normals, friction and
-/// gaps >= 0. Throws SceneError as above. (The one-step rules n_c == dof
-/// and W_n nonsingular belong to the analyses that need them.)
+/// gaps >= 0, fixels on the outline (check_fixels_on_boundary). Throws SceneError as above. (The one-step rules n_c ==
+/// dof and W_n nonsingular belong to the analyses that need them.)
 void validate_scene(const Scene& scene);
 
 }  // namespace fixel

@@ -61,12 +61,14 @@ py::dict scene_dict(const Scene& s) {
     d["normal"] = pair(f.n_A);
     d["mu"] = to_string(f.mu);
     d["gap"] = to_string(f.gap);
+    if (f.off_boundary) d["off_boundary"] = true;
     fixels.append(d);
   }
   py::dict pusher;
   pusher["mu"] = to_string(s.pusher_mu);
   py::dict d;
   d["name"] = s.name;
+  if (!s.description.empty()) d["description"] = s.description;
   d["time_step"] = to_string(s.time_step);
   d["body"] = body;
   d["fixels"] = fixels;

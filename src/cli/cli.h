@@ -7,9 +7,11 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "fixel/progress.h"
 #include "fixel/rational.h"
+#include "fixel/scene.h"
 
 namespace fixel::cli {
 
@@ -48,6 +50,24 @@ void check_writable(const std::string& path, const std::string& flag);
 /// A pusher μ, or an interval "lo,hi", judged at its upper end.
 Rational parse_pusher_mu(const std::string& text);
 
+/// Reads a scene file, or standard input for "-" (once per run).
+Scene read_scene(const std::string& path);
+
+/// Runs `run` once per scene path. One path: as is. Several: each report in
+/// turn, the text under a "== PATH" line, or with `json` one compact JSON
+/// line per scene (with "file"; a scene that fails gives {"file", "error"}
+/// and the batch goes on). Returns the worst exit code.
+int run_batch(const std::vector<std::string>& paths, bool json, const std::function<int(const std::string&)>& run);
+
+/// The impulse the one-step commands act on: b₀ + p (seat --impulse,
+/// simulate's step 1, solutions), as region adds b₀ to every push. Says so
+/// on stderr when b₀ is not zero.
+VectorQ with_background(const Scene& scene, const VectorQ& p);
+
+/// Help text of a positional list of scenes.
+constexpr const char* kScenesHelp = "Scene file(s) (JSON, docs/formats.md); - reads standard input";
+
+Command add_info(CLI::App& app);
 Command add_seat(CLI::App& app);
 Command add_dump(CLI::App& app);
 Command add_simulate(CLI::App& app);

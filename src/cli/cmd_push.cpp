@@ -21,7 +21,7 @@ struct PushArgs {
 
 int run_push(const PushArgs& a) {
   check_writable(a.svg_path, "--svg");
-  const Scene scene = load_scene(a.scene_path);
+  const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
@@ -48,7 +48,8 @@ int run_push(const PushArgs& a) {
 Command add_push(CLI::App& app) {
   auto a = std::make_shared<PushArgs>();
   auto* cmd = app.add_subcommand("push", "Run a constant push in the Box2D physics engine (docs/physics.md)");
-  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
+  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md); - reads standard input")
+      ->required();
   auto* wrench_opt =
       cmd->add_option("--wrench", a->wrench_text, "World-frame wrench wx,wy,wm (force at the centre of mass)");
   cmd->add_option("--at", a->at_text, "Frictionless unit push at parameter U of curve K, at the seated pose: K:U")

@@ -17,7 +17,7 @@ struct PlanArgs {
 };
 
 int run_push_plan(const PlanArgs& a) {
-  const Scene scene = load_scene(a.scene_path);
+  const Scene scene = read_scene(a.scene_path);
   const auto at = physics::parse_curve_point(scene, a.at_text, "--at");
   const PushPlan plan = plan_push(scene, at.curve, at.u, a.guaranteed);
   std::cout << (a.json ? push_plan_json(scene, plan) : push_plan_text(scene, plan));

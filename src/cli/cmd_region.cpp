@@ -18,6 +18,7 @@ namespace fixel::cli {
 namespace {
 
 struct RegionArgs {
+  std::vector<std::string> scene_paths;
   std::string scene_path, resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path, push_text = "step",
                           time_text = "20";
   int validate = 0, digits = 0;
@@ -70,7 +71,7 @@ int run_sustained_region(const Scene& scene, const RegionArgs& a, const physics:
 int run_region(const RegionArgs& a) {
   arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
-  const Scene scene = load_scene(a.scene_path);
+  const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
@@ -115,7 +116,7 @@ struct SampleArgs {
 
 int run_sample(const SampleArgs& a) {
   arm_run_control(a.run);
-  const Scene scene = load_scene(a.scene_path);
+  const Scene scene = read_scene(a.scene_path);
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
   if (a.guaranteed) G = guaranteed_set(scene, S);
@@ -135,13 +136,15 @@ const char* const kPusherMuHelp =
 Command add_region(CLI::App& app) {
   auto a = std::make_shared<RegionArgs>();
   auto* cmd = app.add_subcommand("region", "The pushing region by exact recursive subdivision (paper §5)");
-  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
+  cmd->add_option("scene", a->scene_paths,
+                  "Scene file(s) with a boundary (JSON, docs/formats.md); - reads standard input")
+      ->required();
   cmd->add_option("--resolution", a->resolution_text, "Stop splitting at this curve-parameter width (default 1/1024)");
   cmd->add_option("--cone", a->cone_text, "Segment cone: tight (default) or paper")
       ->check(CLI::IsMember({"tight", "paper"}));
   cmd->add_option("--pusher-mu", a->pusher_mu_text, kPusherMuHelp);
   cmd->add_option("--svg", a->svg_path, "Also draw the region to this SVG file");
-  cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
+  cmd->add_flag("--json", a->json, "Print one JSON document on stdout (one line per scene for several)");
   cmd->add_flag("--guaranteed", a->guaranteed, "Classify against G instead of S (frictionless pusher only)");
   cmd->add_option("--push", a->push_text,
                   "Push model: step (default; one impulse, the set S) or sustained (a held wrench, the set J)")
@@ -153,13 +156,21 @@ Command add_region(CLI::App& app) {
   cmd->add_option("--digits", a->digits,
                   "With --exact: refine irrational ends to width 10^-D (default 0: as isolated)");
   add_run_options(cmd, a->run);
-  return {cmd, [a] { return run_region(*a); }};
+  return {cmd, [a] {
+            if (a->scene_paths.size() > 1 && !a->svg_path.empty())
+              throw InputError("--svg", a->svg_path, "draws one scene: give a single scene file");
+            return run_batch(a->scene_paths, a->json, [a](const std::string& p) {
+              a->scene_path = p;
+              return run_region(*a);
+            });
+          }};
 }
 
 Command add_sample(CLI::App& app) {
   auto a = std::make_shared<SampleArgs>();
   auto* cmd = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
-  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
+  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md); - reads standard input")
+      ->required();
   cmd->add_option("--points", a->points, "Points per curve (default 64)");
   cmd->add_option("--pusher-mu", a->pusher_mu_text, kPusherMuHelp);
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");

@@ -17,6 +17,7 @@ namespace fixel::cli {
 namespace {
 
 struct SeatArgs {
+  std::vector<std::string> scene_paths;
   std::string scene_path, impulse_text, svg_path, wrench_text;
   bool json = false, guaranteed = false, stable = false, sustained = false;
 };
@@ -34,7 +35,7 @@ int run_sustained_seat(const Scene& scene, const SeatArgs& a) {
 }
 
 int run_seat(const SeatArgs& a) {
-  const Scene scene = load_scene(a.scene_path);
+  const Scene scene = read_scene(a.scene_path);
   if (a.sustained) return run_sustained_seat(scene, a);
   if (!a.wrench_text.empty()) throw InputError("--wrench", a.wrench_text, "needs --sustained");
   const SeatingSet S = seating_set(scene);
@@ -42,7 +43,7 @@ int run_seat(const SeatArgs& a) {
   if (a.guaranteed) G = guaranteed_set(scene, S);
   const GuaranteedSet* g = G ? &*G : nullptr;
   std::optional<VectorQ> impulse;
-  if (!a.impulse_text.empty()) impulse = parse_impulse(a.impulse_text, scene.body.dof);
+  if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   // Every input check before any output (the picture is a p_theta slice).
   if (!a.svg_path.empty() && scene.body.dof != 3)
     throw InputError("--svg", a.svg_path, "the S/G picture needs dof 3 (a slice at constant p_theta)");
@@ -62,7 +63,7 @@ struct DumpArgs {
 };
 
 int run_dump(const DumpArgs& a) {
-  const Scene scene = load_scene(a.scene_path);
+  const Scene scene = read_scene(a.scene_path);
   if (a.sustained) {
     const SustainedSet J = sustained_set(scene);
     for (const auto& path : dump_sustained_off(scene, J, a.off_dir)) std::cout << "wrote " << path << "\n";
@@ -81,22 +82,29 @@ int run_dump(const DumpArgs& a) {
 Command add_seat(CLI::App& app) {
   auto a = std::make_shared<SeatArgs>();
   auto* cmd = app.add_subcommand("seat", "The seating impulse set S (paper §3): apex, rays and facets");
-  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md)")->required();
-  cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
-  cmd->add_option("--impulse", a->impulse_text, "Test an impulse: px,py[,ptheta] (exact numbers)");
+  cmd->add_option("scene", a->scene_paths, kScenesHelp)->required();
+  cmd->add_flag("--json", a->json, "Print one JSON document on stdout (one line per scene for several)");
+  cmd->add_option("--impulse", a->impulse_text, "Test an impulse: px,py[,ptheta] (exact numbers; b0 is added)");
   cmd->add_flag("--guaranteed", a->guaranteed, "Also compute G, the impulses whose every outcome seats");
   cmd->add_flag("--stable", a->stable, "Also give the seat-and-stay set S ∩ h·C_stab");
   cmd->add_option("--svg", a->svg_path, "Draw the slice p_theta = const of S (and of G with --guaranteed); dof 3");
   cmd->add_flag("--sustained", a->sustained,
                 "The sustained-push wrench set J at the seated pose q* instead of S (past the paper)");
   cmd->add_option("--wrench", a->wrench_text, "With --sustained: test a world-frame wrench wx,wy,wm (exact numbers)");
-  return {cmd, [a] { return run_seat(*a); }};
+  return {cmd, [a] {
+            if (a->scene_paths.size() > 1 && !a->svg_path.empty())
+              throw InputError("--svg", a->svg_path, "draws one scene: give a single scene file");
+            return run_batch(a->scene_paths, a->json, [a](const std::string& p) {
+              a->scene_path = p;
+              return run_seat(*a);
+            });
+          }};
 }
 
 Command add_dump(CLI::App& app) {
   auto a = std::make_shared<DumpArgs>();
   auto* cmd = app.add_subcommand("dump", "Write S as an OFF file, clipped to a stated box");
-  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md)")->required();
+  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md); - reads standard input")->required();
   cmd->add_option("--off", a->off_dir, "Output directory")->required();
   cmd->add_option("--length", a->length_text, "Box holds apex + LENGTH * r for every ray r (default 1)");
   cmd->add_flag("--guaranteed", a->guaranteed, "Also write the pieces of the guaranteed set G");

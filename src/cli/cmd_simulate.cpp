@@ -21,8 +21,8 @@ struct ImpulseArgs {
 
 int run_simulate(const ImpulseArgs& a) {
   arm_run_control(a.run);
-  const Scene scene = load_scene(a.scene_path);
-  const VectorQ p = parse_impulse(a.impulse_text, scene.body.dof);
+  const Scene scene = read_scene(a.scene_path);
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   const auto sim = simulate(scene, {p}, a.steps, run_control());
   const OutcomeCount first = count_outcomes(enumerate_outcomes(scene, p, run_control()));
   end_progress();
@@ -32,8 +32,8 @@ int run_simulate(const ImpulseArgs& a) {
 
 int run_solutions(const ImpulseArgs& a) {
   arm_run_control(a.run);
-  const Scene scene = load_scene(a.scene_path);
-  const VectorQ p = parse_impulse(a.impulse_text, scene.body.dof);
+  const Scene scene = read_scene(a.scene_path);
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   const auto outcomes = enumerate_outcomes(scene, p, run_control());
   end_progress();
   std::cout << (a.json ? outcomes_json(scene, p, outcomes) : outcomes_text(scene, p, outcomes));
@@ -45,8 +45,8 @@ int run_solutions(const ImpulseArgs& a) {
 Command add_simulate(CLI::App& app) {
   auto a = std::make_shared<ImpulseArgs>();
   auto* cmd = app.add_subcommand("simulate", "Time-step the part under an impulse with the exact LCP solver");
-  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md)")->required();
-  cmd->add_option("--impulse", a->impulse_text, "External impulse of step 1: px,py[,ptheta]")->required();
+  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md); - reads standard input")->required();
+  cmd->add_option("--impulse", a->impulse_text, "External impulse of step 1: px,py[,ptheta] (b0 is added)")->required();
   cmd->add_option("--steps", a->steps, "Number of steps (default 1); later steps get no impulse");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   add_run_options(cmd, a->run);
@@ -56,8 +56,8 @@ Command add_simulate(CLI::App& app) {
 Command add_solutions(CLI::App& app) {
   auto a = std::make_shared<ImpulseArgs>();
   auto* cmd = app.add_subcommand("solutions", "Every outcome of one step (all LCP solutions, by contact mode)");
-  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md)")->required();
-  cmd->add_option("--impulse", a->impulse_text, "External impulse: px,py[,ptheta]")->required();
+  cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md); - reads standard input")->required();
+  cmd->add_option("--impulse", a->impulse_text, "External impulse: px,py[,ptheta] (b0 is added)")->required();
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   add_run_options(cmd, a->run);
   return {cmd, [a] { return run_solutions(*a); }};

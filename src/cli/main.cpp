@@ -73,9 +73,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("fixel 0.1.0"));
 
-  const std::vector<Command> commands = {add_seat(app),   add_dump(app),     add_simulate(app), add_solutions(app),
-                                         add_region(app), add_sample(app),   add_push(app),     add_verify(app),
-                                         add_design(app), add_push_plan(app)};
+  const std::vector<Command> commands = {add_seat(app),   add_dump(app),      add_simulate(app), add_solutions(app),
+                                         add_region(app), add_sample(app),    add_push(app),     add_verify(app),
+                                         add_design(app), add_push_plan(app), add_info(app)};
   bool exact_only = false;
   for (const auto& command : commands)
     command.app->add_flag("--exact-only", exact_only,

@@ -1,0 +1,87 @@
+// Scene inputs of the command line: `-` for standard input, and batches of
+// several scene files (one report per scene; one JSON line each with --json).
+#include <iostream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli.h"
+#include "fixel/error.h"
+#include "fixel/scene_json.h"
+
+namespace fixel::cli {
+
+Scene read_scene(const std::string& path) {
+  if (path != "-") return load_scene(path);
+  static bool consumed = false;
+  if (consumed) throw InputError("scene", "-", "standard input can be read only once");
+  consumed = true;
+  const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  if (std::cin.bad()) throw InputError("scene", "-", "standard input cannot be read");
+  return parse_scene(text, "stdin");
+}
+
+VectorQ with_background(const Scene& scene, const VectorQ& p) {
+  if (scene.background_impulse.isZero()) return p;
+  const VectorQ total = scene.background_impulse + p;
+  std::string b0, sum;
+  for (int k = 0; k < total.size(); ++k) {
+    b0 += (k ? ", " : "") + to_string(scene.background_impulse[k]);
+    sum += (k ? ", " : "") + to_string(total[k]);
+  }
+  std::cerr << "note: the scene's background_impulse b0 = (" << b0 << ") is added: the impulse used is b0 + p = ("
+            << sum << ")\n";
+  return total;
+}
+
+namespace {
+
+// Restores std::cout's buffer when a batch item ends, also on an exception.
+struct CoutCapture {
+  std::ostringstream text;
+  std::streambuf* saved;
+  CoutCapture() : saved(std::cout.rdbuf(text.rdbuf())) {}
+  ~CoutCapture() { std::cout.rdbuf(saved); }
+};
+
+}  // namespace
+
+int run_batch(const std::vector<std::string>& paths, bool json, const std::function<int(const std::string&)>& run) {
+  if (paths.size() == 1) return run(paths.front());
+  int worst = 0;
+  for (const auto& path : paths) {
+    std::string output, error;
+    int code = 0;
+    {
+      CoutCapture capture;
+      try {
+        code = run(path);
+      } catch (const InputError& e) {
+        error = e.what();
+        code = kExitBadInput;
+      }
+      output = capture.text.str();
+    }
+    worst = std::max(worst, code);
+    if (json) {
+      // One line per scene: the report compacted, or the error.
+      nlohmann::ordered_json line;
+      if (error.empty()) {
+        line = nlohmann::ordered_json::parse(output);
+        line["file"] = path;
+      } else {
+        line = {{"file", path}, {"error", error}};
+      }
+      std::cout << line.dump() << "\n";
+    } else {
+      std::cout << "== " << path << "\n";
+      if (error.empty())
+        std::cout << output;
+      else
+        std::cerr << "fixel: error: " << path << ": " << error << "\n";
+    }
+  }
+  return worst;
+}
+
+}  // namespace fixel::cli

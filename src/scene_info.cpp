@@ -1,0 +1,32 @@
+// The derived facts of a scene for `fixel info`.
+#include "fixel/scene_info.h"
+
+#include "fixel/curve.h"
+#include "fixel/error.h"
+
+namespace fixel {
+
+SceneInfo scene_info(const Scene& scene) {
+  SceneInfo info;
+  const Body& b = scene.body;
+  for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
+    const Fixel& f = scene.fixels[i];
+    info.p_AoFixel_A.push_back({f.p_AoF_A.x - f.gap * f.n_A.x, f.p_AoF_A.y - f.gap * f.n_A.y});
+    if (b.boundary) info.on_outline.push_back(fit_to_boundary(*b.boundary, f.p_AoF_A, &f.n_A));
+    if (f.off_boundary)
+      info.warnings.push_back("fixels[" + std::to_string(i) +
+                              "] is marked off_boundary: its point or normal is not checked against the outline");
+  }
+  if (b.boundary) info.area = b.boundary->mass.area;
+  if (b.mass_from_area)
+    info.warnings.push_back("body.mass is not given: it defaults to the enclosed area, " + to_string(b.mass) +
+                            " kg (density 1 kg/m²); give \"mass\" for the real part");
+  try {
+    info.seated = seated_pose(scene);
+  } catch (const InputError& e) {
+    info.seated_unavailable = e.what();
+  }
+  return info;
+}
+
+}  // namespace fixel
