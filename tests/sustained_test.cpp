@@ -99,7 +99,14 @@ GTEST_TEST(SeatedPose, RecoversAHandBuiltRotationExactly) {
 }
 
 GTEST_TEST(SeatedPose, RejectsAFixelOffThePolygon) {
-  const Scene scene = parse_scene(square_scene("\"0\"", "1/10 0 0", "0", "-1/2", "3/2"));
+  // The scene reader refuses it first; with the documented opt-out the seated
+  // pose must still refuse it on its own.
+  const std::string text = square_scene("\"0\"", "1/10 0 0", "0", "-1/2", "3/2");
+  EXPECT_THROW(parse_scene(text), SceneError);
+  std::string opted = text;
+  const std::size_t last = opted.rfind("\"gap\"");
+  opted.insert(last, "\"off_boundary\": true, ");
+  const Scene scene = parse_scene(opted);
   EXPECT_THROW(seated_pose(scene), SceneError);
 }
 
