@@ -1,6 +1,5 @@
 #include "fixel/internal/json_approx.h"
 
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -12,9 +11,20 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
+// -?digits(.digits)?(/digits)? : the exact number strings fixel writes.
 bool exact_number(const json& v) {
-  static const std::regex number(R"(-?[0-9]+(\.[0-9]+)?(/[0-9]+)?)");
-  return v.is_string() && std::regex_match(v.get_ref<const std::string&>(), number);
+  if (!v.is_string()) return false;
+  const std::string& t = v.get_ref<const std::string&>();
+  std::size_t k = t.size() > 0 && t[0] == '-' ? 1 : 0;
+  auto digits = [&] {
+    const std::size_t start = k;
+    while (k < t.size() && t[k] >= '0' && t[k] <= '9') ++k;
+    return k > start;
+  };
+  if (!digits()) return false;
+  if (k < t.size() && t[k] == '.' && (++k, !digits())) return false;
+  if (k < t.size() && t[k] == '/' && (++k, !digits())) return false;
+  return k == t.size();
 }
 
 // An exact string, or a non-empty array whose leaves are all exact strings.
