@@ -35,9 +35,9 @@ std::string ellipse_scene(int edges) {
     s << (k ? ", " : "") << "[" << grid(2 * std::cos(phi)) << ", " << grid(std::sin(phi)) << "]";
   }
   s << R"(]}]}, "fixels": [)"
-    << R"({"point": ["-2", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10"},)"
-    << R"({"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20"},)"
-    << R"({"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20"}],)"
+    << R"({"point": ["-2", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},)"
+    << R"({"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},)"
+    << R"({"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],)"
     << R"( "pusher": {"mu": "0"}})";
   return s.str();
 }

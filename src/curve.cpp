@@ -214,7 +214,22 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces) {
   // Green's theorem on each polynomial piece:
   //   A = ½∮(x dy − y dx),  ∬x = ½∮x² dy,  ∬y = −½∮y² dx,  ∬(x²+y²) = ⅓∮(x³ dy − y³ dx).
   Rational area2 = 0, mx2 = 0, my2 = 0, j3 = 0;
+  // Segments in closed form (the integrals of (a + t(b − a))^k over [0, 1]),
+  // with the divisions by 3 and 4 taken once at the end: a 100,000-edge
+  // polyline loads in a fraction of the polynomial path's time, same value.
+  Rational seg_mx2_times3 = 0, seg_my2_times3 = 0, seg_j3_times4 = 0;
   for (const auto& piece : pieces) {
+    if (piece.control.size() == 2) {
+      const Rational &x0 = piece.control[0].x, &y0 = piece.control[0].y;
+      const Rational &x1 = piece.control[1].x, &y1 = piece.control[1].y;
+      const Rational dx = x1 - x0, dy = y1 - y0;
+      area2 += x0 * y1 - x1 * y0;
+      const Rational xx = x0 * x0 + x0 * x1 + x1 * x1, yy = y0 * y0 + y0 * y1 + y1 * y1;
+      seg_mx2_times3 += dy * xx;
+      seg_my2_times3 -= dx * yy;
+      seg_j3_times4 += dy * (x0 + x1) * (x0 * x0 + x1 * x1) - dx * (y0 + y1) * (y0 * y0 + y1 * y1);
+      continue;
+    }
     std::vector<Rational> xs, ys;
     for (const auto& p : piece.control) {
       xs.push_back(p.x);
@@ -227,6 +242,9 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces) {
     my2 -= integral01(mul(y2, dx));
     j3 += integral01(mul(mul(x2, x), dy)) - integral01(mul(mul(y2, y), dx));
   }
+  mx2 += seg_mx2_times3 / 3;
+  my2 += seg_my2_times3 / 3;
+  j3 += seg_j3_times4 / 4;
   MassProperties m;
   m.area = area2 / 2;
   if (m.area != 0)
