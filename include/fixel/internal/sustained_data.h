@@ -1,0 +1,50 @@
+#pragma once
+// J's data in the part's body frame at q* (sustained.cpp builds it,
+// sustained_target.cpp answers the jam and escape tests on it), over Q(√d)
+// for polyline contacts or certified intervals for curved ones.
+
+#include <array>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "fixel/internal/cone3.h"
+
+namespace fixel::internal {
+
+// Everything in the part's body frame at q*, where a finger's push wrench
+// (d, (b − c) ⊗ d) is rational: only J's own data lives in NT, exact Q(√d)
+// for polyline contacts or certified intervals for curved ones.
+template <class NT>
+struct Data {
+  using V = std::array<NT, 3>;
+  NT cos, sin;            // the rotation of q*
+  std::vector<V> K_rows;  // w ∈ int K ⇔ a·w > 0 for every row (K = −cone(W_n*))
+  std::vector<V> K_rays;  // −W_n,i*
+  V normaliser;           // Σ K_rows: positive on K \ {0}
+  struct Jam {
+    std::array<int, 2> fixels;
+    std::vector<V> gens;    // −(W_n ± μ W_t) of both fixels
+    std::vector<V> facets;  // closed rows: w ∈ jam cone ⇔ a·w ≥ 0 for all
+  };
+  std::vector<Jam> jams;
+  struct Piece {
+    std::vector<V> closed, strict, rays;
+  };
+  std::vector<Piece> pieces;
+  bool pieces_decided = true;
+};
+
+struct SustainedData {
+  std::variant<Data<Q2>, Data<IV>> data;
+};
+
+// Whether w lies in the closed jam cone.
+template <class NT>
+bool in_jam(const typename Data<NT>::Jam& jam, const A3<NT>& w) {
+  return satisfies(w, jam.facets, {});
+}
+
+inline std::string fixel_name(int i) { return "fixels[" + std::to_string(i) + "]"; }
+
+}  // namespace fixel::internal

@@ -1,0 +1,198 @@
+// Fixture design, candidates: the places on the part's outline where a
+// fixel may touch it, and the scene of one layout of three of them.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "fixel/curve.h"
+#include "fixel/design.h"
+#include "fixel/error.h"
+#include "fixel/internal/design_detail.h"
+
+namespace fixel {
+
+namespace internal {
+
+const Boundary& boundary_of(const Scene& part) {
+  if (!part.body.boundary) throw SceneError("body.boundary", "", "is missing: fixture design needs the part's outline");
+  return *part.body.boundary;
+}
+
+Rational total_length(const Boundary& b) {
+  Rational total = 0;
+  for (const auto& c : b.curves) total += c.u_end() - c.u_begin();
+  return total;
+}
+
+// A rational unit vector near the direction of n (exact when |n| is
+// rational), from the rational point ((1−t²)/(1+t²), 2t/(1+t²)) of the
+// circle with t = tan(φ/2) rounded to a multiple of 2^-24.
+Vec2 unit_near(const Vec2& n, double* angle_error) {
+  const Rational len2 = n.x * n.x + n.y * n.y;
+  const Integer p = boost::multiprecision::numerator(len2), q = boost::multiprecision::denominator(len2);
+  const Integer rp = boost::multiprecision::sqrt(p), rq = boost::multiprecision::sqrt(q);
+  if (rp * rp == p && rq * rq == q) {
+    const Rational len = Rational(rp) / Rational(rq);
+    if (angle_error) *angle_error = 0;
+    return {n.x / len, n.y / len};
+  }
+  const double phi = std::atan2(to_double(n.y), to_double(n.x));
+  const bool flip = std::abs(phi) > M_PI / 2;  // keep |t| ≤ 1
+  const double half = (flip ? (phi > 0 ? phi - M_PI : phi + M_PI) : phi) / 2;
+  const Rational t(static_cast<long long>(std::llround(std::tan(half) * (1 << 24))), 1 << 24);
+  Vec2 u{(1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)};
+  if (flip) u = {-u.x, -u.y};
+  if (angle_error) {
+    const double got = std::atan2(to_double(u.y), to_double(u.x));
+    double e = std::abs(got - phi);
+    if (e > M_PI) e = 2 * M_PI - e;
+    *angle_error = e;
+  }
+  return u;
+}
+
+}  // namespace internal
+
+namespace {
+
+constexpr long kMaxCandidates = 10000;
+
+// Where on the loop (curve index, piece) u of curve k lies: the pieces
+// before and after the point, in loop order.
+std::pair<const BezierPiece*, const BezierPiece*> pieces_around(const Boundary& b, int curve, const Rational& u) {
+  const int np = static_cast<int>(b.pieces.size());
+  for (int i = 0; i < np; ++i) {
+    const BezierPiece& p = b.pieces[i];
+    if (p.curve != curve) continue;
+    if (p.u0 <= u && u < p.u1) {
+      const BezierPiece* left = &p;
+      if (u == p.u0) left = &b.pieces[(i + np - 1) % np];
+      return {left, &p};
+    }
+    if (u == p.u1 && (i + 1 == np || b.pieces[i + 1].curve != curve || b.pieces[i + 1].u0 != u))
+      return {&p, &b.pieces[(i + 1) % np]};
+  }
+  return {nullptr, nullptr};
+}
+
+}  // namespace
+
+using internal::boundary_of;
+using internal::unit_near;
+
+DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, const std::string& field) {
+  const Boundary& b = boundary_of(part);
+  const int nc = static_cast<int>(b.curves.size());
+  if (curve < 0 || curve >= nc)
+    throw InputError(field + ".curve", std::to_string(curve),
+                     "is not a curve of the boundary (it has " + std::to_string(nc) + ")");
+  const Curve& c = b.curves[curve];
+  if (u < c.u_begin() || u > c.u_end())
+    throw InputError(field + ".u", to_string(u),
+                     "is off curve " + std::to_string(curve) + " (its parameter runs over [" + to_string(c.u_begin()) +
+                         ", " + to_string(c.u_end()) + "])");
+  const auto [left, right] = pieces_around(b, curve, u);
+  if (!left || !right)
+    throw InputError(field + ".u", to_string(u), "lies on no piece of curve " + std::to_string(curve));
+  // A neighbouring piece that does not contain u touches the point at its end.
+  const bool left_holds = left->curve == curve && left->u0 < u && u <= left->u1;
+  const bool right_holds = right->curve == curve && right->u0 <= u && u < right->u1;
+  const Vec2 tl = left->derivative(left_holds ? left->local(u) : Rational(1));
+  const Rational s_right = right_holds ? right->local(u) : Rational(0);
+  const Vec2 tr = right->derivative(s_right);
+  if (is_zero(tl) || is_zero(tr))
+    throw InputError(field + ".u", to_string(u), "is where the boundary's tangent vanishes: no normal there");
+  if (cross(tl, tr) != 0 || dot(tl, tr) <= 0)
+    throw InputError(field + ".u", to_string(u),
+                     "is a corner of curve " + std::to_string(curve) + ": the boundary has no single normal there");
+  DesignCandidate d;
+  d.curve = curve;
+  d.u = u;
+  d.point = right->point(s_right);
+  d.normal = {-tr.y, tr.x};
+  return d;
+}
+
+std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::optional<Rational>& spacing) {
+  const Boundary& b = boundary_of(part);
+  if (spacing && *spacing <= 0) throw InputError("boundary_candidates(spacing)", to_string(*spacing), "must be > 0");
+  // Arc length by chords of 128 points per piece (placement only).
+  struct Sample {
+    int curve;
+    Rational u;
+    double s;
+  };
+  std::vector<Sample> samples;
+  constexpr int kPer = 128;
+  double s = 0, px = 0, py = 0;
+  for (const auto& piece : b.pieces)
+    for (int j = 0; j <= kPer; ++j) {
+      const Rational t(j, kPer);
+      const Vec2 p = piece.point(t);
+      const double x = to_double(p.x), y = to_double(p.y);
+      if (!samples.empty()) s += std::hypot(x - px, y - py);
+      px = x;
+      py = y;
+      samples.push_back({piece.curve, piece.u0 + t * (piece.u1 - piece.u0), s});
+    }
+  const double perimeter = s;
+  const double step = spacing ? to_double(*spacing) : perimeter / 24;
+  if (!(step > 0) || perimeter / step > kMaxCandidates)
+    throw InputError("boundary_candidates(spacing)", spacing ? to_string(*spacing) : "default",
+                     "gives more than " + std::to_string(kMaxCandidates) + " candidates on a boundary of length " +
+                         std::to_string(perimeter));
+  std::vector<DesignCandidate> out;
+  std::set<std::pair<Rational, Rational>> seen;
+  std::size_t at = 0;
+  for (long k = 0;; ++k) {
+    const double target = (static_cast<double>(k) + 0.5) * step;
+    if (target >= perimeter) break;
+    while (at + 1 < samples.size() && samples[at + 1].s < target) ++at;
+    if (at + 1 >= samples.size()) break;
+    const Sample &a = samples[at], &z = samples[at + 1];
+    int curve = z.curve;
+    double u = to_double(z.u);
+    if (a.curve == z.curve && z.s > a.s)
+      u = to_double(a.u) + (target - a.s) / (z.s - a.s) * (to_double(z.u) - to_double(a.u));
+    const Curve& c = b.curves[curve];
+    Rational ur(static_cast<long long>(std::llround(u * 1024)), 1024);
+    ur = std::max(c.u_begin(), std::min(c.u_end(), ur));
+    try {
+      DesignCandidate d = candidate_at(part, curve, ur, "boundary_candidates(spacing)");
+      if (seen.insert({d.point.x, d.point.y}).second) out.push_back(std::move(d));
+    } catch (const InputError&) {
+      // a corner or a vanishing tangent: no fixel there
+    }
+  }
+  return out;
+}
+
+Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
+                   const DesignOptions& o, bool step, double* angle_error) {
+  Scene s = part;
+  s.fixels.clear();
+  double worst = 0;
+  for (int i : f) {
+    Fixel fx;
+    fx.p_AoF_A = cands.at(i).point;
+    fx.mu = o.mu;
+    if (!step) fx.mu_hi = o.mu_hi;
+    if (step) {
+      double e = 0;
+      fx.n_A = unit_near(cands[i].normal, &e);
+      worst = std::max(worst, e);
+      fx.gap = o.gap;
+    } else {
+      fx.n_A = cands[i].normal;
+      fx.gap = 0;
+    }
+    s.fixels.push_back(fx);
+  }
+  s.pusher_mu = o.pusher_mu;
+  s.pusher_mu_hi.reset();
+  if (angle_error) *angle_error = worst;
+  return s;
+}
+
+}  // namespace fixel

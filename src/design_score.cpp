@@ -1,0 +1,273 @@
+// Fixture design, scores: the exact filters of one layout (W_n nonsingular,
+// form closure with a pushing finger) and its scores, the fraction of the
+// outline where a push seats the part (one-step and sustained).
+#include <algorithm>
+#include <cmath>
+
+#include "fixel/design.h"
+#include "fixel/error.h"
+#include "fixel/internal/design_detail.h"
+#include "fixel/region_target.h"
+#include "fixel/seating.h"
+#include "fixel/sustained.h"
+
+namespace fixel {
+
+namespace {
+
+// The normal wrench (d, r ⊗ d) of a push or contact at `point` along `d`.
+VectorQ wrench_at(const Scene& part, const Vec2& point, const Vec2& d) {
+  return contact_wrench(sub(point, part.body.p_AoCm_A), d, 3);
+}
+
+// Rows a_k with w ∈ int K ⇔ a_k · w > 0 for every k, where
+// K = {w : −w ∈ int cone(W_n)} (docs/theory.md §10.2); none if W_n is singular.
+std::optional<std::array<VectorQ, 3>> k_rows(const std::array<VectorQ, 3>& Wn) {
+  auto cross = [](const VectorQ& a, const VectorQ& b) {
+    VectorQ c(3);
+    c << a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0];
+    return c;
+  };
+  const Rational det = Wn[0].dot(cross(Wn[1], Wn[2]));
+  if (det == 0) return std::nullopt;
+  std::array<VectorQ, 3> rows;
+  for (int i = 0; i < 3; ++i) {
+    rows[i] = cross(Wn[(i + 1) % 3], Wn[(i + 2) % 3]);  // row i of adj(W_n)
+    if (det > 0) rows[i] = -rows[i];
+  }
+  return rows;
+}
+
+bool in_open_k(const std::array<VectorQ, 3>& rows, const VectorQ& w) {
+  for (const auto& a : rows)
+    if (a.dot(w) <= 0) return false;
+  return true;
+}
+
+// The target "−w strictly inside cone(W_n)" alone: with a frictionless
+// finger, a point is IN when its push and the three fixels' normal wrenches
+// are in form closure. `misses` is conservative (one separating row), so an
+// undecided stretch stays PARTIAL and is never counted as OUT.
+class FormClosureTarget final : public RegionTarget {
+ public:
+  explicit FormClosureTarget(const std::array<VectorQ, 3>& rows) : rows_(rows) {}
+  const char* push_model() const override { return "form closure"; }
+  const char* name() const override { return "K"; }
+  bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
+    for (const auto& g : gens)
+      if (!in_open_k(rows_, g)) return false;
+    if (detail) detail->half_line = true;
+    return true;
+  }
+  bool misses(const std::vector<VectorQ>& gens) override {
+    for (const auto& a : rows_) {
+      bool outside = true;
+      for (const auto& g : gens) outside = outside && a.dot(g) <= 0;
+      if (outside) return true;
+    }
+    return false;
+  }
+
+ private:
+  std::array<VectorQ, 3> rows_;
+};
+
+Rational in_fraction(const Region& r, const Rational& total) {
+  Rational in = 0;
+  for (const auto& iv : r.intervals)
+    if (iv.status == RegionStatus::kIn) in += iv.u1 - iv.u0;
+  return in / total;
+}
+
+RegionOptions region_options(const DesignOptions& o, const Rational& pusher_mu) {
+  RegionOptions ro;
+  ro.resolution = o.resolution;
+  ro.pusher_mu = pusher_mu;
+  return ro;
+}
+
+// Solid angle (fraction of the sphere) of J's pieces, with the moment scaled
+// by 1/ρ (ρ the radius of gyration) so that force and moment weigh alike.
+// Display only: doubles.
+double j_width(const Scene& part, const SustainedSet& J) {
+  const double rho = std::sqrt(to_double(part.body.inertia) / to_double(part.body.mass));
+  double total = 0;
+  for (const auto& piece : J.pieces) {
+    std::vector<std::array<double, 3>> rays;
+    for (const auto& r : piece.rays) {
+      std::array<double, 3> v{r[0].approx(), r[1].approx(), r[2].approx() / rho};
+      const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      if (n == 0) continue;
+      for (auto& x : v) x /= n;
+      rays.push_back(v);
+    }
+    if (rays.size() < 3) continue;
+    std::array<double, 3> c{0, 0, 0};
+    for (const auto& v : rays)
+      for (int k = 0; k < 3; ++k) c[k] += v[k];
+    // Order the rays around c, then sum the fan's spherical triangles
+    // (Van Oosterom and Strackee).
+    std::array<double, 3> e1{0, 0, 0}, e2;
+    const int ax = std::abs(c[0]) < std::abs(c[1]) ? (std::abs(c[0]) < std::abs(c[2]) ? 0 : 2)
+                                                   : (std::abs(c[1]) < std::abs(c[2]) ? 1 : 2);
+    e1[ax] = 1;
+    auto crs = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    auto dt = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    };
+    e1 = crs(c, e1);
+    e2 = crs(c, e1);
+    std::sort(rays.begin(), rays.end(), [&](const auto& a, const auto& b) {
+      return std::atan2(dt(a, e2), dt(a, e1)) < std::atan2(dt(b, e2), dt(b, e1));
+    });
+    for (std::size_t k = 1; k + 1 < rays.size(); ++k) {
+      const auto &a = rays[0], &b = rays[k], &d = rays[k + 1];
+      const double num = std::abs(dt(a, crs(b, d)));
+      const double den = 1 + dt(a, b) + dt(b, d) + dt(d, a);
+      total += 2 * std::atan2(num, den);
+    }
+  }
+  return total / (4 * M_PI);
+}
+
+// The sustained score of a scene with three fixels: J and, if J is not
+// empty, the region against it.
+void score_sustained(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out) {
+  const SustainedSet J = sustained_set(scene, false);  // strong stability: by the theorem
+  out.sustained_empty = J.empty;
+  if (J.empty) {
+    out.sustained_score = Rational(0);
+    out.j_width = 0;
+    return;
+  }
+  out.j_width = j_width(scene, J);
+  const auto target = sustained_target(J);
+  out.sustained_score = in_fraction(compute_region(scene, *target, region_options(o, o.pusher_mu)), total);
+}
+
+void score_step(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out) {
+  const SeatingSet S = seating_set(scene);
+  out.step_score = in_fraction(compute_region(scene, S, region_options(o, o.pusher_mu)), total);
+}
+
+}  // namespace
+
+namespace internal {
+
+// Filters and scores one triple by the ranking push model.
+Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
+                 const Rational& total, const std::array<int, 3>& f, DesignLayout& out) {
+  std::array<VectorQ, 3> Wn;
+  for (int i = 0; i < 3; ++i) Wn[i] = wrench_at(part, cands[f[i]].point, cands[f[i]].normal);
+  const auto rows = k_rows(Wn);
+  if (!rows) return Verdict::kSingular;
+  const Scene scene = layout_scene(part, cands, f, o, false);
+  // Form closure with a frictionless finger: a candidate whose push is in
+  // int K proves it; otherwise the region against int K decides.
+  bool closure = false;
+  for (const auto& c : cands)
+    if (in_open_k(*rows, wrench_at(part, c.point, c.normal))) {
+      closure = true;
+      break;
+    }
+  if (!closure) {
+    FormClosureTarget target(*rows);
+    const Region r = compute_region(scene, target, region_options(o, Rational(0)));
+    for (const auto& iv : r.intervals) closure = closure || iv.status != RegionStatus::kOut;
+  }
+  if (!closure) return Verdict::kNoFormClosure;
+  if (o.push == DesignPush::kSustained) {
+    score_sustained(scene, o, total, out);
+    out.score = *out.sustained_score;
+    return *out.sustained_empty ? Verdict::kJEmpty : Verdict::kScored;
+  }
+  double err = 0;
+  const Scene step = layout_scene(part, cands, f, o, true, &err);
+  out.normal_angle_error = err;
+  score_step(step, o, total, out);
+  out.score = *out.step_score;
+  return Verdict::kScored;
+}
+
+}  // namespace internal
+
+using internal::boundary_of;
+using internal::total_length;
+
+void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
+                      std::vector<DesignLayout>& layouts) {
+  const Rational total = total_length(boundary_of(part));
+  for (auto& l : layouts) {
+    try {
+      if (!l.sustained_score) score_sustained(layout_scene(part, cands, l.fixels, o, false), o, total, l);
+    } catch (const Error& e) {
+      l.note += std::string(l.note.empty() ? "" : "; ") + "sustained score: " + e.what();
+    }
+    if (l.step_score) continue;
+    if (o.mu_hi) {
+      l.note += std::string(l.note.empty() ? "" : "; ") + "no one-step score: it needs one fixel mu, not an interval";
+      continue;
+    }
+    try {
+      double err = 0;
+      const Scene step = layout_scene(part, cands, l.fixels, o, true, &err);
+      l.normal_angle_error = err;
+      score_step(step, o, total, l);
+    } catch (const Error& e) {
+      l.note += std::string(l.note.empty() ? "" : "; ") + "one-step score: " + e.what();
+    }
+  }
+}
+
+std::optional<DesignLayout> shipped_layout(const Scene& scene, const DesignOptions& options) {
+  if (scene.num_contacts() != 3) return std::nullopt;
+  try {
+    return score_scene_layout(scene, options);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& o) {
+  check_design(scene, o);
+  const Rational total = total_length(boundary_of(scene));
+  Scene s = scene;
+  for (auto& f : s.fixels) {
+    f.mu = o.mu;
+    f.mu_hi = o.mu_hi;
+  }
+  s.pusher_mu = o.pusher_mu;
+  s.pusher_mu_hi.reset();
+  DesignLayout out;
+  out.index = -1;
+  try {
+    score_sustained(s, o, total, out);
+  } catch (const InputError& e) {
+    out.note = std::string("no sustained score: ") + e.what();
+  }
+  if (!o.mu_hi) {
+    try {
+      score_step(s, o, total, out);
+    } catch (const InputError& e) {
+      out.note += std::string(out.note.empty() ? "" : "; ") + "no one-step score: " + e.what();
+    }
+  }
+  out.score = (o.push == DesignPush::kSustained ? out.sustained_score : out.step_score).value_or(Rational(0));
+  return out;
+}
+
+Region layout_region(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
+                     const DesignOptions& o) {
+  if (o.push == DesignPush::kSustained) {
+    const Scene s = layout_scene(part, cands, f, o, false);
+    const SustainedSet J = sustained_set(s, false);
+    const auto target = sustained_target(J);
+    return compute_region(s, *target, region_options(o, o.pusher_mu));
+  }
+  const Scene s = layout_scene(part, cands, f, o, true);
+  return compute_region(s, seating_set(s), region_options(o, o.pusher_mu));
+}
+
+}  // namespace fixel
