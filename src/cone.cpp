@@ -5,6 +5,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/filtered.h"
 
 namespace fixel {
 
@@ -153,5 +154,7 @@ std::vector<VectorQ> cone_facet_normals(const std::vector<VectorQ>& rays, int di
   const int rank = internal::exact_rank(live, dim);
   return dim == 3 ? facets3(live, rank) : facets2(live, rank);
 }
+
+bool Halfspace::contains(const VectorQ& p) const { return internal::affine_sign_filtered(a, c, p) >= 0; }
 
 }  // namespace fixel

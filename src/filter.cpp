@@ -34,6 +34,10 @@ std::string to_string(FilterSite site) {
       return "orientation";
     case FilterSite::kCone:
       return "cone";
+    case FilterSite::kMembership:
+      return "membership";
+    case FilterSite::kJam:
+      return "jam test";
     case FilterSite::kCount:
       break;
   }

@@ -4,6 +4,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/exact_lp.h"
+#include "fixel/internal/filtered.h"
 
 namespace fixel {
 
@@ -65,9 +66,9 @@ void drop_parallel_redundancy(Polyhedron& P) {
 
 bool Polyhedron::contains(const VectorQ& p) const {
   for (const auto& h : closed)
-    if (!(h.a.dot(p) >= h.c)) return false;
+    if (internal::affine_sign_filtered(h.a, h.c, p) < 0) return false;
   for (const auto& h : strict)
-    if (!(h.a.dot(p) > h.c)) return false;
+    if (internal::affine_sign_filtered(h.a, h.c, p) <= 0) return false;
   return true;
 }
 

@@ -52,7 +52,7 @@ bool cone_in_J(const Data<NT>& d, const std::vector<VectorQ>& gens, RegionStats*
     bool separated = false;
     for (const auto& a : jam.facets) {
       bool all_out = true;
-      for (const auto& x : g) all_out = all_out && sign(dot3(a, x)) < 0;
+      for (const auto& x : g) all_out = all_out && sign_dot3(a, x) < 0;
       if (all_out) {
         separated = true;
         break;
@@ -78,7 +78,7 @@ bool cone_misses_J(const Data<NT>& d, const std::vector<VectorQ>& gens, RegionSt
   for (const auto& v : gens) g.push_back(lift3<NT>(v));
   for (const auto& a : d.K_rows) {
     bool outside = true;
-    for (const auto& x : g) outside = outside && sign(dot3(a, x)) <= 0;
+    for (const auto& x : g) outside = outside && sign_dot3(a, x) <= 0;
     if (outside) return true;
   }
   for (const auto& jam : d.jams) {

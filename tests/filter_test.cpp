@@ -176,6 +176,65 @@ GTEST_TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise)
   EXPECT_FALSE(direction_extremes({{Rational(1, 3), Rational(2, 3)}, {Rational(-1, 3), Rational(-2, 3)}}, first, last));
 }
 
+// Membership in S and G: random impulses are decided by the interval
+// filter and agree with the exact dot product; impulses exactly on a facet
+// plane of S (a·p = c, with thirds that are not doubles) reach the exact
+// fallback and are inside, as the closed half-space says.
+GTEST_TEST(Filter, MembershipInSAndGAgreesWithTheExactTestAndFacetPointsFallBack) {
+  const Scene scene = test::scene_file("example2");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  std::mt19937_64 rng(11);
+  ForceExactScope filtered(false);
+  reset_filter_stats();
+  int inside = 0, in_g = 0;
+  for (int k = 0; k < 200; ++k) {
+    VectorQ p = S.apex;
+    for (int j = 0; j < 3; ++j) p[j] += test::random_rational(rng, -4, 4, 9);
+    bool exact_in = true;
+    for (const auto& h : S.halfspaces) exact_in = exact_in && h.a.dot(p) >= h.c;
+    EXPECT_EQ(S.contains(p), exact_in) << "point " << k;
+    const bool g = G.contains(p, S);
+    EXPECT_EQ(g, run(true, [&] { return G.contains(p, S); })) << "point " << k;
+    inside += exact_in;
+    in_g += g;
+  }
+  EXPECT_GT(inside, 0);  // both answers occur
+  EXPECT_LT(inside, 200);
+  EXPECT_GT(filter_stats().at(FilterSite::kMembership).certified, 0);
+  EXPECT_EQ(filter_stats().at(FilterSite::kMembership).fallbacks, 0);
+  // On a facet: the apex plus a third of a ray lies on every facet plane
+  // through that ray, where a·p − c is exactly 0.
+  reset_filter_stats();
+  for (const VectorQ& ray : S.rays) {
+    const VectorQ on_edge = S.apex + Rational(1, 3) * ray;
+    EXPECT_TRUE(S.contains(on_edge));
+  }
+  EXPECT_GE(filter_stats().at(FilterSite::kMembership).fallbacks, 1);
+}
+
+// J's escape and jam tests over Q(√d): random wrenches get the same answer
+// (and the same reason) with and without the filter, and the filter decides
+// most signs.
+GTEST_TEST(Filter, SustainedMembershipAgreesWithTheExactJamAndEscapeTests) {
+  const Scene polygon = test::scene_file("polygon");
+  const SustainedSet J = sustained_set(polygon);
+  std::mt19937_64 rng(17);
+  ForceExactScope filtered(false);
+  reset_filter_stats();
+  int in = 0;
+  for (int k = 0; k < 200; ++k) {
+    VectorQ w(3);
+    for (int j = 0; j < 3; ++j) w[j] = test::random_rational(rng, -4, 4, 9);
+    const std::string why = J.why_not(w);
+    EXPECT_EQ(why, run(true, [&] { return J.why_not(w); })) << "wrench " << k;
+    in += why.empty();
+  }
+  EXPECT_GT(in, 0);  // both answers occur
+  EXPECT_LT(in, 200);
+  EXPECT_GT(filter_stats().at(FilterSite::kJam).certified, 0);
+}
+
 GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {
   const Scene scene = test::scene_file("blob");
   const SeatingSet S = seating_set(scene);

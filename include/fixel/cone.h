@@ -12,8 +12,9 @@ namespace fixel {
 struct Halfspace {
   VectorQ a;
   Rational c;
-  /// Exact test a·p ≥ c; points on the boundary plane are inside.
-  bool contains(const VectorQ& p) const { return a.dot(p) >= c; }
+  /// Exact test a·p ≥ c (interval-filtered); points on the boundary plane
+  /// are inside. Precondition: p has a's length.
+  bool contains(const VectorQ& p) const;
 };
 
 /// Facet normals of cone(rays) = {Σ λ_k r_k : λ ≥ 0} ⊂ R^dim, dim ∈ {2, 3}:

@@ -18,10 +18,12 @@ enum class FilterSite {
   kOutTest,      ///< Does a segment's wrench cone miss the seating set (before the exact LP).
   kOrientation,  ///< Signs of planar cross products (direction extremes).
   kCone,         ///< The extreme moments of a segment's tight wrench cone.
+  kMembership,   ///< Side of a half-space a·p ≥ c or > c (S, G and polyhedron membership).
+  kJam,          ///< Signs of J's escape and jam rows at an exact seated pose (Q(√d)).
   kCount,
 };
 
-/// "lemke", "ray test", "out test", "orientation", "cone".
+/// "lemke", "ray test", "out test", "orientation", "cone", "membership", "jam test".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fixel/error.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/interval_arith.h"
 #include "fixel/internal/quadratic_field.h"
 
@@ -24,6 +25,32 @@ template <class NT>
 NT dot3(const A3<NT>& a, const A3<NT>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
+// Sign of a·x. Over Q(√d) the interval filter decides first (each entry
+// a0 + a1√d enclosed with CGAL's correctly rounded interval sqrt) and the
+// exact Sqrt_extension sign runs only when it cannot; over intervals it is
+// the interval's own sign (which throws Undecided when it straddles 0).
+inline int sign_dot3(const A3<IV>& a, const A3<IV>& x) { return sign(dot3(a, x)); }
+
+inline FI to_interval_q2(const Q2& x) {  // needs a Protect scope
+  if (!x.is_extended() || x.a1() == 0) return to_interval(x.a0());
+  return to_interval(x.a0()) + to_interval(x.a1()) * CGAL::sqrt(to_interval(x.root()));
+}
+
+inline int sign_dot3(const A3<Q2>& a, const A3<Q2>& x) {
+  if (!force_exact()) {
+    int s = kUndecided;
+    {
+      Protect guard;
+      FI sum = to_interval_q2(a[0]) * to_interval_q2(x[0]);
+      for (int k = 1; k < 3; ++k) sum += to_interval_q2(a[k]) * to_interval_q2(x[k]);
+      s = certain_sign(sum);
+    }
+    record_filter(FilterSite::kJam, s != kUndecided);
+    if (s != kUndecided) return s;
+  }
+  return sign(dot3(a, x));
+}
+
 template <class NT>
 A3<NT> cross3(const A3<NT>& a, const A3<NT>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -99,7 +126,7 @@ bool is_zero3(const A3<NT>& a) {
 template <class NT>
 void add_unique(std::vector<A3<NT>>& out, const A3<NT>& a) {
   for (const auto& q : out) try {
-      if (is_zero3(cross3(q, a)) && sign(dot3(q, a)) > 0) return;
+      if (is_zero3(cross3(q, a)) && sign_dot3(q, a) > 0) return;
     } catch (const Undecided&) {
     }
   out.push_back(a);
@@ -112,7 +139,7 @@ int supporting_side(const A3<NT>& a, const std::vector<A3<NT>>& gens, std::size_
   bool nonneg = true, nonpos = true;
   for (std::size_t k = 0; k < gens.size(); ++k) {
     if (k == skip_i || k == skip_j) continue;
-    const int s = sign(dot3(a, gens[k]));
+    const int s = sign_dot3(a, gens[k]);
     nonneg = nonneg && s >= 0;
     nonpos = nonpos && s <= 0;
   }
@@ -147,9 +174,9 @@ std::vector<A3<NT>> facets_of(const std::vector<A3<NT>>& gens, bool planar) {
 template <class NT>
 bool satisfies(const A3<NT>& x, const std::vector<A3<NT>>& closed, const std::vector<A3<NT>>& strict) {
   for (const auto& a : closed)
-    if (sign(dot3(a, x)) < 0) return false;
+    if (sign_dot3(a, x) < 0) return false;
   for (const auto& a : strict)
-    if (sign(dot3(a, x)) <= 0) return false;
+    if (sign_dot3(a, x) <= 0) return false;
   return true;
 }
 
@@ -164,7 +191,7 @@ std::vector<A3<NT>> rays_of(const std::vector<A3<NT>>& rows) {
       for (const A3<NT>& r : {c, neg3(c)}) {
         bool ok = true;
         for (std::size_t k = 0; k < rows.size() && ok; ++k)
-          if (k != i && k != j) ok = sign(dot3(rows[k], r)) >= 0;
+          if (k != i && k != j) ok = sign_dot3(rows[k], r) >= 0;
         if (ok) add_unique(out, r);
       }
     }

@@ -75,4 +75,18 @@ inline int orientation_filtered(const Vec2& a, const Vec2& b) {
   return orientation_filtered(a, to_interval(a), b, to_interval(b));
 }
 
+// Sign of a·p − c (the side of the half-space a·p ≥ c), filtered. Vectors of
+// equal length.
+inline int affine_sign_filtered(const VectorQ& a, const Rational& c, const VectorQ& p) {
+  if (!force_exact()) {
+    Protect guard;
+    FI s = -to_interval(c);
+    for (Eigen::Index i = 0; i < a.size(); ++i) s += to_interval(a[i]) * to_interval(p[i]);
+    const int r = certain_sign(s);
+    record_filter(FilterSite::kMembership, r != kUndecided);
+    if (r != kUndecided) return r;
+  }
+  return sign(a.dot(p) - c);
+}
+
 }  // namespace fixel::internal
