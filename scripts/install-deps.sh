@@ -12,6 +12,7 @@ packages=(
   pybind11-dev python3-dev python3-pybind11
   python3-numpy python3-matplotlib python3-pytest python3-hypothesis python3-tqdm
   python3-dask python3-distributed
+  python3-meshio
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -6,6 +6,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
 #include "fixel/wrench_cone.h"
@@ -16,10 +17,16 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-std::string text(const VectorQ& v) {
-  std::string s = "(";
-  for (int k = 0; k < v.size(); ++k) s += (k ? ", " : "") + to_string(v[k]);
-  return s + ")";
+json exact_json(const VectorQ& v) {
+  json out = json::array();
+  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
+  return out;
+}
+
+json box_json(const Box& box) { return {{"lo", exact_json(box.lo)}, {"hi", exact_json(box.hi)}}; }
+
+void append(std::vector<std::string>& to, const std::vector<std::string>& paths) {
+  to.insert(to.end(), paths.begin(), paths.end());
 }
 
 }  // namespace
@@ -33,31 +40,41 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
   std::vector<Halfspace> hs = S.halfspaces;
   for (const auto& h : box.halfspaces()) hs.push_back(h);
   const std::string path = (std::filesystem::path(dir) / "seating_set.off").string();
-  std::ofstream out(path);
-  if (!out) throw InputError("dump_off(directory)", path, "cannot be written");
-  write_polytope_off(out, hs, S.dof,
-                     {"fixel: seating impulse set S of scene \"" + scene.name + "\"" +
-                          (S.dof == 2 ? " (dof 2, drawn in the plane z = 0)" : ""),
-                      "clipped to the box " + box.describe(),
-                      "(the box holds the apex and apex + " + to_string(length) + " * r for every ray r)",
-                      "apex " + text(S.apex) + "; coordinates below are rounded to double for display"});
-  if (!out) throw InputError("dump_off(directory)", path, "could not be written completely");
-  std::vector<std::string> written = {path};
+  const char* space = S.dof == 2 ? "impulse (px, py), drawn in the plane z = 0" : "impulse (px, py, ptheta)";
+  std::vector<std::string> written;
+  append(written, internal::write_off_with_sidecar(
+                      path, hs, S.dof,
+                      {{"what", "seating_set"},
+                       {"description", "the seating impulse set S, clipped to a box"},
+                       {"scene", scene.name},
+                       {"space", space},
+                       {"apex", exact_json(S.apex)},
+                       {"length", to_string(length)},
+                       {"box", box_json(box)},
+                       {"box_rule", "the smallest box holding the apex and apex + length * r for every ray r"},
+                       {"coordinates", "the OFF vertices are rounded to double for display"}},
+                      "dump_off(directory)"));
   if (G) {
     for (std::size_t k = 0; k < G->pieces.size(); ++k) {
       const std::string piece_path =
           (std::filesystem::path(dir) / ("guaranteed_" + std::to_string(k) + ".off")).string();
-      std::ofstream piece_out(piece_path);
-      if (!piece_out) throw InputError("dump_off(directory)", piece_path, "cannot be written");
       std::vector<Halfspace> rows = G->pieces[k].closed;
       for (const auto& h : G->pieces[k].strict) rows.push_back(h);  // the closure
       for (const auto& h : box.halfspaces()) rows.push_back(h);
-      write_polytope_off(
-          piece_out, rows, S.dof,
-          {"fixel: piece " + std::to_string(k) + " of the guaranteed set G of scene \"" + scene.name + "\"",
-           "its closure (" + std::to_string(G->pieces[k].strict.size()) +
-               " strict rows drawn as closed), clipped to the box " + box.describe()});
-      written.push_back(piece_path);
+      append(written, internal::write_off_with_sidecar(
+                          piece_path, rows, S.dof,
+                          {{"what", "guaranteed_piece"},
+                           {"description", "piece " + std::to_string(k) +
+                                               " of the guaranteed set G: its closure (strict "
+                                               "rows drawn as closed), clipped to the box"},
+                           {"scene", scene.name},
+                           {"space", space},
+                           {"piece", k},
+                           {"dimension", k < G->dimensions.size() ? json(G->dimensions[k]) : json(nullptr)},
+                           {"strict_rows", G->pieces[k].strict.size()},
+                           {"box", box_json(box)},
+                           {"coordinates", "the OFF vertices are rounded to double for display"}},
+                          "dump_off(directory)"));
     }
   }
   if (!scene.body.boundary) return written;
@@ -100,18 +117,23 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
             (family == EdgeFamily::kNormal ? "normal" : (family == EdgeFamily::kMinus ? "minus" : "plus")) + "_" +
             (method == ConeMethod::kTight ? "tight" : "paper") + ".off";
         const std::string cone_path = (std::filesystem::path(dir) / name).string();
-        std::ofstream cone_out(cone_path);
-        if (!cone_out) throw InputError("dump_off(directory)", cone_path, "cannot be written");
-        std::string gens;
-        for (const auto& g : cone->generators) gens += text(g) + " ";
-        write_polytope_off(
-            cone_out, hs, 3,
-            {"fixel: wrench cone of curve " + std::to_string(piece.curve) + ", u in [" + to_string(piece.u0) + ", " +
-                 to_string(piece.u1) + "], family " + to_string(family) + ", " +
-                 (method == ConeMethod::kTight ? "tight" : "paper") + " cone",
-             "wrench space (fx, fy, moment about the centre of mass), clipped to the box " + cube.describe(),
-             "generators " + gens});
-        written.push_back(cone_path);
+        json gens = json::array();
+        for (const auto& g : cone->generators) gens.push_back(exact_json(g));
+        append(written, internal::write_off_with_sidecar(
+                            cone_path, hs, 3,
+                            {{"what", "wrench_cone"},
+                             {"description", "the wrench cone of one Bezier piece, clipped to the box"},
+                             {"scene", scene.name},
+                             {"space", "wrench (fx, fy, moment about the centre of mass)"},
+                             {"curve", piece.curve},
+                             {"u0", to_string(piece.u0)},
+                             {"u1", to_string(piece.u1)},
+                             {"family", to_string(family)},
+                             {"method", method == ConeMethod::kTight ? "tight" : "paper"},
+                             {"generators", gens},
+                             {"box", box_json(cube)},
+                             {"coordinates", "the OFF vertices are rounded to double for display"}},
+                            "dump_off(directory)"));
       }
   }
   return written;

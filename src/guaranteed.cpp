@@ -97,6 +97,7 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S) {
     }
     G.pieces = std::move(next);
   }
+  for (const auto& piece : G.pieces) G.dimensions.push_back(affine_dimension(piece));
   return G;
 }
 

@@ -61,6 +61,7 @@ json halfspaces_json(const std::vector<Halfspace>& hs) {
   return out;
 }
 std::string polyhedron_text(const Polyhedron& P) {
+  if (P.is_trivially_empty()) return "      (empty: a row 0 >= c with c > 0)\n";
   std::string s;
   for (const auto& h : P.closed) s += "      " + halfspace_text(h) + "\n";
   for (const auto& h : P.strict) {
@@ -69,6 +70,26 @@ std::string polyhedron_text(const Polyhedron& P) {
     s += "      " + t + "\n";
   }
   return s;
+}
+// " (all of dimension 3)" or " (7 of dimension 3; 2 lower-dimensional, with no volume: piece 4 of dimension 2,
+// piece 8 of dimension 1)".
+std::string pieces_dimension_text(const GuaranteedSet& G) {
+  if (G.pieces.empty() || G.dimensions.size() != G.pieces.size()) return "";
+  const int dof = G.pieces[0].dim;
+  std::string low;
+  int full = 0, lower = 0;
+  for (std::size_t k = 0; k < G.dimensions.size(); ++k) {
+    if (G.dimensions[k] == dof) {
+      ++full;
+      continue;
+    }
+    ++lower;
+    low += (low.empty() ? "" : ", ") + std::string("piece ") + std::to_string(k) + " of dimension " +
+           std::to_string(G.dimensions[k]);
+  }
+  if (lower == 0) return " (all of dimension " + std::to_string(dof) + ")";
+  return " (" + std::to_string(full) + " of dimension " + std::to_string(dof) + "; " + std::to_string(lower) +
+         " lower-dimensional, with no volume, kept so that the pieces partition G exactly: " + low + ")";
 }
 std::string modes_text(const std::vector<ContactMode>& modes) {
   std::string s;
@@ -89,8 +110,10 @@ json seat_extras_json(const SeatReport& report, const GuaranteedSet* G) {
                                   {"strict", halfspaces_json(n.impulses.strict)}});
     }
     g["pieces"] = json::array();
-    for (const auto& p : G->pieces)
-      g["pieces"].push_back({{"closed", halfspaces_json(p.closed)}, {"strict", halfspaces_json(p.strict)}});
+    for (std::size_t k = 0; k < G->pieces.size(); ++k)
+      g["pieces"].push_back({{"dimension", k < G->dimensions.size() ? json(G->dimensions[k]) : json(nullptr)},
+                             {"closed", halfspaces_json(G->pieces[k].closed)},
+                             {"strict", halfspaces_json(G->pieces[k].strict)}});
     g["lost_fraction"] = to_string(*report.lost_fraction);
     doc["guaranteed_set"] = g;
     if (report.impulse) doc["guaranteed"] = *report.impulse->guaranteed;
@@ -107,7 +130,8 @@ std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
   std::ostringstream out;
   if (G) {
     out << "Guaranteed set G (one-step: guaranteed, every outcome of the one-step model seats): " << G->pieces.size()
-        << " convex piece(s); " << G->non_seating.size() << " non-seating set(s) meet S\n";
+        << " convex piece(s)" << pieces_dimension_text(*G) << "; " << G->non_seating.size()
+        << " non-seating set(s) meet S\n";
     for (const auto& n : G->non_seating)
       out << "  non-seating: modes " << modes_text(n.modes) << ", fixel " << n.open_fixel << " stays open, where\n"
           << polyhedron_text(n.impulses);

@@ -65,6 +65,12 @@ std::string region_json(const Scene& scene, const Region& region) {
   doc["scene"] = scene.name;
   doc["method"] = method_of(region);
   doc["resolution"] = region.resolution ? json(to_string(*region.resolution)) : json(nullptr);
+  if (region.resolution_length) {
+    doc["resolution_length"] = to_string(*region.resolution_length);
+    json widths = json::array();
+    for (const auto& w : region.piece_widths) widths.push_back(to_string(w));
+    doc["piece_widths"] = widths;
+  }
   doc["pusher_mu"] = to_string(region.pusher_mu);
   doc["target"] = region.target;
   doc["meaning"] = {{"in", in_meaning(region)}, {"physics", "docs/physics.md"}};
@@ -99,18 +105,24 @@ std::string region_json(const Scene& scene, const Region& region) {
     }
   }
   doc["counts"] = counts;
-  json lengths;
-  for (const auto& [k, v] : status_lengths(region)) lengths[k] = to_string(v);
-  doc["lengths"] = lengths;
-  json arc = {{"outline", region.outline_length}};
-  for (const auto& [k, v] : status_arc_lengths(region)) arc[k] = v;
-  doc["arc_lengths"] = arc;
+  if (region.sampled) {
+    // Sample points have no length: the summary counts them ("counts" above
+    // is per status, one interval per point).
+    doc["points"] = region.intervals.size();
+  } else {
+    json lengths;
+    for (const auto& [k, v] : status_lengths(region)) lengths[k] = to_string(v);
+    doc["lengths"] = lengths;
+    json arc = {{"outline", region.outline_length}};
+    for (const auto& [k, v] : status_arc_lengths(region)) arc[k] = v;
+    doc["arc_lengths"] = arc;
+  }
   doc["stats"] = {{"cone_tests", region.stats.cone_tests},
                   {"lp_tests", region.stats.lp_tests},
                   {"point_tests", region.stats.point_tests},
-                  {"depth", region.stats.depth},
-                  {"partial_length", to_string(region.stats.partial_length)},
-                  {"seconds", region.stats.seconds}};
+                  {"depth", region.stats.depth}};
+  if (!region.sampled) doc["stats"]["partial_length"] = to_string(region.stats.partial_length);
+  doc["stats"]["seconds"] = region.stats.seconds;
   if (region.exact) {
     doc["stats"]["roots"] = region.stats.roots;
     doc["exact"] = true;
@@ -131,6 +143,9 @@ std::string region_text(const Scene& scene, const Region& region) {
     out << ": root isolation" << (region.digits ? ", digits " + std::to_string(region.digits) : "");
   else if (region.resolution)
     out << ", resolution " << to_string(*region.resolution);
+  else if (region.resolution_length)
+    out << ", resolution length " << internal::readable(*region.resolution_length)
+        << " m (every stretch left is at most this long)";
   out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
   out << "  IN means \"" << meaning << "\""
       << (region.target == "S"   ? ": some outcome of the one-step model seats"
@@ -168,11 +183,18 @@ std::string region_text(const Scene& scene, const Region& region) {
     }
     out << "\n";
   }
-  const auto arc = status_arc_lengths(region);
-  out << "outline " << internal::decimal(region.outline_length, 4) << " m: IN (" << meaning << ") "
-      << percent(arc.at("in"), region.outline_length) << ", out " << percent(arc.at("out"), region.outline_length)
-      << ", partial " << percent(arc.at("partial"), region.outline_length)
-      << " of its arc length (exact parameter lengths: --json \"lengths\")\n";
+  if (region.sampled) {
+    std::map<std::string, std::size_t> points{{"in", 0}, {"out", 0}, {"partial", 0}};
+    for (const auto& r : region.intervals) ++points[to_string(r.status)];
+    out << region.intervals.size() << " sample point(s): IN (" << meaning << ") " << points.at("in") << ", out "
+        << points.at("out") << ", partial " << points.at("partial") << " (point tests say nothing between points)\n";
+  } else {
+    const auto arc = status_arc_lengths(region);
+    out << "outline " << internal::decimal(region.outline_length, 4) << " m: IN (" << meaning << ") "
+        << percent(arc.at("in"), region.outline_length) << ", out " << percent(arc.at("out"), region.outline_length)
+        << ", partial " << percent(arc.at("partial"), region.outline_length)
+        << " of its arc length (exact parameter lengths: --json \"lengths\")\n";
+  }
   out << "cone tests " << region.stats.cone_tests << ", LP tests " << region.stats.lp_tests << ", point tests "
       << region.stats.point_tests << ", depth " << region.stats.depth;
   if (region.exact) out << ", roots " << region.stats.roots;

@@ -7,6 +7,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/json_approx.h"
+#include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
 
@@ -198,8 +199,8 @@ Halfspace display_row(const std::array<QuadraticIrrational, 3>& a) {
   return {v, Rational(0)};
 }
 
-std::string write_cone_off(const std::string& dir, const std::string& name, const AlgebraicCone& cone,
-                           const std::vector<std::string>& comments) {
+std::vector<std::string> write_cone_off(const std::string& dir, const std::string& name, const AlgebraicCone& cone,
+                                        json meta) {
   std::vector<Halfspace> rows;
   for (const auto& a : cone.closed) rows.push_back(display_row(a));
   for (const auto& a : cone.strict) rows.push_back(display_row(a));
@@ -208,13 +209,10 @@ std::string write_cone_off(const std::string& dir, const std::string& name, cons
   box.hi = VectorQ::Constant(3, Rational(1));
   for (const auto& h : box.halfspaces()) rows.push_back(h);
   const std::string path = (std::filesystem::path(dir) / name).string();
-  std::ofstream out(path);
-  if (!out) throw InputError("dump_sustained_off(directory)", path, "cannot be written");
-  std::vector<std::string> all = comments;
-  all.push_back("clipped to the box [-1, 1]^3; rows rounded to double for display (exact: seat --sustained --json)");
-  write_polytope_off(out, rows, 3, all);
-  if (!out) throw InputError("dump_sustained_off(directory)", path, "could not be written completely");
-  return path;
+  meta["box"] = {{"lo", {"-1", "-1", "-1"}}, {"hi", {"1", "1", "1"}}};
+  meta["coordinates"] =
+      "rows rounded to double before clipping, vertices rounded to double: a picture (exact: seat --sustained --json)";
+  return internal::write_off_with_sidecar(path, rows, 3, meta, "dump_sustained_off(directory)");
 }
 
 }  // namespace
@@ -223,17 +221,29 @@ std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedS
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("dump_sustained_off(directory)", dir, "cannot be created: " + ec.message());
-  const std::string head =
-      "fixel: sustained-push set of scene \"" + scene.name + "\", w-space (fx, fy, m), world frame";
+  auto meta = [&](const std::string& what, const std::string& description) {
+    return json{{"what", what},
+                {"description", description},
+                {"scene", scene.name},
+                {"space", "wrench (fx, fy, m), world frame at the seated pose"}};
+  };
   std::vector<std::string> written;
-  written.push_back(write_cone_off(dir, "sustained_cone.off", J.cone, {head, "the cone {w : -w in int cone(W_n*)}"}));
-  for (const auto& jam : J.jam_cones)
-    written.push_back(write_cone_off(
-        dir, "sustained_jam_" + std::to_string(jam.fixels[0]) + "_" + std::to_string(jam.fixels[1]) + ".off", jam.cone,
-        {head, "jam cone -(FC_" + std::to_string(jam.fixels[0]) + " + FC_" + std::to_string(jam.fixels[1]) + ")"}));
-  for (std::size_t k = 0; k < J.pieces.size(); ++k)
-    written.push_back(write_cone_off(dir, "sustained_piece_" + std::to_string(k) + ".off", J.pieces[k],
-                                     {head, "convex piece " + std::to_string(k) + " of J (its closure)"}));
+  auto add = [&](const std::vector<std::string>& paths) { written.insert(written.end(), paths.begin(), paths.end()); };
+  add(write_cone_off(dir, "sustained_cone.off", J.cone,
+                     meta("sustained_cone", "the cone {w : -w in int cone(W_n*)} of the sustained-push set J")));
+  for (const auto& jam : J.jam_cones) {
+    json m = meta("sustained_jam",
+                  "jam cone -(FC_" + std::to_string(jam.fixels[0]) + " + FC_" + std::to_string(jam.fixels[1]) + ")");
+    m["fixels"] = {jam.fixels[0], jam.fixels[1]};
+    add(write_cone_off(dir,
+                       "sustained_jam_" + std::to_string(jam.fixels[0]) + "_" + std::to_string(jam.fixels[1]) + ".off",
+                       jam.cone, m));
+  }
+  for (std::size_t k = 0; k < J.pieces.size(); ++k) {
+    json m = meta("sustained_piece", "convex piece " + std::to_string(k) + " of J (its closure)");
+    m["piece"] = k;
+    add(write_cone_off(dir, "sustained_piece_" + std::to_string(k) + ".off", J.pieces[k], m));
+  }
   return written;
 }
 

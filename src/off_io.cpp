@@ -7,10 +7,14 @@
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/json_approx.h"
+#include "fixel/internal/off_sidecar.h"
 
 namespace fixel {
 
@@ -32,13 +36,6 @@ void for_each_subset(int n, int k, F&& visit) {
     ++idx[i];
     for (int j = i + 1; j < k; ++j) idx[j] = idx[j - 1] + 1;
   }
-}
-
-std::string with_comments(const std::string& off, const std::vector<std::string>& comments) {
-  const auto eol = off.find('\n');
-  std::string head = off.substr(0, eol + 1), rest = off.substr(eol + 1);
-  for (const auto& c : comments) head += "# " + c + "\n";
-  return head + rest;
 }
 
 }  // namespace
@@ -93,8 +90,7 @@ std::vector<VectorQ> polytope_vertices(const std::vector<Halfspace>& halfspaces,
   return vertices;
 }
 
-std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& halfspaces, int dim,
-                               const std::vector<std::string>& comments) {
+std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& halfspaces, int dim) {
   if (dim != 2 && dim != 3) throw InputError("dim", std::to_string(dim), "must be 2 or 3");
   const std::vector<VectorQ> vertices = polytope_vertices(halfspaces, dim);
   std::vector<DisplayPoint> points;
@@ -131,8 +127,43 @@ std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& 
   off.precision(17);
   if (!CGAL::IO::write_OFF(off, points, faces))
     throw InternalError("CGAL::IO::write_OFF failed on an in-memory stream");
-  out << with_comments(off.str(), comments);
+  out << off.str();
   return points.size();
 }
+
+namespace internal {
+
+std::string sidecar_path(const std::string& off_path) {
+  return std::filesystem::path(off_path).replace_extension(".json").string();
+}
+
+std::vector<std::string> write_off_with_sidecar(const std::string& off_path, const std::vector<Halfspace>& halfspaces,
+                                                int dim, const nlohmann::ordered_json& meta, const std::string& field) {
+  std::ofstream out(off_path);
+  if (!out) throw InputError(field, off_path, "cannot be written");
+  const std::size_t vertices = write_polytope_off(out, halfspaces, dim);
+  out.close();
+  if (!out) throw InputError(field, off_path, "could not be written completely");
+  std::vector<VectorQ> exact = polytope_vertices(halfspaces, dim);
+  std::vector<VectorQ> directions;
+  for (std::size_t k = 1; k < exact.size(); ++k) directions.push_back(VectorQ(exact[k] - exact[0]));
+  nlohmann::ordered_json doc;
+  doc["format"] = "fixel OFF sidecar 1";
+  doc["off"] = std::filesystem::path(off_path).filename().string();
+  doc["vertices"] = vertices;
+  // The drawn (clipped) polytope's dimension: -1 empty, 0 a point, 1 a segment, ...
+  doc["drawn_dimension"] = exact.empty() ? -1 : internal::exact_rank(directions, dim);
+  for (const auto& [key, value] : meta.items()) doc[key] = value;
+  internal::add_approx(doc);
+  const std::string json_path = sidecar_path(off_path);
+  std::ofstream side(json_path);
+  if (!side) throw InputError(field, json_path, "cannot be written");
+  side << doc.dump(2) << "\n";
+  side.close();
+  if (!side) throw InputError(field, json_path, "could not be written completely");
+  return {off_path, json_path};
+}
+
+}  // namespace internal
 
 }  // namespace fixel

@@ -4,6 +4,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/exact_lp.h"
+#include "fixel/internal/exact_lu.h"
 #include "fixel/internal/filtered.h"
 
 namespace fixel {
@@ -64,6 +65,31 @@ void drop_parallel_redundancy(Polyhedron& P) {
 
 }  // namespace
 
+void drop_constant_rows(Polyhedron& P) {
+  bool infeasible = false;
+  auto keep = [&](std::vector<Halfspace>& rows, bool strict) {
+    std::vector<Halfspace> kept;
+    for (const auto& h : rows) {
+      if (!h.a.isZero()) {
+        kept.push_back(h);
+        continue;
+      }
+      // 0 >= c (or 0 > c): true for every p, or for none.
+      if (strict ? !(h.c < 0) : h.c > 0) infeasible = true;
+    }
+    rows = std::move(kept);
+  };
+  keep(P.closed, false);
+  keep(P.strict, true);
+  if (!infeasible) return;
+  P.closed = {Halfspace{VectorQ::Zero(P.dim), Rational(1)}};  // the canonical empty set, 0 >= 1
+  P.strict.clear();
+}
+
+bool Polyhedron::is_trivially_empty() const {
+  return closed.size() == 1 && strict.empty() && closed[0].a.isZero() && closed[0].c > 0;
+}
+
 bool Polyhedron::contains(const VectorQ& p) const {
   for (const auto& h : closed)
     if (internal::affine_sign_filtered(h.a, h.c, p) < 0) return false;
@@ -106,6 +132,21 @@ bool is_empty(const Polyhedron& P) {
   if (lp.status == internal::LpStatus::kInfeasible) return true;
   if (P.strict.empty()) return false;
   return lp.status == internal::LpStatus::kOptimal && lp.x[P.dim] <= 0;
+}
+
+int affine_dimension(const Polyhedron& P) {
+  if (is_empty(P)) return -1;
+  // P is non-empty, so a strict row is never tight everywhere; a closed row
+  // a·p >= c is an implicit equality iff P ∩ {a·p > c} is empty.
+  std::vector<VectorQ> equalities;
+  for (std::size_t k = 0; k < P.closed.size(); ++k) {
+    if (P.closed[k].a.isZero()) continue;
+    Polyhedron strict_here = P;
+    strict_here.closed.erase(strict_here.closed.begin() + static_cast<long>(k));
+    strict_here.strict.push_back(P.closed[k]);
+    if (is_empty(strict_here)) equalities.push_back(P.closed[k].a);
+  }
+  return P.dim - internal::exact_rank(equalities, P.dim);
 }
 
 std::vector<Polyhedron> subtract(const Polyhedron& Q, const Polyhedron& P) {
@@ -215,6 +256,7 @@ Polyhedron project_out_x(const LiftedSystem& s) {
   }
   (void)n;
   drop_parallel_redundancy(out);
+  drop_constant_rows(out);
   return out;
 }
 

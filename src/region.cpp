@@ -1,6 +1,8 @@
 #include "fixel/region.h"
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
@@ -220,16 +222,59 @@ bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
 
 }  // namespace
 
+Rational speed_bound(const BezierPiece& piece) {
+  Rational longest = 0;
+  for (const Vec2& leg : piece.legs()) {
+    const Rational sq = leg.x * leg.x + leg.y * leg.y;
+    if (sq == 0) continue;
+    // An upper bound on sqrt(sq): the double square root rounded up, checked
+    // exactly; |x| + |y| when that check fails (or the double overflows).
+    Rational up = boost::multiprecision::abs(leg.x) + boost::multiprecision::abs(leg.y);
+    const double d = std::sqrt(to_double(sq));
+    if (std::isfinite(d) && d > 0) {
+      for (const double candidate : {d, std::nextafter(d * (1 + 1e-12), std::numeric_limits<double>::infinity())}) {
+        const Rational guess(candidate);  // exact conversion of the double
+        if (guess * guess >= sq) {        // (d itself when the root is exact)
+          if (guess < up) up = guess;
+          break;
+        }
+      }
+    }
+    longest = std::max(longest, up);
+  }
+  return Rational(piece.degree()) * longest;
+}
+
+Rational resolution_width(const BezierPiece& piece, const Rational& length) {
+  if (length <= 0) throw InputError("RegionOptions.resolution_length", to_string(length), "must be > 0");
+  const Rational speed = speed_bound(piece);
+  Rational width = piece.u1 - piece.u0, bound = speed;
+  for (int d = 0; bound > length; ++d) {
+    if (d >= 64)
+      throw InputError("RegionOptions.resolution_length", to_string(length),
+                       "is too small for curve " + std::to_string(piece.curve) + ", u in [" + to_string(piece.u0) +
+                           ", " + to_string(piece.u1) + "]: it needs more than 2^64 parts");
+    width /= 2;
+    bound /= 2;
+  }
+  return width;
+}
+
 Region compute_region(const Scene& scene, RegionTarget& target, const RegionOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
   check_inputs(scene, mu, target);
   if (options.resolution <= 0)
     throw InputError("RegionOptions.resolution", to_string(options.resolution), "must be > 0");
+  if (options.resolution_length && *options.resolution_length <= 0)
+    throw InputError("RegionOptions.resolution_length", to_string(*options.resolution_length), "must be > 0");
   if (options.digits < 0 || options.digits > 1000)
     throw InputError("RegionOptions.digits", std::to_string(options.digits), "must be in [0, 1000]");
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
+  std::vector<Rational> widths;
+  if (options.resolution_length && !options.exact)
+    for (const auto& piece : b.pieces) widths.push_back(resolution_width(piece, *options.resolution_length));
   target.stats = &ctx.stats;
   const std::vector<Join> js = joins(b);
   std::vector<RegionInterval> raw;
@@ -246,6 +291,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
       for (auto& r : internal::exact_piece_intervals(scene, target, piece, mu, ctx.stats)) raw.push_back(std::move(r));
       target.stats = &ctx.stats;  // the point tests reset it
     } else {
+      if (!widths.empty()) ctx.resolution = widths[k];
       subdivide(ctx, piece, 0, raw);
     }
   }
@@ -268,7 +314,12 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   region.push = target.push_model();
   region.target = target.name();
   region.cone = options.cone;
-  if (!options.exact) region.resolution = options.resolution;
+  if (!options.exact && options.resolution_length) {
+    region.resolution_length = options.resolution_length;
+    region.piece_widths = widths;
+  } else if (!options.exact) {
+    region.resolution = options.resolution;
+  }
   region.pusher_mu = mu;
   locate_intervals(scene, region);
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -313,4 +313,111 @@ done
 expect 0 'fixel: filters (certified/exact fallbacks): lemke 0/0 ray test ' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --json
 expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 membership 0/0 jam test 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
 
+# Issue 16 (smaller defects): guaranteed-set rows with a zero left side are
+# dropped (true for every p) or make the set empty; never printed. This scene
+# (nonunique.json with mu 0, 0, 1/2) has nine such rows before the fix.
+sed -e 's/"mu": "1.9"/"mu": "0"/' -e 's/"mu": "0.8"/"mu": "0"/' -e 's/"mu": "0.4"/"mu": "1\/2"/' \
+  "$src/data/scenes/nonunique.json" > "$tmp/zero_rows.json"
+out=$("$fixel" seat "$tmp/zero_rows.json" --guaranteed 2>&1)
+grep -q "11 non-seating set(s) meet S" <<<"$out" || { echo "FAIL: zero_rows scene changed: $(head -c 300 <<<"$out")"; fail=1; }
+if grep -qE '^ +>' <<<"$out"; then echo "FAIL: seat --guaranteed prints a row with a zero left side"; fail=1; fi
+"$fixel" seat "$tmp/zero_rows.json" --guaranteed --json | /usr/bin/python3 -c '
+import json, sys
+g = json.load(sys.stdin)["guaranteed_set"]
+rows = [r for x in g["non_seating"] + g["pieces"] for r in x["closed"] + x["strict"]]
+assert len(g["non_seating"]) == 11 and rows, "scene changed"
+zero = [r for r in rows if all(a == "0" for a in r["a"])]
+assert not zero, zero' || { echo "FAIL: seat --guaranteed --json has a row with a zero left side"; fail=1; }
+# sample counts points (no lengths: a point has none).
+expect 0 '16 sample point(s): IN (one-step: can seat) ' -- "$fixel" sample "$src/data/scenes/blob.json" --points 16
+"$fixel" sample "$src/data/scenes/polygon.json" --points 4 --json | /usr/bin/python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+assert d["points"] == 4 and d["counts"] == {"in": 1, "out": 3, "partial": 0}, (d["points"], d["counts"])
+assert "lengths" not in d and "arc_lengths" not in d and "partial_length" not in d["stats"], list(d)' ||
+  { echo "FAIL: sample --json summary"; fail=1; }
+out=$("$fixel" sample "$src/data/scenes/polygon.json" --points 4)
+grep -qF '4 sample point(s): IN (one-step: can seat) 1, out 3, partial 0' <<<"$out" || { echo "FAIL: sample text summary"; fail=1; }
+if grep -q 'outline .* m: IN' <<<"$out"; then echo "FAIL: sample still reports outline percentages"; fail=1; fi
+# region keeps its lengths.
+expect 0 '"partial_length"' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution 1/8 --json
+
+# G's pieces carry their exact dimension (text, JSON, dump sidecars); the
+# lower-dimensional ones are kept and marked.
+expect 0 '9 convex piece(s) (6 of dimension 3; 3 lower-dimensional, with no volume, kept so that the pieces partition G exactly: piece 2 of dimension 1, piece 7 of dimension 1, piece 8 of dimension 0)' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed
+"$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --json | /usr/bin/python3 -c '
+import json, sys
+dims = [p["dimension"] for p in json.load(sys.stdin)["guaranteed_set"]["pieces"]]
+assert dims == [3, 3, 1, 3, 3, 3, 3, 1, 0], dims' || { echo "FAIL: seat --guaranteed --json piece dimensions"; fail=1; }
+# The drawn closure agrees (vertex enumeration, a second method): a
+# 1-dimensional piece is a segment (2 vertices, no face), a 0-dimensional one a point.
+/usr/bin/python3 - "$tmp"/g/guaranteed_*.json <<'PY' || { echo "FAIL: dump --guaranteed sidecar dimensions"; fail=1; }
+import json, sys
+seen = {}
+for path in sys.argv[1:]:
+    d = json.load(open(path))
+    off = open(path[:-5] + ".off").read().split("\n")
+    nv, nf, _ = map(int, off[1].split())
+    assert d["what"] == "guaranteed_piece" and d["vertices"] == nv, (path, d)
+    assert d["drawn_dimension"] == d["dimension"], (path, d["drawn_dimension"], d["dimension"])
+    if d["dimension"] < 2:
+        assert nf == 0 and nv == d["dimension"] + 1, (path, nv, nf)
+    seen[d["piece"]] = d["dimension"]
+assert seen == {0: 3, 1: 3, 2: 1, 3: 3, 4: 3, 5: 3, 6: 3, 7: 1, 8: 0}, seen
+PY
+# --resolution-length: per-piece widths from the speed bound (docs/cli.md).
+"$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4 --json | /usr/bin/python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+assert d["resolution"] is None and d["resolution_length"] == "1/4", (d["resolution"], d.get("resolution_length"))
+assert d["piece_widths"] == ["1/16", "1/8", "1/8", "1/8", "1/8"], d["piece_widths"]' ||
+  { echo "FAIL: region --resolution-length --json"; fail=1; }
+expect 0 'resolution length 1/4 = 0.25 m (every stretch left is at most this long)' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4
+expect 2 '--resolution: 0.5mm is a curve-parameter width, not a length: give a length in m with --resolution-length' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution 0.5mm
+expect 2 '--resolution-length: 0 must be > 0' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 0
+expect 2 '--resolution-length: 1/4 cannot be combined with --exact' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4 --exact
+expect 2 'excludes --resolution' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4 --resolution 1/8
+expect 2 'is too small for curve 0' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/10000000000000000000000000
+# Dumps: standard OFF (no comments) and a JSON sidecar per file.
+"$fixel" dump "$src/data/scenes/fig6.json" --off "$tmp/plain" > "$tmp/plain.txt"
+grep -q "wrote .*seating_set.json" "$tmp/plain.txt" || { echo "FAIL: dump does not name the sidecar"; fail=1; }
+for off in "$tmp"/plain/*.off "$tmp"/g/*.off; do
+  if grep -q '#' "$off"; then echo "FAIL: $off has a comment"; fail=1; fi
+  [ "$(head -1 "$off")" = OFF ] || { echo "FAIL: $off does not start with OFF"; fail=1; }
+  [ -s "${off%.off}.json" ] || { echo "FAIL: no sidecar for $off"; fail=1; }
+done
+/usr/bin/python3 - "$tmp/plain/seating_set.json" <<'PY' || { echo "FAIL: seating_set.json sidecar"; fail=1; }
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["format"] == "fixel OFF sidecar 1" and d["off"] == "seating_set.off" and d["what"] == "seating_set", d
+assert d["scene"] == "fig6" and d["length"] == "1" and len(d["box"]["lo"]) == 3 and d["drawn_dimension"] == 3, d
+PY
+# One real loader (meshio, Debian python3-meshio) reads every dumped OFF file
+# with the counts of its header; skipped when meshio is absent.
+if /usr/bin/python3 -c "import meshio" 2>/dev/null; then
+  "$fixel" dump "$src/data/scenes/nonunique_part.json" --guaranteed --off "$tmp/mesh" > /dev/null
+  "$fixel" dump "$src/data/scenes/polygon.json" --sustained --off "$tmp/mesh2" > /dev/null
+  /usr/bin/python3 - "$tmp"/plain/*.off "$tmp"/mesh/*.off "$tmp"/mesh2/*.off "$tmp"/g/*.off <<'PY' || { echo "FAIL: meshio cannot read a dumped OFF file"; fail=1; }
+import json, sys, warnings
+import meshio
+warnings.simplefilter("ignore")
+checked = 0
+for path in sys.argv[1:]:
+    lines = open(path).read().split("\n")
+    nv, nf, _ = map(int, lines[1].split())
+    side = json.load(open(path[:-4] + ".json"))
+    assert side["vertices"] == nv, (path, side["vertices"], nv)
+    faces = [l for l in lines[2:] if l.strip()][nv:]
+    if any(not f.startswith("3 ") for f in faces):
+        continue  # a dof-2 polygon: meshio reads triangles only
+    m = meshio.read(path, file_format="off")
+    assert len(m.points) == nv, (path, len(m.points), nv)
+    assert sum(len(c.data) for c in m.cells) == nf, (path, nf)
+    checked += 1
+assert checked >= 10, checked
+PY
+else
+  echo "note: meshio (python3-meshio) not installed: OFF loader check skipped"
+fi
+
 exit $fail

@@ -16,6 +16,27 @@ echo "$out"
 grep -q "impulse (-1, -1, -1) is in S" <<<"$out"
 grep -q "right edge: " <<<"$out"
 test -x "$tmp/prefix/bin/fixel"
+# CGAL is private to the library's .cpp files: the installed package neither
+# looks for it nor names its target, and a consumer builds and runs on a
+# machine view where CGAL's CMake files are hidden and find_package(CGAL) is
+# disabled (it would fail if the config still asked for CGAL).
+if cat "$tmp/prefix"/lib*/cmake/fixel/*.cmake | grep -v '^ *#' | grep "CGAL"; then
+  echo "FAIL: the installed CMake package uses CGAL"; exit 1
+fi
+# Every directory holding CGALConfig.cmake, also through the /lib -> /usr/lib link.
+hide=""
+for d in $(find /usr/lib /usr/share /usr/local -name CGALConfig.cmake -exec dirname {} \; 2>/dev/null); do
+  hide="$hide;$d;${d#/usr}"
+done
+cmake -S "$src/examples/consumer" -B "$tmp/consumer-nocgal" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release \
+  --no-warn-unused-cli -DCGAL_DIR=/nonexistent -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=ON \
+  -DCMAKE_IGNORE_PATH="${hide#;}" -DCMAKE_IGNORE_PREFIX_PATH="${hide#;}" > /dev/null
+if grep -q "^CGAL_DIR:PATH=/" "$tmp/consumer-nocgal/CMakeCache.txt"; then
+  echo "FAIL: the consumer found CGAL"; exit 1
+fi
+cmake --build "$tmp/consumer-nocgal" -j 2 > /dev/null
+"$tmp/consumer-nocgal/consumer" | grep -q "impulse (-1, -1, -1) is in S"
+echo "consumer without CGAL's CMake files: configured, built and ran"
 # The Python package, when built, is installed and importable from the prefix.
 pkg=$(find "$tmp/prefix/lib" -path '*dist-packages/fixel' -type d 2>/dev/null | head -1)
 if [ -n "$pkg" ]; then

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "fixel/error.h"
@@ -46,22 +47,24 @@ GTEST_TEST(SeatingDumpBox, HoldsApexAndEveryRayTip) {
   EXPECT_THROW(seating_dump_box(S, Rational(0)), InputError);
 }
 
-GTEST_TEST(WriteOff, SeatingSetIsAClosedTriangulatedSurfaceWithTheBoxStated) {
+GTEST_TEST(WriteOff, SeatingSetIsAPlainOffSurfaceWithTheBoxInItsSidecar) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   const SeatingSet S = seating_set(scene);
   const auto dir = std::filesystem::temp_directory_path() / "fixel_off_test";
   std::filesystem::remove_all(dir);
   const auto paths = dump_off(scene, S, dir.string(), Rational(1));
-  ASSERT_EQ(paths.size(), 1u);
+  ASSERT_EQ(paths.size(), 2u);
+  EXPECT_EQ(std::filesystem::path(paths[1]).filename(), "seating_set.json");
   std::ifstream in(paths[0]);
-  std::string first, line, comments;
+  std::string first, line;
   std::getline(in, first);
   EXPECT_EQ(first, "OFF");
-  while (std::getline(in, line) && !line.empty() && line[0] == '#') comments += line + "\n";
-  EXPECT_NE(comments.find("clipped to the box [-11/10, -1/10]"), std::string::npos) << comments;
+  std::getline(in, line);  // the counts follow the header at once: no comment lines
   std::istringstream counts(line);
   std::size_t nv = 0, nf = 0, ne = 0;
-  counts >> nv >> nf >> ne;
+  ASSERT_TRUE(counts >> nv >> nf >> ne) << line;
+  std::string rest((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(rest.find('#'), std::string::npos);
   // S ∩ box is a bounded convex polytope: Euler's formula V − E + F = 2 for
   // its triangulated hull, where E = 3F/2.
   EXPECT_GE(nv, 4u);
@@ -72,6 +75,14 @@ GTEST_TEST(WriteOff, SeatingSetIsAClosedTriangulatedSurfaceWithTheBoxStated) {
   const auto verts = polytope_vertices(hs, 3);
   EXPECT_EQ(verts.size(), nv);
   EXPECT_NE(std::find(verts.begin(), verts.end(), S.apex), verts.end());
+  // The metadata is in the sidecar: exact box, apex and the vertex count.
+  std::ifstream side(paths[1]);
+  std::string meta((std::istreambuf_iterator<char>(side)), std::istreambuf_iterator<char>());
+  for (const std::string want :
+       {"\"format\": \"fixel OFF sidecar 1\"", "\"off\": \"seating_set.off\"", "\"what\": \"seating_set\"",
+        "\"lo\": [\n      \"-11/10\"", "\"apex\": [\n    \"-1/10\"", "\"drawn_dimension\": 3"})
+    EXPECT_NE(meta.find(want), std::string::npos) << want << "\n" << meta;
+  EXPECT_NE(meta.find("\"vertices\": " + std::to_string(nv) + ","), std::string::npos) << meta;
 }
 
 GTEST_TEST(WriteOff, PointMassSetIsOnePolygonInThePlane) {
@@ -79,9 +90,10 @@ GTEST_TEST(WriteOff, PointMassSetIsOnePolygonInThePlane) {
   std::ostringstream out;
   std::vector<Halfspace> hs = seating_set(scene).halfspaces;
   for (const auto& h : seating_dump_box(seating_set(scene), Rational(1)).halfspaces()) hs.push_back(h);
-  const std::size_t n = write_polytope_off(out, hs, 2, {"test"});
+  const std::size_t n = write_polytope_off(out, hs, 2);
   EXPECT_GE(n, 3u);
-  EXPECT_NE(out.str().find("\n# test\n"), std::string::npos);
+  EXPECT_EQ(out.str().rfind("OFF\n" + std::to_string(n) + " 1 0\n", 0), 0u) << out.str();
+  EXPECT_EQ(out.str().find('#'), std::string::npos);
 }
 
 GTEST_TEST(DumpOff, UnwritableDirectoryIsAnInputError) {

@@ -81,5 +81,56 @@ GTEST_TEST(Polyhedron, RayMagnitudesWithStrictRowsHaveOpenEnds) {
   EXPECT_FALSE(T.hi_closed);
 }
 
+GTEST_TEST(Polyhedron, ProjectionDropsRowsWithAZeroLeftSide) {
+  // {p : ∃x: x >= p, −x >= −p − 1, x >= 0, −x >= −5}: Fourier–Motzkin pairs
+  // x >= 0 with −x >= −5 into 0 >= −5 (always true: dropped) and
+  // x >= p with −x >= −p − 1 into 0 >= −1 (dropped too).
+  LiftedSystem s;
+  s.nx = 1;
+  s.np = 1;
+  s.A_eq = MatrixQ(0, 2);
+  s.b_eq = VectorQ(0);
+  s.A_in = MatrixQ(4, 2);
+  s.A_in << 1, -1, -1, 1, 1, 0, -1, 0;
+  s.b_in = VectorQ(4);
+  s.b_in << 0, -1, 0, -5;
+  s.strict_in = {false, false, false, true};
+  const Polyhedron P = project_out_x(s);
+  for (const auto& h : P.closed) EXPECT_FALSE(h.a.isZero()) << to_string(h.c);
+  for (const auto& h : P.strict) EXPECT_FALSE(h.a.isZero()) << to_string(h.c);
+  for (int i = -12; i <= 12; ++i) {
+    const Rational p(i, 2);  // x ∈ [max(p, 0), min(p + 1, 5)) is non-empty iff −1 <= p < 5
+    VectorQ v(1);
+    v << p;
+    EXPECT_EQ(P.contains(v), p >= -1 && p < 5) << to_string(p);
+  }
+  // x >= 1 and −x > −1 project to 0 > 0: no p at all, the canonical empty form.
+  s.A_in = MatrixQ(2, 2);
+  s.A_in << 1, 0, -1, 0;
+  s.b_in = VectorQ(2);
+  s.b_in << 1, -1;
+  s.strict_in = {false, true};
+  const Polyhedron E = project_out_x(s);
+  EXPECT_TRUE(E.is_trivially_empty());
+  EXPECT_TRUE(is_empty(E));
+  EXPECT_FALSE(P.is_trivially_empty());
+}
+
+GTEST_TEST(Polyhedron, AffineDimensionCountsImplicitEqualities) {
+  EXPECT_EQ(affine_dimension(unit_square()), 2);
+  Polyhedron edge = unit_square();
+  edge.closed.push_back({v2(-1, 0), 0});  // x <= 0 with x >= 0: the left edge
+  EXPECT_EQ(affine_dimension(edge), 1);
+  Polyhedron corner = edge;
+  corner.closed.push_back({v2(0, -1), 0});  // and y <= 0: the corner (0, 0)
+  EXPECT_EQ(affine_dimension(corner), 0);
+  Polyhedron open = unit_square();
+  open.strict.push_back({v2(1, 1), Rational(1, 2)});  // x + y > 1/2: still two-dimensional
+  EXPECT_EQ(affine_dimension(open), 2);
+  Polyhedron none = edge;
+  none.strict.push_back({v2(1, 0), 0});  // x > 0 on the edge x = 0
+  EXPECT_EQ(affine_dimension(none), -1);
+}
+
 }  // namespace
 }  // namespace fixel

@@ -406,5 +406,63 @@ GTEST_TEST(Region, LibraryErrorsNameTheOptionFieldNotACommandLineFlag) {
   }
 }
 
+GTEST_TEST(Region, ResolutionWidthIsTheLargestHalvingThatTheSpeedBoundAllows) {
+  BezierPiece edge{0, Rational(2), Rational(3), {{Rational(0), Rational(0)}, {Rational(3, 4), Rational(1)}}};
+  EXPECT_EQ(speed_bound(edge), Rational(5, 4));  // a 3-4-5 edge: its exact length
+  EXPECT_EQ(resolution_width(edge, Rational(5, 4)), Rational(1));
+  EXPECT_EQ(resolution_width(edge, Rational(5, 16)), Rational(1, 4));
+  EXPECT_EQ(resolution_width(edge, Rational(5, 16) - Rational(1, 1000000)), Rational(1, 8));
+  // An irrational length is rounded up: the edge (0,0)-(1,1) has speed sqrt 2.
+  BezierPiece diagonal{0, Rational(0), Rational(1, 2), {{Rational(0), Rational(0)}, {Rational(1), Rational(1)}}};
+  const Rational v = speed_bound(diagonal);
+  EXPECT_GE(v * v, Rational(2));
+  EXPECT_LT(v, Rational(1415, 1000));
+  EXPECT_EQ(resolution_width(diagonal, Rational(1, 2)), Rational(1, 8));  // sqrt2/4 <= 1/2 < sqrt2/2
+  // A quadratic piece: 2 × its longest leg.
+  BezierPiece arc{1,
+                  Rational(0),
+                  Rational(1),
+                  {{Rational(0), Rational(0)}, {Rational(3), Rational(4)}, {Rational(3), Rational(5)}}};
+  EXPECT_EQ(speed_bound(arc), Rational(10));
+  EXPECT_EQ(resolution_width(arc, Rational(1)), Rational(1, 16));
+  EXPECT_THROW(resolution_width(edge, Rational(0)), InputError);
+  EXPECT_THROW(resolution_width(edge, Rational(1, 1) / Rational(Integer(1) << 70)), InputError);
+}
+
+GTEST_TEST(Region, ResolutionLengthLeavesNoPartialStretchLongerThanIt) {
+  for (const char* name : {"blob", "polygon", "example2_rounded"}) {
+    const Scene scene = scene_file(name);
+    const SeatingSet S = seating_set(scene);
+    RegionOptions options;
+    options.resolution_length = Rational(1, 8);
+    options.merge = false;
+    const Region region = compute_region(scene, S, options);
+    ASSERT_TRUE(region.resolution_length.has_value());
+    EXPECT_FALSE(region.resolution.has_value());
+    const auto& pieces = scene.body.boundary->pieces;
+    ASSERT_EQ(region.piece_widths.size(), pieces.size());
+    int partial = 0;
+    for (const auto& r : region.intervals) {
+      if (r.status != RegionStatus::kPartial || r.u0 == r.u1) continue;
+      ++partial;
+      // The piece holding it, restricted to it: n·|leg| <= L for every leg
+      // bounds its arc length by L (exactly, by squares).
+      for (const auto& piece : pieces) {
+        if (piece.curve != r.curve || r.u0 < piece.u0 || r.u1 > piece.u1) continue;
+        const BezierPiece sub = piece.restrict_to(r.u0, r.u1);
+        const Rational n = sub.degree();
+        for (const Vec2& leg : sub.legs())
+          EXPECT_LE(n * n * (leg.x * leg.x + leg.y * leg.y), *options.resolution_length * *options.resolution_length)
+              << name << " curve " << r.curve << " [" << to_string(r.u0) << ", " << to_string(r.u1) << "]";
+      }
+    }
+    EXPECT_GT(partial, 0) << name << ": nothing to check";
+  }
+  RegionOptions bad;
+  bad.resolution_length = Rational(-1);
+  const Scene scene = scene_file("polygon");
+  EXPECT_THROW(compute_region(scene, seating_set(scene), bad), InputError);
+}
+
 }  // namespace
 }  // namespace fixel

@@ -27,6 +27,11 @@ struct GuaranteedSet {
   std::vector<NonSeatingSet> non_seating;
   /// G as disjoint convex pieces (strict rows where a boundary is excluded).
   std::vector<Polyhedron> pieces;
+  /// The affine dimension of each piece (parallel to `pieces`, exact). A
+  /// piece of dimension < dof has no volume (typically a face left where a
+  /// non-seating set with a strict row was subtracted); it is kept, and
+  /// marked, so that the pieces partition G exactly.
+  std::vector<int> dimensions;
   /// Exact membership: p ∈ S and p in no non-seating set.
   bool contains(const VectorQ& p_ext, const SeatingSet& S) const;
 };

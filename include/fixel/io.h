@@ -41,7 +41,9 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport&
 /// (the outline as a sampled polyline) and one
 /// `segment_<k>_<family>_<method>.off` per Bézier piece, edge family and cone
 /// method (the cone clipped to the box [−1, 1]³; pieces whose tangent cone
-/// is not pointed have no cone). Returns the written paths.
+/// is not pointed have no cone). Each `.off` file is standard OFF without
+/// comments, with its metadata in a JSON sidecar of the same stem (`X.json`,
+/// docs/formats.md). Returns the written paths, sidecars included.
 /// Throws InputError if the directory cannot be created or written.
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length, const GuaranteedSet* G = nullptr);
@@ -80,7 +82,8 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
 std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench);
 /// Writes J's cones into `dir` as OFF files clipped to [−1, 1]³ (display:
 /// rows rounded to double): `sustained_cone.off`, `sustained_jam_<i>_<j>.off`
-/// and `sustained_piece_<k>.off`. Returns the written paths. Throws
+/// and `sustained_piece_<k>.off`, each with its JSON sidecar (as dump_off).
+/// Returns the written paths, sidecars included. Throws
 /// InputError if the directory cannot be created or written.
 std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir);
 /// The "seated_pose" object of sustained_json, as compact JSON text.

@@ -28,13 +28,14 @@ Box seating_dump_box(const SeatingSet& S, const Rational& length);
 /// 3), without duplicates. Empty if the intersection is empty.
 std::vector<VectorQ> polytope_vertices(const std::vector<Halfspace>& halfspaces, int dim);
 
-/// Writes ∩ halfspaces (which must be bounded, e.g. include a box) as an OFF
-/// surface: a triangulated convex hull for dim 3, one polygon at z = 0 for
-/// dim 2. Vertex coordinates are rounded to double for display; `comments`
-/// are written as "# ..." lines right after the OFF header. Returns the
-/// number of vertices written (0 for an empty polytope, which writes an empty
-/// OFF).
-std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& halfspaces, int dim,
-                               const std::vector<std::string>& comments);
+/// Writes ∩ halfspaces (which must be bounded, e.g. include a box) as a
+/// standard OFF surface: a triangulated convex hull for dim 3, one polygon at
+/// z = 0 for dim 2 (a lower-dimensional polytope: its vertices, no faces).
+/// Nothing but the "OFF" line, the counts, the vertices and the faces is
+/// written, no comments: `fixel dump` puts the metadata in a JSON file beside
+/// it (docs/formats.md). Vertex coordinates are rounded to double for
+/// display. Returns the number of vertices written (0 for an empty polytope,
+/// which writes an empty OFF).
+std::size_t write_polytope_off(std::ostream& out, const std::vector<Halfspace>& halfspaces, int dim);
 
 }  // namespace fixel

@@ -23,10 +23,22 @@ struct Polyhedron {
   bool contains(const VectorQ& p) const;
   /// The intersection with another polyhedron of the same dimension.
   Polyhedron intersect(const Polyhedron& other) const;
+  /// True for the canonical empty form drop_constant_rows leaves: the one
+  /// row 0 >= 1.
+  bool is_trivially_empty() const;
 };
+
+/// Rows whose left side is zero decide themselves: 0 >= c (0 > c) holds for
+/// every p when c <= 0 (c < 0) and is dropped; when it holds for no p the
+/// polyhedron is empty and becomes the canonical form {0 >= 1} alone.
+void drop_constant_rows(Polyhedron& P);
 
 /// Exact emptiness (an exact LP that maximises the slack of the strict rows).
 bool is_empty(const Polyhedron& P);
+
+/// The dimension of P's affine hull, exactly (dim minus the rank of the
+/// closed rows that hold with equality on all of P); -1 for an empty P.
+int affine_dimension(const Polyhedron& P);
 
 /// Q \ P as disjoint polyhedra (empty ones dropped): piece k keeps P's
 /// rows 0..k−1 and violates row k.
@@ -43,7 +55,8 @@ struct LiftedSystem {
 };
 
 /// {p : ∃x with the system} exactly: Gaussian elimination on the equalities,
-/// then Fourier–Motzkin on the x left free. Duplicate rows are removed.
+/// then Fourier–Motzkin on the x left free. Duplicate rows are removed, and
+/// so are rows with a zero left side (drop_constant_rows).
 Polyhedron project_out_x(const LiftedSystem& system);
 
 /// T = {τ > 0 : b0 + τ g ∈ P}, exact (an interval; strict rows give open ends).

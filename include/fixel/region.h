@@ -83,9 +83,14 @@ struct Region {
   std::string push = "step";             ///< Push model of the target: "step" (S, G) or "sustained" (J).
   ConeMethod cone = ConeMethod::kTight;  ///< Segment cone used.
   std::optional<Rational> resolution;    ///< Parameter width at which splitting stopped (none for samples).
-  Rational pusher_mu;                    ///< Pusher friction used.
-  std::string target = "S";              ///< The target's name: "S", "G" or "J".
-  bool sampled = false;                  ///< From sample_region (point tests), not subdivision.
+  /// With RegionOptions::resolution_length: the length L (m), and the
+  /// parameter width each Bézier piece used (parallel to the boundary's
+  /// pieces); `resolution` is then unset.
+  std::optional<Rational> resolution_length;
+  std::vector<Rational> piece_widths;
+  Rational pusher_mu;        ///< Pusher friction used.
+  std::string target = "S";  ///< The target's name: "S", "G" or "J".
+  bool sampled = false;      ///< From sample_region (point tests), not subdivision.
   /// Computed by root isolation (RegionOptions::exact): no resolution, every
   /// end exact, no partial stretch.
   bool exact = false;
@@ -112,6 +117,11 @@ std::string method_of(const Region& region);
 /// Options of compute_region.
 struct RegionOptions {
   Rational resolution = Rational(1, 1024);  ///< Stop splitting at this parameter width (curve units).
+  /// A resolution as a length (m) instead: each Bézier piece stops splitting
+  /// at its own parameter width resolution_width(piece, L), so that every
+  /// stretch left has arc length <= L. Overrides `resolution` when set;
+  /// InputError when <= 0, or when a piece would need more than 2^64 parts.
+  std::optional<Rational> resolution_length;
   ConeMethod cone = ConeMethod::kTight;
   std::optional<Rational> pusher_mu;  ///< Overrides the scene's pusher μ.
   bool merge = true;                  ///< Merge adjacent intervals with equal status.
@@ -132,6 +142,20 @@ struct RegionOptions {
   /// curve parameter (0: leave them as isolated). InputError when < 0 or > 1000.
   int digits = 0;
 };
+
+/// An exact rational upper bound on the speed |dc/ds| of a Bézier piece in
+/// its local parameter s ∈ [0, 1]: degree × the longest control-polygon leg
+/// (the hodograph's control points n (P_{k+1} − P_k) bound it), each leg's
+/// length rounded up to a rational. For a polyline edge it is the edge's
+/// length, rounded up.
+Rational speed_bound(const BezierPiece& piece);
+
+/// The parameter width at which a piece stops splitting for a resolution
+/// length L > 0: (u1 − u0) / 2^d with the smallest d >= 0 such that
+/// speed_bound(piece) / 2^d <= L. Every sub-piece reached by halving d times
+/// has arc length <= speed_bound / 2^d <= L. Throws InputError
+/// ("RegionOptions.resolution_length") when L <= 0 or d would exceed 64.
+Rational resolution_width(const BezierPiece& piece, const Rational& length);
 
 /// The pushing region by recursive subdivision. Throws
 /// InputError for a non-positive resolution or negative μ, and SceneError if

@@ -225,7 +225,8 @@ def solutions(scene, impulse):
 
 def to_off(scene, seating, directory, length=1, guaranteed=None):
     """Writes S (and G's pieces, the outline, the segment cones) as OFF/OBJ
-    files into ``directory``, like ``fixel dump --off``; returns the paths."""
+    files into ``directory``, like ``fixel dump --off``; each .off file has a
+    JSON sidecar of the same stem with its metadata. Returns the paths."""
     scene = _scene(scene)
     _expect(seating, SeatingSet, "seating")
     if guaranteed is not None:

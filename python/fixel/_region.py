@@ -98,6 +98,7 @@ class Region:
     resolution: Optional[Fraction]
     pusher_mu: Fraction
     _impl: object = field(repr=False)
+    resolution_length: Optional[Fraction] = None  # with region(resolution_length=L): L (m); resolution is then None
 
     def counts(self):
         out = {"in": 0, "out": 0, "partial": 0}
@@ -204,11 +205,14 @@ def _guaranteed_impl(guaranteed, scene, S):
 
 def region(
     scene, resolution="1/1024", cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
-    progress=None, exact=False, digits=0,
+    progress=None, exact=False, digits=0, resolution_length=None,
 ):  # fmt: skip
     """The pushing region by exact recursive subdivision (``fixel region``).
 
     ``resolution``: stop splitting at this curve-parameter width (exact).
+    ``resolution_length``: a length L (m) instead (``--resolution-length``):
+    each Bézier piece stops at its own parameter width, so that every stretch
+    left is at most L long (docs/cli.md); ``resolution`` is then ignored.
     ``cone``: "tight" or "paper". ``pusher_mu``: overrides the scene's.
     ``push``: "step" (one impulse, against S) or "sustained" (a held wrench,
     against the sustained-push set J at the seated pose; ``seating`` is then
@@ -227,6 +231,10 @@ def region(
     if cone not in ("tight", "paper"):
         raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
     res = text(resolution, "resolution")
+    res_len = None if resolution_length is None else text(resolution_length, "resolution_length")
+    if res_len is not None and exact:
+        raise InputError.make("resolution_length", res_len, "cannot be combined with exact=True")
+    shown = None if exact or res_len is not None else frac(res)
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
     if not isinstance(exact, bool):
         raise TypeError(f"exact: {exact!r} is not a bool")
@@ -239,16 +247,21 @@ def region(
             raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
         J = sustained_set(scene)
         impl = _run(
-            lambda: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu, exact, digits),
+            lambda: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu, exact, digits, res_len),
             progress, "fixel.region",
         )  # fmt: skip
-        return _region_of(scene, J, impl, cone, None if exact else frac(res), None if mu is None else frac(mu))
+        r = _region_of(scene, J, impl, cone, shown, None if mu is None else frac(mu))
+        r.resolution_length = None if res_len is None else frac(res_len)
+        return r
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = _run(
-        lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits), progress, "fixel.region"
-    )
-    return _region_of(scene, S, impl, cone, None if exact else frac(res), None if mu is None else frac(mu))
+        lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits, res_len),
+        progress, "fixel.region",
+    )  # fmt: skip
+    r = _region_of(scene, S, impl, cone, shown, None if mu is None else frac(mu))
+    r.resolution_length = None if res_len is None else frac(res_len)
+    return r
 
 
 def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None):

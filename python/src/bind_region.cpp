@@ -79,21 +79,21 @@ void bind_region(py::module_& m) {
                              })
       .def_property_readonly("stats", [](const Region& r) { return stats_dict(r.stats); });
 
-  m.def("compute_region",
-        [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution, const std::string& cone,
-           const std::optional<std::string>& pusher_mu, const py::object& G, bool exact, int digits) {
-          RegionOptions options;
-          options.exact = exact;
-          options.digits = digits;
-          options.resolution = parse_rational(resolution, "resolution");
-          if (cone != "tight" && cone != "paper")
-            throw InputError("cone", cone, "is not a cone method (tight or paper)");
-          options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
-          options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
-          options.guaranteed = guaranteed_of(G, S);
-          py::gil_scoped_release release;
-          return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));
-        });
+  m.def("compute_region", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution,
+                             const std::string& cone, const std::optional<std::string>& pusher_mu, const py::object& G,
+                             bool exact, int digits, const std::optional<std::string>& resolution_length) {
+    RegionOptions options;
+    options.exact = exact;
+    options.digits = digits;
+    options.resolution = parse_rational(resolution, "resolution");
+    if (resolution_length) options.resolution_length = parse_rational(*resolution_length, "resolution_length");
+    if (cone != "tight" && cone != "paper") throw InputError("cone", cone, "is not a cone method (tight or paper)");
+    options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+    options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
+    options.guaranteed = guaranteed_of(G, S);
+    py::gil_scoped_release release;
+    return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));
+  });
   m.def("sample_region", [](const ScenePtr& scene, const SeatingPtr& S, int points,
                             const std::optional<std::string>& pusher_mu, const py::object& G) {
     if (points < 1) throw InputError("points", std::to_string(points), "must be at least 1");

@@ -63,23 +63,23 @@ void bind_sustained(py::module_& m) {
     const auto r = physics::push(s, w, options);
     return physics::push_json(s, w, r);
   });
-  m.def("compute_region_sustained",
-        [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution, const std::string& cone,
-           const std::optional<std::string>& pusher_mu, bool exact, int digits) {
-          RegionOptions options;
-          options.exact = exact;
-          options.digits = digits;
-          options.resolution = parse_rational(resolution, "resolution");
-          if (cone != "tight" && cone != "paper")
-            throw InputError("cone", cone, "is not a cone method (tight or paper)");
-          options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
-          if (pusher_mu) options.pusher_mu = parse_rational(*pusher_mu, "pusher_mu");
-          const Scene& s = checked(scene, "scene");
-          const SustainedSet& j = checked(J, "sustained");
-          py::gil_scoped_release release;
-          const auto target = sustained_target(j);
-          return std::make_shared<Region>(compute_region(s, *target, options));
-        });
+  m.def("compute_region_sustained", [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution,
+                                       const std::string& cone, const std::optional<std::string>& pusher_mu, bool exact,
+                                       int digits, const std::optional<std::string>& resolution_length) {
+    RegionOptions options;
+    options.exact = exact;
+    options.digits = digits;
+    options.resolution = parse_rational(resolution, "resolution");
+    if (resolution_length) options.resolution_length = parse_rational(*resolution_length, "resolution_length");
+    if (cone != "tight" && cone != "paper") throw InputError("cone", cone, "is not a cone method (tight or paper)");
+    options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+    if (pusher_mu) options.pusher_mu = parse_rational(*pusher_mu, "pusher_mu");
+    const Scene& s = checked(scene, "scene");
+    const SustainedSet& j = checked(J, "sustained");
+    py::gil_scoped_release release;
+    const auto target = sustained_target(j);
+    return std::make_shared<Region>(compute_region(s, *target, options));
+  });
 }
 
 }  // namespace fixel::python

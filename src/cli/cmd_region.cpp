@@ -19,8 +19,8 @@ namespace {
 
 struct RegionArgs {
   std::vector<std::string> scene_paths;
-  std::string scene_path, resolution_text = "1/1024", cone_text = "tight", pusher_mu_text, svg_path, push_text = "step",
-                          time_text = "20";
+  std::string scene_path, resolution_text = "1/1024", resolution_length_text, cone_text = "tight", pusher_mu_text,
+                          svg_path, push_text = "step", time_text = "20";
   int validate = 0, digits = 0;
   bool json = false, guaranteed = false, exact = false;
   RunOptions run;
@@ -28,7 +28,19 @@ struct RegionArgs {
 
 RegionOptions region_options(const RegionArgs& a) {
   RegionOptions options;
+  if (a.resolution_text.find('m') != std::string::npos)
+    throw InputError("--resolution", a.resolution_text,
+                     "is a curve-parameter width, not a length: give a length in m with --resolution-length "
+                     "(e.g. --resolution-length 1/2000 for 0.5 mm)");
   options.resolution = parse_rational(a.resolution_text, "--resolution");
+  if (!a.resolution_length_text.empty()) {
+    options.resolution_length = parse_rational(a.resolution_length_text, "--resolution-length");
+    if (*options.resolution_length <= 0)
+      throw InputError("--resolution-length", a.resolution_length_text, "must be > 0");
+    if (a.exact)
+      throw InputError("--resolution-length", a.resolution_length_text,
+                       "cannot be combined with --exact (root isolation has no resolution)");
+  }
   options.cone = a.cone_text == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
   options.control = run_control();
   options.exact = a.exact;
@@ -139,7 +151,11 @@ Command add_region(CLI::App& app) {
   cmd->add_option("scene", a->scene_paths,
                   "Scene file(s) with a boundary (JSON, docs/formats.md); - reads standard input")
       ->required();
-  cmd->add_option("--resolution", a->resolution_text, "Stop splitting at this curve-parameter width (default 1/1024)");
+  auto* resolution = cmd->add_option("--resolution", a->resolution_text,
+                                     "Stop splitting at this curve-parameter width (default 1/1024)");
+  cmd->add_option("--resolution-length", a->resolution_length_text,
+                  "Stop splitting where a stretch is certainly at most L m long (exact; per piece, docs/cli.md)")
+      ->excludes(resolution);
   cmd->add_option("--cone", a->cone_text, "Segment cone: tight (default) or paper")
       ->check(CLI::IsMember({"tight", "paper"}));
   cmd->add_option("--pusher-mu", a->pusher_mu_text, kPusherMuHelp);

@@ -26,6 +26,7 @@ void maybe_inject_fault() {
 std::string user_message(const fixel::InputError& e) {
   static const std::map<std::string, std::string> kFlagOf = {
       {"RegionOptions.resolution", "--resolution"},
+      {"RegionOptions.resolution_length", "--resolution-length"},
       {"RegionOptions.pusher_mu", "--pusher-mu"},
       {"RegionOptions.digits", "--digits"},
       {"RegionOptions.exact", "--exact"},

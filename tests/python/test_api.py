@@ -71,6 +71,21 @@ def test_region_objects(polygon):
     assert isinstance(r.stats, fixel.RegionStats) and type(r.stats.partial_length) is F
 
 
+def test_region_resolution_length(polygon):
+    # Per-piece widths from the speed bound: the edges of the house are 5/2,
+    # 3/2, sqrt(41)/4 (twice) and 3/2 long; L = 1/4 halves them 4, 3, 3, 3, 3 times.
+    r = fixel.region(polygon, resolution_length="1/4")
+    assert r.resolution is None and r.resolution_length == F(1, 4)
+    doc = r.to_json()
+    assert doc["resolution_length"] == "1/4" and doc["piece_widths"] == ["1/16", "1/8", "1/8", "1/8", "1/8"]
+    code, out, _ = run_cli("region", SCENE_DIR / "polygon.json", "--resolution-length", "1/4", "--json")
+    assert code == 0 and json.loads(out)["intervals"] == doc["intervals"]
+    with pytest.raises(fixel.InputError, match="resolution_length"):
+        fixel.region(polygon, resolution_length="0")
+    with pytest.raises(fixel.InputError, match="resolution_length"):
+        fixel.region(polygon, resolution_length="1/4", exact=True)
+
+
 def test_progress_callback(polygon):
     events = []
     blob32 = fixel.Scene.load(SCENE_DIR / "blob32.json")  # ~0.2 s

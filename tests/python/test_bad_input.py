@@ -184,7 +184,7 @@ def test_none_never_crashes(example2, tmp_path):
         lambda: fixel.to_svg(tmp_path / "x.svg", None),
         lambda: fixel._fixel.seating_set(None),  # the raw module too
         lambda: fixel._fixel.guaranteed_set(example2._impl, None),
-        lambda: fixel._fixel.compute_region(None, None, "1/8", "tight", None, None, False, 0),
+        lambda: fixel._fixel.compute_region(None, None, "1/8", "tight", None, None, False, 0, None),
     ]:
         with pytest.raises(TypeError):
             call()
