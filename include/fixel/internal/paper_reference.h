@@ -1,5 +1,6 @@
 #pragma once
-// Reference data from the paper (seeds/000_0f49fa17b09f50b7.txt), shared by
+// Reference data from the paper (Egan, Berard & Trinkle, "Toward sensorless
+// acquisition of multiple contact points between planar parts"), shared by
 // `fixel verify` and the tests. Exact values come from
 // data/reference/derive_paper_examples.py, an independent derivation that
 // also checks them against the paper's printed 4-decimal table.
