@@ -229,33 +229,33 @@ inline std::string point_mass_scene_from_bytes(ByteReader& in) {
     fixels += std::string(i ? ", " : "") + "{\"point\": " + pair(in.number(8, 4), in.number(8, 4)) +
               ", \"normal\": " + unit_from(in.in(0, 24) - 12, in.in(1, 12)) + ", \"mu\": " + in.nonneg(10, 5) +
               ", \"gap\": " + in.nonneg(4, 16) + "}";
-  return "{\"name\": \"point\", \"time_step\": " + in.nonneg(4, 4, 1) + ", \"body\": {\"dof\": 2, \"mass\": " +
-         in.nonneg(4, 2, 1) + ", \"velocity\": [" + in.number(2, 4) + ", " + in.number(2, 4) + "]}, \"fixels\": [" +
-         fixels + "], \"pusher\": {\"mu\": " + in.nonneg(2, 4) + "}}";
+  return "{\"name\": \"point\", \"time_step\": " + in.nonneg(4, 4, 1) +
+         ", \"body\": {\"dof\": 2, \"mass\": " + in.nonneg(4, 2, 1) + ", \"velocity\": [" + in.number(2, 4) + ", " +
+         in.number(2, 4) + "]}, \"fixels\": [" + fixels + "], \"pusher\": {\"mu\": " + in.nonneg(2, 4) + "}}";
 }
 
 // The operations of run_operation, one per input.
 enum class Operation {
-  kSeat,          // seating set, its apex against every half-space
-  kOutcomes,      // every contact mode of one step (dof 3: slow set only)
-  kSimulate,      // 1–3 exact steps
-  kSeatAndStay,   // S ∩ stability cone
-  kRegion,        // subdivision at resolution 1/2–1/8, S or the paper's cone
-  kExactRegion,   // root isolation along every Bézier piece
-  kSample,        // 1–2 points per curve
-  kPointStatus,   // one exact point test
-  kGuaranteed,    // the guaranteed set G (slow set only)
-  kSeatedPose,    // q* (exact or enclosed)
-  kSustained,     // the sustained set J (with or without the stability check)
+  kSeat,             // seating set, its apex against every half-space
+  kOutcomes,         // every contact mode of one step (dof 3: slow set only)
+  kSimulate,         // 1–3 exact steps
+  kSeatAndStay,      // S ∩ stability cone
+  kRegion,           // subdivision at resolution 1/2–1/8, S or the paper's cone
+  kExactRegion,      // root isolation along every Bézier piece
+  kSample,           // 1–2 points per curve
+  kPointStatus,      // one exact point test
+  kGuaranteed,       // the guaranteed set G (slow set only)
+  kSeatedPose,       // q* (exact or enclosed)
+  kSustained,        // the sustained set J (with or without the stability check)
   kSustainedRegion,  // J's membership at one wrench, the region against J
-  kPush,          // a short constant push in Box2D
+  kPush,             // a short constant push in Box2D
   kCount
 };
 
 inline const char* operation_name(Operation op) {
-  static const char* const names[] = {"seat",          "outcomes", "simulate",     "seat_and_stay", "region",
-                                      "exact_region",  "sample",   "point_status", "guaranteed",    "seated_pose",
-                                      "sustained",     "sustained_region", "push"};
+  static const char* const names[] = {
+      "seat",         "outcomes",   "simulate",    "seat_and_stay", "region",           "exact_region", "sample",
+      "point_status", "guaranteed", "seated_pose", "sustained",     "sustained_region", "push"};
   return names[static_cast<int>(op)];
 }
 
@@ -292,7 +292,8 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
     text = scene_from_bytes(in, 6);
   const Scene scene = parse_scene(text, "structured");
   RunControl control;  // bounded work per input
-  control.deadline = RunControl::Clock::now() + (slow ? std::chrono::milliseconds(2000) : std::chrono::milliseconds(50));
+  control.deadline =
+      RunControl::Clock::now() + (slow ? std::chrono::milliseconds(2000) : std::chrono::milliseconds(50));
   const int dof = scene.body.dof;
   VectorQ p(dof);
   for (int k = 0; k < dof; ++k) p[k] = Rational(in.in(0, 16) - 8, in.in(1, 4));

@@ -70,8 +70,8 @@ GTEST_TEST(FuzzRegressions, EveryStructuredInputAndBundledSceneRunsCleanly) {
     }
   }
   EXPECT_GE(inputs.size(), 10u);
-  std::cout << ran_through << " of " << inputs.size() << " structured inputs ran the whole pipeline, "
-            << operations_ran << " their one operation to the end\n";
+  std::cout << ran_through << " of " << inputs.size() << " structured inputs ran the whole pipeline, " << operations_ran
+            << " their one operation to the end\n";
 }
 
 // The slow structured target's inputs (structured_slow/*.bin).
