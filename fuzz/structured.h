@@ -1,10 +1,25 @@
 #pragma once
-// The structure-aware fuzz pipeline, shared with the regression replay test:
-// the fuzz bytes choose the numbers of a scene that always parses (exact unit
-// normals, three fixels, a star-shaped boundary of polylines and clamped
-// B-splines), so the work goes into seating, outcomes, simulation, the
-// guaranteed set and the region rather than into the JSON parser.
+// The structure-aware fuzz pipelines, shared with the regression replay test.
+// The fuzz bytes choose the numbers of a scene that always parses, so the
+// work goes into seating, outcomes, simulation, the guaranteed and sustained
+// sets, the region and the physics rather than into the JSON parser:
+//
+// - run_operation (the structured_fuzz target): the first byte picks ONE
+//   operation, the second the kind of scene (a star-shaped outline of
+//   polylines and B-splines with off-outline fixels, a convex polygon with
+//   exact unit edge normals and its fixels on the outline, or a point mass);
+//   sizes are small (3–6 corners, shallow region resolution, one or two
+//   samples, short pushes, 50 ms budgets) so that a typical input takes a
+//   few milliseconds under the sanitizers. With `slow` (the
+//   structured_slow_fuzz target) the two costly operations instead: every
+//   contact mode of a three-fixel step, and the guaranteed set.
+// - run_structured (the regression replay only): the whole library on one
+//   star-shaped scene, as the first structured target did (80–200 ms under
+//   the sanitizers); kept so that its saved inputs mean what they meant.
 
+#include <algorithm>
+#include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -13,12 +28,16 @@
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
 #include "fixel/outcomes.h"
+#include "fixel/physics.h"
 #include "fixel/progress.h"
 #include "fixel/region.h"
+#include "fixel/region_target.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
+#include "fixel/seated_pose.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
+#include "fixel/sustained.h"
 
 namespace fixel::fuzz {
 
@@ -50,6 +69,7 @@ class ByteReader {
 };
 
 inline std::string pair(const std::string& x, const std::string& y) { return "[" + x + ", " + y + "]"; }
+inline std::string quoted(const Rational& x) { return "\"" + to_string(x) + "\""; }
 
 // The exact unit vector ((1−t²)/(1+t²), 2t/(1+t²)) for t = a/b, as JSON.
 inline std::string unit_from(long a, long b) {
@@ -58,33 +78,24 @@ inline std::string unit_from(long a, long b) {
               "\"" + std::to_string(2 * a * b) + "/" + std::to_string(den) + "\"");
 }
 
-// A scene as JSON text from the bytes. Vertices are radially ordered around
-// the origin (t = tan(θ/2) increasing), so the loop is usually simple and
-// counter-clockwise; the rest of the validity is up to the bytes.
-inline std::string scene_from_bytes(ByteReader& in) {
-  const int n = in.in(3, 10);
-  std::vector<std::string> vertices;
-  for (int i = 0; i < n; ++i) {
-    const long t = -40 + i * (80 / n) + in.in(0, 80 / n - 1);  // spread over (−2.7, 2.7) rad
-    const long den = t * t + 64;                               // t/8 = tan(θ/2)
-    const int r = in.in(1, 24);                                // radius r/8
-    vertices.push_back(pair("\"" + std::to_string(r * (64 - t * t)) + "/" + std::to_string(8 * den) + "\"",
-                            "\"" + std::to_string(r * 16 * t) + "/" + std::to_string(8 * den) + "\""));
-  }
-  vertices.push_back(vertices.front());
-  // Split the loop into curves: a polyline or a clamped B-spline over each run.
+// Splits a closed run of vertex texts (front repeated at the back) into
+// curves: a polyline or a clamped B-spline over each run of 1–4 edges; with
+// `bend`, a spline may get an extra control point near the origin.
+inline std::string curves_over(ByteReader& in, const std::vector<std::string>& vertices, bool bend) {
+  const int n = static_cast<int>(vertices.size()) - 1;
   std::string curves;
   for (int start = 0; start < n;) {
     const int end = std::min(n, start + in.in(1, 4));
-    const bool spline = in.byte() % 2 == 1 && end - start >= 1;
+    const bool spline = in.byte() % 2 == 1;
     std::vector<std::string> pts(vertices.begin() + start, vertices.begin() + end + 1);
     if (!curves.empty()) curves += ", ";
     if (spline) {
-      if (in.byte() % 3 == 0) {  // a control point near the origin bends the curve inwards
+      if (bend && in.byte() % 3 == 0) {  // a control point near the origin bends the curve inwards
         const int at = 1 + in.in(0, static_cast<int>(pts.size()) - 2);
         pts.insert(pts.begin() + at, pair(in.number(2, 8), in.number(2, 8)));
       }
-      const int p = std::min(static_cast<int>(pts.size()) - 1, in.in(1, 3));
+      // Without a bend, degree 1 keeps the outline a polygon (fixels stay on it).
+      const int p = bend ? std::min(static_cast<int>(pts.size()) - 1, in.in(1, 3)) : 1;
       std::string knots;
       const int m = static_cast<int>(pts.size());
       for (int k = 0; k < m + p + 1; ++k) {
@@ -100,27 +111,282 @@ inline std::string scene_from_bytes(ByteReader& in) {
     curves += "]}";
     start = end;
   }
-  // Random fixel points are off the outline: marked so (docs/formats.md), so
-  // that the work still goes past the scene reader.
-  std::string fixels;
-  for (int i = 0; i < 3; ++i) {
-    fixels += std::string(i ? ", " : "") + "{\"point\": " + pair(in.number(16, 8), in.number(16, 8)) +
-              ", \"normal\": " + unit_from(in.in(0, 24) - 12, in.in(1, 12)) + ", \"mu\": " + in.nonneg(10, 5) +
-              ", \"gap\": " + in.nonneg(4, 16) + ", \"off_boundary\": true}";
-  }
+  return curves;
+}
+
+inline std::string scene_text(ByteReader& in, const std::string& curves, const std::string& fixels) {
   return "{\"name\": \"structured\", \"time_step\": " + in.nonneg(4, 4, 1) +
          ", \"body\": {\"dof\": 3, \"mass\": " + in.nonneg(4, 2, 1) + ", \"velocity\": [" + in.number(2, 4) + ", " +
          in.number(2, 4) + ", " + in.number(2, 4) + "], \"boundary\": [" + curves + "]}, \"fixels\": [" + fixels +
          "], \"pusher\": {\"mu\": " + in.nonneg(2, 4) + "}}";
 }
 
-// Runs the whole library on the scene built from the bytes. Returns
+// A star-shaped scene as JSON text from the bytes: n corners radially
+// ordered around the origin (t = tan(θ/2) increasing), so the loop is
+// usually simple and counter-clockwise; polylines and B-splines of degree
+// 1–3, some bent inwards; three fixels at random points, marked
+// off_boundary (docs/formats.md) so that the work goes past the scene
+// reader. `max_corners` bounds the size.
+inline std::string scene_from_bytes(ByteReader& in, int max_corners = 10) {
+  const int n = in.in(3, max_corners);
+  std::vector<std::string> vertices;
+  for (int i = 0; i < n; ++i) {
+    const long t = -40 + i * (80 / n) + in.in(0, 80 / n - 1);  // spread over (−2.7, 2.7) rad
+    const long den = t * t + 64;                               // t/8 = tan(θ/2)
+    const int r = in.in(1, 24);                                // radius r/8
+    vertices.push_back(pair("\"" + std::to_string(r * (64 - t * t)) + "/" + std::to_string(8 * den) + "\"",
+                            "\"" + std::to_string(r * 16 * t) + "/" + std::to_string(8 * den) + "\""));
+  }
+  vertices.push_back(vertices.front());
+  const std::string curves = curves_over(in, vertices, true);
+  std::string fixels;
+  for (int i = 0; i < 3; ++i) {
+    fixels += std::string(i ? ", " : "") + "{\"point\": " + pair(in.number(16, 8), in.number(16, 8)) +
+              ", \"normal\": " + unit_from(in.in(0, 24) - 12, in.in(1, 12)) + ", \"mu\": " + in.nonneg(10, 5) +
+              ", \"gap\": " + in.nonneg(4, 16) + ", \"off_boundary\": true}";
+  }
+  return scene_text(in, curves, fixels);
+}
+
+// A convex polygon whose edges all have exact unit directions, with its three
+// fixels exactly on the outline and along its inward normals (so seated
+// pose, the sustained set and the physics run too). Edge directions are
+// picked among 32 around the circle (a quarter turn times the unit vector
+// of t = a/8, a = 0..7) with gaps under a half turn; the edge lengths come
+// from the bytes, and two consecutive edges are lengthened exactly to close
+// the loop. Corners: 3–6.
+inline std::string polygon_scene_from_bytes(ByteReader& in) {
+  const int k = in.in(3, 6);
+  std::vector<int> slots;
+  {
+    std::vector<int> gaps;
+    int sum = 0;
+    for (int i = 0; i + 1 < k; ++i) gaps.push_back(in.in(1, 15)), sum += gaps.back();
+    if (32 - sum < 1 || 32 - sum > 15) {  // no closing gap under a half turn: spread evenly
+      gaps.assign(k - 1, 32 / k);
+      sum = (k - 1) * (32 / k);
+    }
+    int s = in.in(0, 31);
+    for (int i = 0; i < k; ++i) {
+      slots.push_back(s % 32);
+      if (i + 1 < k) s += gaps[i];
+    }
+  }
+  std::sort(slots.begin(), slots.end());
+  using V = std::array<Rational, 2>;
+  std::vector<V> dir;
+  for (int s : slots) {
+    const long a = s % 8;
+    V u{Rational(64 - a * a, 64 + a * a), Rational(16 * a, 64 + a * a)};
+    for (int q = 0; q < s / 8; ++q) u = V{-u[1], u[0]};
+    dir.push_back(u);
+  }
+  std::vector<Rational> len;
+  V sum{Rational(0), Rational(0)};
+  for (int i = 0; i < k; ++i) {
+    len.push_back(Rational(in.in(1, 12), in.in(1, 3)));
+    sum[0] += len[i] * dir[i][0];
+    sum[1] += len[i] * dir[i][1];
+  }
+  // −sum lies in the cone of two consecutive directions (their gaps are
+  // under a half turn): lengthen those two edges to close the loop.
+  for (int i = 0; i < k; ++i) {
+    const V& d = dir[i];
+    const V& e = dir[(i + 1) % k];
+    const Rational det = d[0] * e[1] - d[1] * e[0];
+    if (det <= 0) continue;
+    const Rational a = (-sum[0] * e[1] + sum[1] * e[0]) / det;  // a d + b e = −sum
+    const Rational b = (d[0] * -sum[1] - d[1] * -sum[0]) / det;
+    if (a < 0 || b < 0) continue;
+    len[i] += a;
+    len[(i + 1) % k] += b;
+    break;
+  }
+  std::vector<V> corner{V{Rational(in.in(0, 8) - 8, in.in(1, 2)), Rational(in.in(0, 8) - 8, in.in(1, 2))}};
+  for (int i = 0; i + 1 < k; ++i)
+    corner.push_back(V{corner[i][0] + len[i] * dir[i][0], corner[i][1] + len[i] * dir[i][1]});
+  std::vector<std::string> vertices;
+  for (const V& c : corner) vertices.push_back(pair(quoted(c[0]), quoted(c[1])));
+  vertices.push_back(vertices.front());
+  const std::string curves = curves_over(in, vertices, false);
+  std::string fixels;
+  for (int f = 0; f < 3; ++f) {
+    const int i = in.in(0, k - 1);
+    const Rational t(in.in(1, 7), 8);  // inside the edge, off its corners
+    const Rational x = corner[i][0] + t * len[i] * dir[i][0], y = corner[i][1] + t * len[i] * dir[i][1];
+    // Inward normal of a counter-clockwise loop: the direction turned left.
+    fixels += std::string(f ? ", " : "") + "{\"point\": " + pair(quoted(x), quoted(y)) +
+              ", \"normal\": " + pair(quoted(-dir[i][1]), quoted(dir[i][0])) + ", \"mu\": " + in.nonneg(10, 5) +
+              ", \"gap\": " + in.nonneg(4, 16) + "}";
+  }
+  return scene_text(in, curves, fixels);
+}
+
+// A point mass (dof 2) between two fixels.
+inline std::string point_mass_scene_from_bytes(ByteReader& in) {
+  std::string fixels;
+  for (int i = 0; i < 2; ++i)
+    fixels += std::string(i ? ", " : "") + "{\"point\": " + pair(in.number(8, 4), in.number(8, 4)) +
+              ", \"normal\": " + unit_from(in.in(0, 24) - 12, in.in(1, 12)) + ", \"mu\": " + in.nonneg(10, 5) +
+              ", \"gap\": " + in.nonneg(4, 16) + "}";
+  return "{\"name\": \"point\", \"time_step\": " + in.nonneg(4, 4, 1) +
+         ", \"body\": {\"dof\": 2, \"mass\": " + in.nonneg(4, 2, 1) + ", \"velocity\": [" + in.number(2, 4) + ", " +
+         in.number(2, 4) + "]}, \"fixels\": [" + fixels + "], \"pusher\": {\"mu\": " + in.nonneg(2, 4) + "}}";
+}
+
+// The operations of run_operation, one per input.
+enum class Operation {
+  kSeat,             // seating set, its apex against every half-space
+  kOutcomes,         // every contact mode of one step (dof 3: slow set only)
+  kSimulate,         // 1–3 exact steps
+  kSeatAndStay,      // S ∩ stability cone
+  kRegion,           // subdivision at resolution 1/2–1/8, S or the paper's cone
+  kExactRegion,      // root isolation along every Bézier piece
+  kSample,           // 1–2 points per curve
+  kPointStatus,      // one exact point test
+  kGuaranteed,       // the guaranteed set G (slow set only)
+  kSeatedPose,       // q* (exact or enclosed)
+  kSustained,        // the sustained set J (with or without the stability check)
+  kSustainedRegion,  // J's membership at one wrench, the region against J
+  kPush,             // a short constant push in Box2D
+  kCount
+};
+
+inline const char* operation_name(Operation op) {
+  static const char* const names[] = {
+      "seat",         "outcomes",   "simulate",    "seat_and_stay", "region",           "exact_region", "sample",
+      "point_status", "guaranteed", "seated_pose", "sustained",     "sustained_region", "push"};
+  return names[static_cast<int>(op)];
+}
+
+// Runs one operation on a small scene built from the bytes. Returns
 // normally, or throws fixel::Error for input fixel rejects (including
-// StoppedError from the region's time budget); InternalError or any other
-// exception is a defect.
+// StoppedError from the 50 ms budget of the loops that poll); InternalError
+// or any other exception is a defect. The fast set (`slow` false, the
+// structured_fuzz target) takes 4–40 ms per input under ASan + UBSan; the
+// slow set (structured_slow_fuzz) is every contact mode of a three-fixel
+// step and the guaranteed set, 50 ms to seconds each.
+inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow = false) {
+  ByteReader in(data, size);
+  Operation op;
+  if (slow) {
+    op = in.byte() % 2 ? Operation::kGuaranteed : Operation::kOutcomes;
+  } else {
+    op = static_cast<Operation>(in.byte() % static_cast<int>(Operation::kCount));
+    if (op == Operation::kGuaranteed) op = Operation::kSeat;  // slow set only
+  }
+  const int kind = in.byte() % 4;  // 0, 1: star-shaped; 2: convex polygon; 3: point mass
+  const bool needs_outline_fixels =
+      op == Operation::kSeatedPose || op == Operation::kSustained || op == Operation::kSustainedRegion;
+  const bool needs_boundary = needs_outline_fixels || op == Operation::kRegion || op == Operation::kExactRegion ||
+                              op == Operation::kSample || op == Operation::kPointStatus || op == Operation::kPush;
+  // Every contact mode of a dof-3 step (4^3 exact systems) is slow: the fast
+  // set enumerates the 4^2 of a point mass.
+  const bool point_mass = (kind == 3 && !needs_boundary) || (!slow && op == Operation::kOutcomes);
+  std::string text;
+  if (point_mass)
+    text = point_mass_scene_from_bytes(in);
+  else if (needs_outline_fixels || kind == 2)
+    text = polygon_scene_from_bytes(in);
+  else
+    text = scene_from_bytes(in, 6);
+  const Scene scene = parse_scene(text, "structured");
+  RunControl control;  // bounded work per input
+  control.deadline =
+      RunControl::Clock::now() + (slow ? std::chrono::milliseconds(2000) : std::chrono::milliseconds(50));
+  const int dof = scene.body.dof;
+  VectorQ p(dof);
+  for (int k = 0; k < dof; ++k) p[k] = Rational(in.in(0, 16) - 8, in.in(1, 4));
+  const int curves = scene.body.boundary ? static_cast<int>(scene.body.boundary->curves.size()) : 0;
+  switch (op) {
+    case Operation::kSeat: {
+      const SeatingSet S = seating_set(scene);
+      for (const auto& h : S.halfspaces) (void)h.contains(S.apex);
+      (void)ray_magnitudes(S, p, p);
+      break;
+    }
+    case Operation::kOutcomes:
+      (void)count_outcomes(enumerate_outcomes(scene, p, &control));
+      break;
+    case Operation::kSimulate:
+      (void)simulate(scene, {p}, in.in(1, 3), &control);
+      break;
+    case Operation::kSeatAndStay:
+      (void)seat_and_stay(scene, seating_set(scene));
+      break;
+    case Operation::kRegion:
+    case Operation::kExactRegion: {
+      const SeatingSet S = seating_set(scene);
+      RegionOptions options;
+      options.resolution = Rational(1, 1 << in.in(1, 3));
+      options.control = &control;
+      options.cone = in.byte() % 2 ? ConeMethod::kPaper : ConeMethod::kTight;
+      options.merge = in.byte() % 4 != 0;
+      options.exact = op == Operation::kExactRegion;
+      if (options.exact) options.digits = in.in(0, 3);
+      (void)compute_region(scene, S, options);
+      break;
+    }
+    case Operation::kSample:
+      (void)sample_region(scene, seating_set(scene), in.in(1, 2), std::nullopt, nullptr, &control);
+      break;
+    case Operation::kPointStatus: {
+      const SeatingSet S = seating_set(scene);
+      const int curve = in.in(0, std::max(0, curves - 1));
+      const Curve& c = scene.body.boundary->curves[curve];
+      const Rational u = c.u_begin() + (c.u_end() - c.u_begin()) * Rational(in.in(0, 16), 16);
+      (void)point_status(scene, S, curve, u, Rational(in.in(0, 4), 4));
+      break;
+    }
+    case Operation::kGuaranteed: {  // and the region against G with a frictionless pusher
+      const SeatingSet S = seating_set(scene);
+      const GuaranteedSet G = guaranteed_set(scene, S);
+      (void)lost_fraction(S, G, 2);
+      if (scene.body.boundary && scene.pusher_mu == 0) {
+        RegionOptions options;
+        options.resolution = Rational(1, 2);
+        options.control = &control;
+        options.guaranteed = &G;
+        (void)compute_region(scene, S, options);
+      }
+      break;
+    }
+    case Operation::kSeatedPose:
+      (void)seated_pose(scene);
+      break;
+    case Operation::kSustained:
+      (void)sustained_set(scene, in.byte() % 4 == 0);
+      break;
+    case Operation::kSustainedRegion: {
+      const SustainedSet J = sustained_set(scene, false);
+      VectorQ w(3);
+      for (int j = 0; j < 3; ++j) w[j] = Rational(in.in(0, 16) - 8, in.in(1, 4));
+      if (!J.contains(w)) (void)J.why_not(w);
+      const auto target = sustained_target(J);
+      RegionOptions options;
+      options.resolution = Rational(1, 1 << in.in(1, 2));
+      options.control = &control;
+      (void)compute_region(scene, *target, options);
+      break;
+    }
+    case Operation::kPush: {
+      physics::PushOptions options;
+      options.time = Rational(in.in(1, 4), 8);
+      options.trajectory_samples = 10;
+      (void)physics::push(scene, p, options);
+      break;
+    }
+    case Operation::kCount:
+      break;
+  }
+}
+
+// The whole library on one star-shaped scene (the first structured target;
+// replayed by fuzz_regressions_test only). The first byte picks the
+// expensive steps (never for an empty input): 63 mod 64 all contact modes,
+// 17 mod 32 the guaranteed set.
 inline void run_structured(const std::uint8_t* data, std::size_t size) {
   ByteReader in(data, size);
-  // The first byte picks the expensive steps (never for an empty input).
   const int expensive = size > 0 ? in.byte() : 0;
   const Scene scene = parse_scene(scene_from_bytes(in), "structured");
   const SeatingSet S = seating_set(scene);

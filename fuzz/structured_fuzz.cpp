@@ -1,6 +1,8 @@
-// Structure-aware fuzzing: the bytes choose the numbers of a scene that
-// always parses, and the whole library runs on it (seat, outcomes, simulate,
-// seat-and-stay, region, sample, the guaranteed set). A fixel::Error other
+// Structure-aware fuzzing: the first byte picks one operation (seat,
+// outcomes, simulate, seat-and-stay, region, exact region, sample, a point
+// test, the guaranteed set, the seated pose, the sustained set, the region
+// against it, a Box2D push), the rest the numbers of a small scene that
+// always parses (fuzz/structured.h). A fixel::Error other
 // than InternalError is the expected answer to a degenerate scene; an
 // InternalError, any other exception, a crash, a hang or a sanitizer report
 // is a defect.
@@ -13,7 +15,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    fixel::fuzz::run_structured(data, size);
+    fixel::fuzz::run_operation(data, size);
   } catch (const fixel::InternalError& e) {
     std::cerr << "broken invariant: " << e.what() << "\n";
     std::terminate();

@@ -210,7 +210,7 @@ Rational MassProperties::polar_moment_about(const Vec2& c) const {
   return polar_moment - 2 * area * (c.x * centroid.x + c.y * centroid.y) + area * (c.x * c.x + c.y * c.y);
 }
 
-MassProperties mass_properties(const std::vector<BezierPiece>& pieces) {
+MassProperties mass_properties(const std::vector<BezierPiece>& pieces, RunControl* control) {
   // Green's theorem on each polynomial piece:
   //   A = ½∮(x dy − y dx),  ∬x = ½∮x² dy,  ∬y = −½∮y² dx,  ∬(x²+y²) = ⅓∮(x³ dy − y³ dx).
   Rational area2 = 0, mx2 = 0, my2 = 0, j3 = 0;
@@ -218,7 +218,10 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces) {
   // with the divisions by 3 and 4 taken once at the end: a 100,000-edge
   // polyline loads in a fraction of the polynomial path's time, same value.
   Rational seg_mx2_times3 = 0, seg_my2_times3 = 0, seg_j3_times4 = 0;
+  const long total = static_cast<long>(pieces.size());
+  long done = 0;
   for (const auto& piece : pieces) {
+    if (done++ % 256 == 0) poll(control, "load", done - 1, total, "pieces integrated (mass properties)");
     if (piece.control.size() == 2) {
       const Rational &x0 = piece.control[0].x, &y0 = piece.control[0].y;
       const Rational &x1 = piece.control[1].x, &y1 = piece.control[1].y;
@@ -255,11 +258,12 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces) {
   return m;
 }
 
-Boundary make_boundary(std::vector<Curve> curves, const std::string& path) {
+Boundary make_boundary(std::vector<Curve> curves, const std::string& path, RunControl* control) {
   if (curves.empty()) throw SceneError(path, "[]", "must contain at least one curve");
   Boundary b;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const std::string cpath = path + "[" + std::to_string(k) + "]";
+    poll(control, "load", static_cast<long>(k), static_cast<long>(curves.size()), "curves checked");
     validate_curve(curves[k], cpath);
     auto pieces = curves[k].bezier_pieces(static_cast<int>(k));
     for (std::size_t j = 0; j < pieces.size(); ++j) {
@@ -283,8 +287,8 @@ Boundary make_boundary(std::vector<Curve> curves, const std::string& path) {
                        next == 0 ? "does not close the loop: the last curve ends at " + text(end)
                                  : "does not start where the previous curve ends, " + text(end));
   }
-  check_simple_loop(b.pieces, path);
-  b.mass = mass_properties(b.pieces);
+  check_simple_loop(b.pieces, path, control);
+  b.mass = mass_properties(b.pieces, control);
   if (b.mass.area == 0) throw SceneError(path, "area 0", "encloses no area");
   if (b.mass.area < 0)
     throw SceneError(path, "signed area " + to_string(b.mass.area),

@@ -1,13 +1,18 @@
 // The part as a polygon for the physics engine: curves flattened within a
 // chordal tolerance, then split into convex pieces with CGAL's 2-D partition.
 // Everything here is an engine input, so doubles are fine (docs/physics.md).
-// GCC 12 reports a false -Wmaybe-uninitialized inside CGAL's Epic_converter.
+// GCC 12 reports a false -Wmaybe-uninitialized inside CGAL's Epic_converter
+// (clang has no such warning, and would warn about the unknown group).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include <algorithm>
 #include <cmath>

@@ -64,14 +64,18 @@ Vec2 vec2(const json& v, const std::string& path) {
   return {q[0], q[1]};
 }
 
-std::vector<Vec2> points(const json& v, const std::string& path) {
+std::vector<Vec2> points(const json& v, const std::string& path, RunControl* control) {
   if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of [x, y] points");
   std::vector<Vec2> out;
-  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(vec2(v[i], path + "[" + std::to_string(i) + "]"));
+  const long total = static_cast<long>(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i % 256 == 0) poll(control, "load", static_cast<long>(i), total, "points read");
+    out.push_back(vec2(v[i], path + "[" + std::to_string(i) + "]"));
+  }
   return out;
 }
 
-Boundary parse_boundary(const json& v) {
+Boundary parse_boundary(const json& v, RunControl* control) {
   const std::string path = "body.boundary";
   if (!v.is_array()) throw SceneError(path, describe(v), "must be an array of curves");
   std::vector<Curve> curves;
@@ -84,7 +88,7 @@ Boundary parse_boundary(const json& v) {
     if (type == "polyline") {
       expect_object(c, cpath, {"type", "points"});
       curve.type = Curve::Type::kPolyline;
-      curve.points = points(require(c, "points", cpath), cpath + ".points");
+      curve.points = points(require(c, "points", cpath), cpath + ".points", control);
     } else if (type == "bspline") {
       expect_object(c, cpath, {"type", "degree", "knots", "control_points"});
       curve.type = Curve::Type::kBSpline;
@@ -92,7 +96,7 @@ Boundary parse_boundary(const json& v) {
       if (degree < 1 || degree > 20 || boost::multiprecision::denominator(degree) != 1)
         throw SceneError(cpath + ".degree", to_string(degree), "must be an integer from 1 to 20");
       curve.degree = static_cast<int>(boost::multiprecision::numerator(degree));
-      curve.points = points(require(c, "control_points", cpath), cpath + ".control_points");
+      curve.points = points(require(c, "control_points", cpath), cpath + ".control_points", control);
       const json& knots = require(c, "knots", cpath);
       if (!knots.is_array()) throw SceneError(cpath + ".knots", describe(knots), "must be an array of numbers");
       for (std::size_t i = 0; i < knots.size(); ++i)
@@ -102,7 +106,7 @@ Boundary parse_boundary(const json& v) {
     }
     curves.push_back(std::move(curve));
   }
-  return make_boundary(std::move(curves), path);
+  return make_boundary(std::move(curves), path, control);
 }
 
 // A friction coefficient "mu" or an interval ["lo", "hi"] (0 <= lo <= hi).
@@ -217,7 +221,8 @@ int parse_dof(const json& v) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& json_text, const std::string& source) {
+Scene parse_scene(const std::string& json_text, const std::string& source, RunControl* control) {
+  poll(control, "load", 0, 0, "JSON documents parsed");
   const json root = internal::parse_json_exact(json_text, source);
   expect_object(root, "", {"name", "description", "time_step", "body", "fixels", "pusher", "background_impulse"},
                 source);
@@ -241,7 +246,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
   Body& b = scene.body;
   b.dof = parse_dof(require(body, "dof", "body"));
   const bool has_boundary = body.contains("boundary");
-  if (has_boundary) b.boundary = std::make_shared<const Boundary>(parse_boundary(body.at("boundary")));
+  if (has_boundary) b.boundary = std::make_shared<const Boundary>(parse_boundary(body.at("boundary"), control));
   // With a boundary, mass defaults to the area (density 1) and the centre of
   // mass to the area centroid.
   if (body.contains("mass") || !has_boundary) {
@@ -315,13 +320,13 @@ Scene parse_scene(const std::string& json_text, const std::string& source) {
   return scene;
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, RunControl* control) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "", "cannot be opened");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path, "", "cannot be read");
-  return parse_scene(text.str(), path);
+  return parse_scene(text.str(), path, control);
 }
 
 VectorQ parse_impulse(const std::string& text, int dof, const std::string& field) {

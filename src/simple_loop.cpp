@@ -311,7 +311,9 @@ bool cgal_says_simple(const std::vector<BezierPiece>& pieces) {
 
 }  // namespace
 
-void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string& path) {
+void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string& path, RunControl* control) {
+  const long total = static_cast<long>(pieces.size());
+  poll(control, "load", 0, total, "pieces checked for crossings");
   if (cgal_says_simple(pieces)) return;  // the common all-segment case, O(n log n)
 
   std::vector<BezierPiece> parts;
@@ -337,7 +339,9 @@ void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return boxes[i].x0 < boxes[j].x0; });
   Checker checker;
   std::vector<std::size_t> active;
+  long swept = 0;
   for (const std::size_t i : order) {
+    if (swept++ % 256 == 0) poll(control, "load", swept - 1, static_cast<long>(n), "pieces swept for crossings");
     const Box& bi = boxes[i];
     active.erase(std::remove_if(active.begin(), active.end(), [&](std::size_t j) { return boxes[j].x1 < bi.x0; }),
                  active.end());

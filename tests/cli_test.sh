@@ -173,6 +173,38 @@ if [ "$rc" -ne 130 ] || ! grep -qE 'simulate: interrupted after [0-9]+ of 100000
   echo "FAIL: SIGINT to simulate -> exit $rc (want 130), output:"; head -3 "$tmp/int.out"; fail=1
 fi
 
+# Loading a huge part (100,000 edges, about 3 s) shows a "load: ..." progress line on a terminal
+# (script(1) gives the command one), none with --quiet or when stderr is not a terminal, and
+# --max-seconds bounds it too (each run here is stopped at 2-4 s: under the sanitizers the whole
+# load takes about 35 s; a finished load stops at the impulse of the wrong length).
+python3 - "$tmp/huge.json" <<'PY'
+import json, sys
+n = 100000  # (i, i^2): a convex chain closed by one chord, counter-clockwise
+pts = [[str(i), str(i * i)] for i in range(n)] + [["0", "0"]]
+f = [{"point": p, "normal": d, "mu": "0", "gap": "0", "off_boundary": True}
+     for p, d in ((["1", "9"], ["1", "0"]), (["2", "9"], ["0", "1"]), (["3", "30"], ["-1", "0"]))]
+json.dump({"time_step": "1", "body": {"dof": 3, "boundary": [{"type": "polyline", "points": pts}]},
+           "fixels": f}, open(sys.argv[1], "w"))
+PY
+if command -v script > /dev/null; then
+  script -qec "$fixel simulate $tmp/huge.json --impulse 1,2 --max-seconds 4" /dev/null > "$tmp/load_tty.out" 2>&1
+  if ! grep -qE 'load: [0-9]+ of [0-9]+ [a-z]' "$tmp/load_tty.out" ||
+     ! grep -qE 'has 2 components|load: time limit' "$tmp/load_tty.out"; then
+    echo "FAIL: no load progress on a terminal:"; tr '\r' '\n' < "$tmp/load_tty.out" | head -5; fail=1
+  fi
+  script -qec "$fixel simulate $tmp/huge.json --impulse 1,2 --quiet --max-seconds 2" /dev/null > "$tmp/load_quiet.out" 2>&1
+  if grep -q 'load: [0-9]' "$tmp/load_quiet.out" || ! grep -qE 'has 2 components|load: time limit' "$tmp/load_quiet.out"; then
+    echo "FAIL: load progress despite --quiet:"; tr '\r' '\n' < "$tmp/load_quiet.out" | head -5; fail=1
+  fi
+else
+  echo "note: script(1) missing; the terminal progress check is skipped"
+fi
+"$fixel" simulate "$tmp/huge.json" --impulse 1,2 --max-seconds 2 > /dev/null 2> "$tmp/load_pipe.err"
+if grep -q 'load: [0-9]' "$tmp/load_pipe.err" || ! grep -qE 'has 2 components|load: time limit' "$tmp/load_pipe.err"; then
+  echo "FAIL: load progress on a stderr that is not a terminal:"; head -3 "$tmp/load_pipe.err"; fail=1
+fi
+expect 4 'load: time limit reached after' -- "$fixel" info "$tmp/huge.json" --max-seconds 0.5
+
 # Input checks run before any output: a dof-2 scene cannot have the S/G slice picture.
 out=$("$fixel" seat "$src/data/scenes/example1.json" --guaranteed --svg "$tmp/g1.svg" 2>/dev/null); rc=$?
 if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: seat example1 --guaranteed --svg -> exit $rc, stdout '$out'"; fail=1; fi

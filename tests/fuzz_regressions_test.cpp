@@ -43,12 +43,15 @@ GTEST_TEST(FuzzRegressions, EveryStructuredInputAndBundledSceneRunsCleanly) {
   for (const auto& dir : {std::filesystem::path(FIXEL_SOURCE_DIR) / "tests" / "fuzz_regressions" / "structured",
                           std::filesystem::path(FIXEL_SOURCE_DIR) / "data" / "scenes"})
     for (const auto& entry : std::filesystem::directory_iterator(dir)) inputs.push_back(entry.path());
-  int ran_through = 0;
+  int ran_through = 0, operations_ran = 0;
   for (const auto& path : inputs) {
     std::ifstream in(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+    // Each through the whole-library pipeline of the first structured target
+    // and through the one-operation pipeline of today's.
     try {
-      fuzz::run_structured(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+      fuzz::run_structured(data, bytes.size());
       ++ran_through;
     } catch (const InternalError& e) {
       ADD_FAILURE() << path << ": broken invariant: " << e.what();
@@ -56,9 +59,40 @@ GTEST_TEST(FuzzRegressions, EveryStructuredInputAndBundledSceneRunsCleanly) {
     } catch (const std::exception& e) {
       ADD_FAILURE() << path << ": " << e.what();
     }
+    try {
+      fuzz::run_operation(data, bytes.size());
+      ++operations_ran;
+    } catch (const InternalError& e) {
+      ADD_FAILURE() << path << ": run_operation: broken invariant: " << e.what();
+    } catch (const Error&) {
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << path << ": run_operation: " << e.what();
+    }
   }
   EXPECT_GE(inputs.size(), 10u);
-  std::cout << ran_through << " of " << inputs.size() << " structured inputs ran the whole pipeline\n";
+  std::cout << ran_through << " of " << inputs.size() << " structured inputs ran the whole pipeline, " << operations_ran
+            << " their one operation to the end\n";
+}
+
+// The slow structured target's inputs (structured_slow/*.bin).
+GTEST_TEST(FuzzRegressions, EverySlowStructuredInputRunsCleanly) {
+  const std::filesystem::path dir =
+      std::filesystem::path(FIXEL_SOURCE_DIR) / "tests" / "fuzz_regressions" / "structured_slow";
+  int replayed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    try {
+      fuzz::run_operation(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), true);
+    } catch (const InternalError& e) {
+      ADD_FAILURE() << entry.path() << ": broken invariant: " << e.what();
+    } catch (const Error&) {
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << entry.path() << ": " << e.what();
+    }
+    ++replayed;
+  }
+  EXPECT_GE(replayed, 2);
 }
 
 }  // namespace

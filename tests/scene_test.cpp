@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <set>
+#include <string>
+
 #include "fixel/error.h"
 #include "fixel/internal/paper_reference.h"
 #include "test_util.h"
@@ -325,6 +329,55 @@ GTEST_TEST(Scene, NormalInDegreesIsExactOnlyAtMultiplesOfNinety) {
     const std::string what = e.what();
     EXPECT_EQ(what.rfind("fixels[1].normal.degrees: 30 is not an exact direction", 0), 0u) << what;
     EXPECT_NE(what.find("the nearest exact unit normal (within 1e-9 rad) is"), std::string::npos) << what;
+  }
+}
+
+// Loading polls a RunControl (task "load"): progress through the points,
+// the simplicity check and the mass properties of a 3,000-edge outline, and
+// a cancelled or expired control stops the load with StoppedError.
+std::string many_edged_scene(int n) {
+  std::string points;
+  for (int i = 0; i < n; ++i) points += "[\"" + std::to_string(i) + "\", \"" + std::to_string(i * i) + "\"], ";
+  return R"({"time_step": "1", "body": {"dof": 3, "boundary": [{"type": "polyline", "points": [)" + points +
+         R"(["0", "0"]]}]}, "fixels": [{"point": ["1", "9"], "normal": ["1", "0"], "mu": "0", "gap": "0",
+         "off_boundary": true}, {"point": ["2", "9"], "normal": ["0", "1"], "mu": "0", "gap": "0",
+         "off_boundary": true}, {"point": ["3", "30"], "normal": ["-1", "0"], "mu": "0", "gap": "0",
+         "off_boundary": true}]})";
+}
+
+GTEST_TEST(Scene, LoadingReportsProgressAndStopsWhenAsked) {
+  const std::string text = many_edged_scene(3000);
+  RunControl control;
+  control.interval = std::chrono::milliseconds(0);
+  control.start = RunControl::Clock::now() - std::chrono::seconds(1);
+  std::set<std::string> units;
+  long last_points = -1;
+  control.on_progress = [&](const char* task, long done, long total, const char* unit) {
+    EXPECT_STREQ(task, "load");
+    units.insert(unit);
+    if (std::string(unit) == "points read") {
+      EXPECT_EQ(total, 3001);
+      EXPECT_GT(done, last_points);
+      last_points = done;
+    }
+  };
+  const Scene scene = parse_scene(text, "many", &control);
+  EXPECT_EQ(scene.body.boundary->pieces.size(), 3000u);
+  EXPECT_EQ(units, (std::set<std::string>{"JSON documents parsed", "points read", "curves checked",
+                                          "pieces checked for crossings", "pieces integrated (mass properties)"}));
+  EXPECT_EQ(last_points, 2816);  // polled every 256 points
+
+  RunControl expired;
+  expired.deadline = RunControl::Clock::now();
+  EXPECT_THROW(parse_scene(text, "many", &expired), StoppedError);
+  RunControl cancelled;
+  cancelled.cancel = true;
+  try {
+    parse_scene(text, "many", &cancelled);
+    FAIL();
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(e.reason(), StopReason::kInterrupted);
+    EXPECT_NE(std::string(e.what()).find("load: interrupted after"), std::string::npos) << e.what();
   }
 }
 

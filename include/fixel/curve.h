@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixel/geometry.h"
+#include "fixel/progress.h"
 #include "fixel/rational.h"
 
 namespace fixel {
@@ -76,7 +77,10 @@ struct Boundary {
 /// curves joined exactly, the loop closed and simple (check_simple_loop),
 /// counter-clockwise with non-zero area. Throws SceneError naming `path`
 /// (e.g. "body.boundary[1]").
-Boundary make_boundary(std::vector<Curve> curves, const std::string& path = "body.boundary");
+/// `control` (may be null) is polled through the checks and the mass
+/// properties (task "load"): progress, time limit and Ctrl-C on huge parts.
+Boundary make_boundary(std::vector<Curve> curves, const std::string& path = "body.boundary",
+                       RunControl* control = nullptr);
 
 /// Checks that a closed loop of Bézier pieces (in loop order, each ending
 /// where the next begins) is simple: no two points of the loop coincide
@@ -87,9 +91,12 @@ Boundary make_boundary(std::vector<Curve> curves, const std::string& path = "bod
 /// SceneError naming `path`, the two curves, their parameters and the point:
 /// "crosses itself", "touches itself", or, when the bounded refinement
 /// cannot decide, a message saying so.
-void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string& path = "body.boundary");
+/// `control` (may be null) is polled along the sweep.
+void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string& path = "body.boundary",
+                       RunControl* control = nullptr);
 
-/// Exact mass properties of a closed loop of Bézier pieces.
-MassProperties mass_properties(const std::vector<BezierPiece>& pieces);
+/// Exact mass properties of a closed loop of Bézier pieces; `control` (may
+/// be null) is polled every 256 pieces.
+MassProperties mass_properties(const std::vector<BezierPiece>& pieces, RunControl* control = nullptr);
 
 }  // namespace fixel

@@ -67,9 +67,9 @@ DesignOptions design_options(const Scene& part, const DesignArgs& a) {
 
 int run_design(const DesignArgs& a) {
   arm_run_control(a.run);
-  if (run_control()->on_progress) run_control()->on_progress = show_design_progress;
   check_writable(a.svg_path, "--svg");
-  const Scene part = read_scene(a.scene_path);
+  const Scene part = read_scene(a.scene_path);  // with the plain progress line
+  if (run_control()->on_progress) run_control()->on_progress = show_design_progress;
   const DesignOptions o = design_options(part, a);
   check_design(part, o);  // every option checked before any work
   std::optional<Rational> spacing;

@@ -14,6 +14,7 @@ namespace {
 struct InfoArgs {
   std::vector<std::string> scene_paths;
   bool json = false;
+  RunOptions run;
 };
 
 int run_info(const std::string& path, bool json) {
@@ -31,7 +32,9 @@ Command add_info(CLI::App& app) {
       app.add_subcommand("info", "What a scene means: derived mass, centre of mass, inertia, fixels, seated pose");
   cmd->add_option("scene", a->scene_paths, kScenesHelp)->required();
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout (one line per scene for several)");
+  add_run_options(cmd, a->run);
   return {cmd, [a] {
+            arm_run_control(a->run);
             return run_batch(a->scene_paths, a->json, [a](const std::string& p) { return run_info(p, a->json); });
           }};
 }

@@ -17,9 +17,11 @@ namespace {
 struct PushArgs {
   std::string scene_path, wrench_text, at_text, svg_path, time_text = "20";
   bool json = false;
+  RunOptions run;
 };
 
 int run_push(const PushArgs& a) {
+  arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
   const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
@@ -57,6 +59,7 @@ Command add_push(CLI::App& app) {
   cmd->add_option("--time", a->time_text, "Hold the wrench for T time steps h (default 20)");
   cmd->add_option("--svg", a->svg_path, "Draw the trajectory to this SVG file");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
+  add_run_options(cmd, a->run);
   return {cmd, [a] { return run_push(*a); }};
 }
 

@@ -14,9 +14,11 @@ namespace {
 struct PlanArgs {
   std::string scene_path, at_text;
   bool json = false, guaranteed = false;
+  RunOptions run;
 };
 
 int run_push_plan(const PlanArgs& a) {
+  arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
   const auto at = physics::parse_curve_point(scene, a.at_text, "--at");
   const PushPlan plan = plan_push(scene, at.curve, at.u, a.guaranteed);
@@ -33,6 +35,7 @@ Command add_push_plan(CLI::App& app) {
   cmd->add_option("--at", a->at_text, "The boundary point: parameter U of curve K, as K:U (exact numbers)")->required();
   cmd->add_flag("--guaranteed", a->guaranteed, "Also the window in G (every one-step outcome seats; dof 3)");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
+  add_run_options(cmd, a->run);
   return {cmd, [a] { return run_push_plan(*a); }};
 }
 

@@ -20,6 +20,7 @@ struct SeatArgs {
   std::vector<std::string> scene_paths;
   std::string scene_path, impulse_text, svg_path, wrench_text;
   bool json = false, guaranteed = false, stable = false, sustained = false;
+  RunOptions run;
 };
 
 int run_sustained_seat(const Scene& scene, const SeatArgs& a) {
@@ -60,9 +61,11 @@ int run_seat(const SeatArgs& a) {
 struct DumpArgs {
   std::string scene_path, off_dir, length_text = "1";
   bool guaranteed = false, sustained = false;
+  RunOptions run;
 };
 
 int run_dump(const DumpArgs& a) {
+  arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
   if (a.sustained) {
     const SustainedSet J = sustained_set(scene);
@@ -91,7 +94,9 @@ Command add_seat(CLI::App& app) {
   cmd->add_flag("--sustained", a->sustained,
                 "The sustained-push wrench set J at the seated pose q* instead of S (past the paper)");
   cmd->add_option("--wrench", a->wrench_text, "With --sustained: test a world-frame wrench wx,wy,wm (exact numbers)");
+  add_run_options(cmd, a->run);
   return {cmd, [a] {
+            arm_run_control(a->run);
             if (a->scene_paths.size() > 1 && !a->svg_path.empty())
               throw InputError("--svg", a->svg_path, "draws one scene: give a single scene file");
             return run_batch(a->scene_paths, a->json, [a](const std::string& p) {
@@ -109,6 +114,7 @@ Command add_dump(CLI::App& app) {
   cmd->add_option("--length", a->length_text, "Box holds apex + LENGTH * r for every ray r (default 1)");
   cmd->add_flag("--guaranteed", a->guaranteed, "Also write the pieces of the guaranteed set G");
   cmd->add_flag("--sustained", a->sustained, "Also write the cones of the sustained-push set J (clipped, display)");
+  add_run_options(cmd, a->run);
   return {cmd, [a] { return run_dump(*a); }};
 }
 

@@ -11,14 +11,26 @@
 
 namespace fixel::cli {
 
-Scene read_scene(const std::string& path) {
-  if (path != "-") return load_scene(path);
+namespace {
+
+Scene read_scene_polled(const std::string& path) {
+  if (path != "-") return load_scene(path, run_control());
   static bool consumed = false;
   if (consumed) throw InputError("scene", "-", "standard input can be read only once");
   consumed = true;
   const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
   if (std::cin.bad()) throw InputError("scene", "-", "standard input cannot be read");
-  return parse_scene(text, "stdin");
+  return parse_scene(text, "stdin", run_control());
+}
+
+}  // namespace
+
+// Loading polls the run's control block: a huge part shows a "load: ..."
+// progress line on a terminal and obeys --max-seconds and Ctrl-C.
+Scene read_scene(const std::string& path) {
+  Scene scene = read_scene_polled(path);
+  end_progress();
+  return scene;
 }
 
 VectorQ with_background(const Scene& scene, const VectorQ& p) {

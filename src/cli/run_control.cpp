@@ -1,10 +1,12 @@
 // Progress, deadline and Ctrl-C for the long commands.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "cli.h"
@@ -16,6 +18,7 @@ namespace {
 // The run's control block; the SIGINT handler only sets its lock-free flag.
 RunControl g_run;
 bool g_progress_shown = false;
+int g_progress_width = 0;  // of the line shown, to blank a longer one's tail
 
 extern "C" void on_sigint(int) {
   g_run.cancel.store(true);
@@ -25,11 +28,15 @@ extern "C" void on_sigint(int) {
 // Progress on stderr, rewriting one line (only installed on a terminal).
 void show_progress(const char* task, long done, long total, const char* unit) {
   const double seconds = std::chrono::duration<double>(RunControl::Clock::now() - g_run.start).count();
+  char line[512];
   if (total > 0)
-    std::fprintf(stderr, "\r%s: %ld of %ld %s (%.1f%%), %.0f s", task, done, total, unit, 100.0 * done / total,
-                 seconds);
+    std::snprintf(line, sizeof line, "%s: %ld of %ld %s (%.1f%%), %.0f s", task, done, total, unit,
+                  100.0 * done / total, seconds);
   else
-    std::fprintf(stderr, "\r%s: %ld %s, %.0f s", task, done, unit, seconds);
+    std::snprintf(line, sizeof line, "%s: %ld %s, %.0f s", task, done, unit, seconds);
+  const int width = static_cast<int>(std::strlen(line));
+  std::fprintf(stderr, "\r%s%*s", line, std::max(0, g_progress_width - width), "");
+  g_progress_width = width;
   std::fflush(stderr);
   g_progress_shown = true;
 }
@@ -39,7 +46,8 @@ void show_progress(const char* task, long done, long total, const char* unit) {
 void add_run_options(CLI::App* cmd, RunOptions& options) {
   cmd->add_option("--max-seconds", options.max_seconds, "Stop with exit 4 after this many seconds (default: no limit)")
       ->check(CLI::PositiveNumber);
-  cmd->add_flag("--quiet", options.quiet, "No progress line on stderr (shown on a terminal after 1 s)");
+  cmd->add_flag("--quiet", options.quiet,
+                "No progress line on stderr (shown on a terminal after 1 s, also while loading a huge part)");
 }
 
 void arm_run_control(const RunOptions& options) {
@@ -58,6 +66,7 @@ RunControl* run_control() { return &g_run; }
 void end_progress() {
   if (g_progress_shown) std::fputs("\n", stderr);
   g_progress_shown = false;
+  g_progress_width = 0;
 }
 
 void check_writable(const std::string& path, const std::string& flag) {

@@ -1,0 +1,29 @@
+// Structure-aware fuzzing of the two costly operations (fuzz/structured.h,
+// run_operation with slow = true): every contact mode of a three-fixel step,
+// and the guaranteed set (with the region against it), on a small scene
+// chosen by the bytes. 50 ms to seconds per input, so it gets its own
+// target and share of the fuzzing time. A fixel::Error other than
+// InternalError is the expected answer to a degenerate scene; an
+// InternalError, any other exception, a crash, a hang or a sanitizer report
+// is a defect.
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <iostream>
+
+#include "structured.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  try {
+    fixel::fuzz::run_operation(data, size, true);
+  } catch (const fixel::InternalError& e) {
+    std::cerr << "broken invariant: " << e.what() << "\n";
+    std::terminate();
+  } catch (const fixel::Error&) {
+    // Rejected with a message, or stopped by the time budget: fine.
+  } catch (const std::exception& e) {
+    std::cerr << "non-fixel exception: " << e.what() << "\n";
+    std::terminate();
+  }
+  return 0;
+}
