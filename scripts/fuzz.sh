@@ -39,13 +39,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-60}"
+# FUZZ_WORKERS=N runs each target as N parallel libFuzzer jobs (nightly runs
+# on an otherwise idle machine); CI uses 1.
+workers="${FUZZ_WORKERS:-1}"
 # Shares of FUZZ_SECONDS: 2/5, 2/5 and 1/5 (24, 24 and 12 s of the CI minute).
 targets=(scene_fuzz structured_fuzz structured_slow_fuzz)
 declare -A share=([scene_fuzz]=2 [structured_fuzz]=2 [structured_slow_fuzz]=1)
 [ -f build-asan/CMakeCache.txt ] || bash scripts/configure-asan.sh
 cmake --build build-asan -j "$(nproc)" --target "${targets[@]}" > /dev/null
 out=build-asan/fuzz-work
-rm -rf "$out"
+rm -rf "$out" build-asan/*_fuzz.log build-asan/*_fuzz-logs
 mkdir -p "$out/scene_fuzz" "$out/structured_fuzz" "$out/structured_slow_fuzz" build-asan/fuzz-crashes
 cp data/scenes/*.json tests/fuzz_regressions/*.json "$out/scene_fuzz/"
 cp tests/fuzz_regressions/structured/*.bin "$out/structured_fuzz/"
@@ -63,9 +66,22 @@ for target in "${targets[@]}"; do
   each=$(( seconds * ${share[$target]} / 5 ))
   # The structured targets read at most about 100 bytes: full length from the start.
   opts=(-max_len=256 -len_control=0); [ "$target" = scene_fuzz ] && opts=(-max_len=4096)
-  echo "== $target ($each s)"
-  ./build-asan/fuzz/$target "$out/$target" -max_total_time="$each" -timeout=10 "${opts[@]}" \
-    -artifact_prefix=build-asan/fuzz-crashes/$target- -print_final_stats=1 > "build-asan/$target.log" 2>&1 || status=1
-  tail -n 12 "build-asan/$target.log"
+  echo "== $target ($each s, $workers worker(s))"
+  if [ "$workers" -le 1 ]; then
+    ./build-asan/fuzz/$target "$out/$target" -max_total_time="$each" -timeout=10 "${opts[@]}" \
+      -artifact_prefix=build-asan/fuzz-crashes/$target- -print_final_stats=1 > "build-asan/$target.log" 2>&1 || status=1
+    tail -n 12 "build-asan/$target.log"
+  else
+    # One libFuzzer job per worker on a shared corpus; each job writes
+    # fuzz-<k>.log in its own directory.
+    logs="$PWD/build-asan/$target-logs"; rm -rf "$logs"; mkdir -p "$logs"
+    (cd "$logs" && "$OLDPWD/build-asan/fuzz/$target" "$OLDPWD/$out/$target" -jobs="$workers" -workers="$workers" \
+      -max_total_time="$each" -timeout=10 "${opts[@]}" -artifact_prefix="$OLDPWD/build-asan/fuzz-crashes/$target-" \
+      -print_final_stats=1 > "$logs/main.log" 2>&1) || status=1
+    grep -h "stat::number_of_executed_units" "$logs"/fuzz-*.log || status=1
+  fi
 done
+total=$( (grep -h "stat::number_of_executed_units" build-asan/*_fuzz.log build-asan/*_fuzz-logs/fuzz-*.log 2>/dev/null || true) |
+  awk '{s += $2} END {print s + 0}')
+echo "== executions in all: $total"
 exit $status
