@@ -32,10 +32,15 @@
 #                           structured_slow_fuzz 370 in 180 s (2/s);
 #                           457,347 in all, no crash, sanitizer report or
 #                           broken invariant.
+#   FUZZ_SECONDS=800 FUZZ_WORKERS=2 (idle machine, both cores):
+#                           scene_fuzz 220,152 + 235,135 in 320 s,
+#                           structured_fuzz 12,323 + 12,225 in 320 s,
+#                           structured_slow_fuzz 380 + 375 in 160 s;
+#                           480,590 in all, nothing found.
 # (Before: one structured target running the whole pipeline per input,
 # 180-290 executions per 30 s.) 10^6 executions per 60 s CI run is out of
 # reach under the sanitizers on 2 cores; at these rates 10^6 needs about
-# FUZZ_SECONDS=2000 (an estimate from the 900 s run, not a measurement).
+# FUZZ_SECONDS=1700 FUZZ_WORKERS=2 (an estimate, not a measurement).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-60}"
