@@ -201,6 +201,7 @@ GTEST_TEST(Filter, MembershipInSAndGAgreesWithTheExactTestAndFacetPointsFallBack
   }
   EXPECT_GT(inside, 0);  // both answers occur
   EXPECT_LT(inside, 200);
+  EXPECT_LE(in_g, inside);  // G ⊂ S
   EXPECT_GT(filter_stats().at(FilterSite::kMembership).certified, 0);
   EXPECT_EQ(filter_stats().at(FilterSite::kMembership).fallbacks, 0);
   // On a facet: the apex plus a third of a ray lies on every facet plane

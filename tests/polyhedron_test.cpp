@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "fixel/error.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -16,6 +17,15 @@ Polyhedron unit_square() {
   P.dim = 2;
   P.closed = {{v2(1, 0), 0}, {v2(0, 1), 0}, {v2(-1, 0), -1}, {v2(0, -1), -1}};
   return P;
+}
+
+GTEST_TEST(Polyhedron, MembershipOfAPointOfTheWrongLengthIsAnInputError) {
+  Polyhedron P;
+  P.dim = 3;
+  P.closed.push_back(Halfspace{VectorQ::Ones(3), Rational(0)});
+  EXPECT_TRUE(P.contains(VectorQ::Ones(3)));
+  EXPECT_THROW(P.contains(VectorQ::Ones(2)), InputError);
+  EXPECT_THROW(P.closed[0].contains(VectorQ::Ones(4)), InputError);
 }
 
 GTEST_TEST(Polyhedron, EmptinessHonoursStrictRows) {

@@ -13,7 +13,7 @@ struct Halfspace {
   VectorQ a;
   Rational c;
   /// Exact test a·p ≥ c (interval-filtered); points on the boundary plane
-  /// are inside. Precondition: p has a's length.
+  /// are inside. Throws InputError when p and a differ in length.
   bool contains(const VectorQ& p) const;
 };
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/geometry.h"
 #include "fixel/rational.h"
@@ -75,9 +76,11 @@ inline int orientation_filtered(const Vec2& a, const Vec2& b) {
   return orientation_filtered(a, to_interval(a), b, to_interval(b));
 }
 
-// Sign of a·p − c (the side of the half-space a·p ≥ c), filtered. Vectors of
-// equal length.
+// Sign of a·p − c (the side of the half-space a·p ≥ c), filtered. Throws
+// InputError when p and a differ in length.
 inline int affine_sign_filtered(const VectorQ& a, const Rational& c, const VectorQ& p) {
+  if (p.size() != a.size())
+    throw InputError("p", std::to_string(p.size()) + " components", "must have " + std::to_string(a.size()));
   if (!force_exact()) {
     Protect guard;
     FI s = -to_interval(c);
