@@ -81,6 +81,11 @@ void record_filter(FilterSite site, bool certified) {
   (certified ? g_certified : g_fallbacks)[static_cast<int>(site)].fetch_add(1, std::memory_order_relaxed);
 }
 
+void record_filter(FilterSite site, long certified, long fallbacks) {
+  if (certified) g_certified[static_cast<int>(site)].fetch_add(certified, std::memory_order_relaxed);
+  if (fallbacks) g_fallbacks[static_cast<int>(site)].fetch_add(fallbacks, std::memory_order_relaxed);
+}
+
 }  // namespace internal
 
 }  // namespace fixel

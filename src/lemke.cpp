@@ -6,6 +6,7 @@
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/lemke_filtered.h"
 
 namespace fixel {
 
@@ -108,173 +109,6 @@ class Tableau {
   std::vector<int> basis_;
 };
 
-using internal::certain_sign;
-using internal::FI;
-using internal::kUndecided;
-
-// The same lexicographic Lemke path on an interval tableau (Gauss-Jordan on
-// [I, −B, −e | b]: the exact tableau up to positive row and column scalings,
-// which change no ratio-test decision). Every sign and every ratio
-// comparison must be certified by the intervals; the first that is not makes
-// the whole run undecided (false), and the caller runs the exact tableau.
-// When every decision is certified, the pivots are those of the exact run,
-// so the final basis is the exact run's basis.
-class IntervalTableau {
- public:
-  IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())), w_(2 * n_ + 2) {
-    T_.assign(static_cast<std::size_t>(n_) * w_, FI(0));
-    basis_.resize(n_);
-    for (int i = 0; i < n_; ++i) {
-      at(i, i) = FI(1);
-      for (int j = 0; j < n_; ++j)
-        if (B(i, j) != 0) at(i, n_ + j) = -internal::to_interval(B(i, j));
-      at(i, z0()) = FI(-1);
-      at(i, rhs()) = internal::to_interval(b[i]);
-      basis_[i] = i;
-    }
-  }
-
-  int z0() const { return 2 * n_; }
-  int rhs() const { return 2 * n_ + 1; }
-  int basic(int row) const { return basis_[row]; }
-  const std::vector<int>& basis() const { return basis_; }
-  int complement(int var) const { return var < n_ ? var + n_ : var - n_; }
-  FI& at(int i, int j) { return T_[static_cast<std::size_t>(i) * w_ + j]; }
-  const FI& at(int i, int j) const { return T_[static_cast<std::size_t>(i) * w_ + j]; }
-
-  // Needs a Protect scope. The pivot's sign is certified by the caller.
-  void pivot(int r, int s) {
-    const FI p = at(r, s);
-    for (int j = 0; j < w_; ++j) at(r, j) /= p;
-    at(r, s) = FI(1);
-    for (int i = 0; i < n_; ++i) {
-      if (i == r) continue;
-      const FI f = at(i, s);
-      if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
-      for (int j = 0; j < w_; ++j) {
-        const FI& x = at(r, j);
-        if (x.inf() == 0 && x.sup() == 0) continue;
-        at(i, j) -= f * x;
-      }
-      at(i, s) = FI(0);
-    }
-    basis_[r] = s;
-  }
-
-  // The exact ratio test of Tableau::ratio_test, decision by decision;
-  // sets `undecided` when an interval cannot certify one.
-  int ratio_test(int s, bool& undecided) const {
-    int best = -1;
-    for (int i = 0; i < n_; ++i) {
-      const int si = certain_sign(at(i, s));
-      if (si == kUndecided) return undecided = true, -1;
-      if (si <= 0) continue;
-      if (best < 0) {
-        best = i;
-        continue;
-      }
-      int c = compare_ratio(at(i, rhs()), at(i, s), at(best, rhs()), at(best, s));
-      if (c == kUndecided) return undecided = true, -1;
-      if (c == 0 && (basis_[i] == z0() || basis_[best] == z0())) {
-        if (basis_[i] == z0()) best = i;
-        continue;
-      }
-      for (int col = 0; c == 0 && col < n_; ++col) {
-        c = compare_ratio(at(i, col), at(i, s), at(best, col), at(best, s));
-        if (c == kUndecided) return undecided = true, -1;
-      }
-      if (c < 0) best = i;
-    }
-    return best;
-  }
-
- private:
-  static int compare_ratio(const FI& a, const FI& b, const FI& c, const FI& d) { return certain_sign(a * d - c * b); }
-
-  int n_, w_;
-  std::vector<FI> T_;
-  std::vector<int> basis_;
-};
-
-// Exact w, z of a complementary basis: z_Z solves B_ZZ z_Z = −b_Z for the
-// basic z's, w = B z + b. Plain rational elimination (the basis is
-// nonsingular: it is the exact run's final basis).
-void solve_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis, VectorQ& w, VectorQ& z) {
-  const int n = static_cast<int>(b.size());
-  std::vector<int> Z;
-  for (int v : basis)
-    if (v >= n && v < 2 * n) Z.push_back(v - n);
-  const int k = static_cast<int>(Z.size());
-  std::vector<std::vector<Rational>> A(k, std::vector<Rational>(k + 1));
-  for (int r = 0; r < k; ++r) {
-    for (int c = 0; c < k; ++c) A[r][c] = B(Z[r], Z[c]);
-    A[r][k] = -b[Z[r]];
-  }
-  for (int c = 0; c < k; ++c) {
-    int p = c;
-    while (p < k && A[p][c] == 0) ++p;
-    if (p == k) throw InternalError("solve_lcp_lemke: the certified final basis is singular");
-    std::swap(A[p], A[c]);
-    for (int r = c + 1; r < k; ++r) {
-      if (A[r][c] == 0) continue;
-      const Rational f = A[r][c] / A[c][c];
-      for (int j = c; j <= k; ++j)
-        if (A[c][j] != 0) A[r][j] -= f * A[c][j];
-    }
-  }
-  z = VectorQ::Zero(n);
-  for (int r = k; r-- > 0;) {
-    Rational acc = A[r][k];
-    for (int j = r + 1; j < k; ++j)
-      if (A[r][j] != 0) acc -= A[r][j] * z[Z[j]];
-    z[Z[r]] = acc / A[r][r];
-  }
-  w = b;
-  for (int i = 0; i < n; ++i)
-    for (int j : Z)
-      if (B(i, j) != 0 && z[j] != 0) w[i] += B(i, j) * z[j];
-}
-
-// The filtered run: true when every decision was certified (result set),
-// false when the exact run must decide.
-bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result) {
-  const int n = static_cast<int>(b.size());
-  IntervalTableau T(B, b);
-  {
-    internal::Protect guard;
-    int r = 0;
-    for (int i = 1; i < n; ++i) {
-      const int c = certain_sign(T.at(i, T.rhs()) - T.at(r, T.rhs()));
-      if (c == kUndecided) return false;
-      if (c <= 0) r = i;
-    }
-    int entering = T.complement(T.basic(r));
-    T.pivot(r, T.z0());
-    result.pivots = 1;
-    while (true) {
-      if (result.pivots >= max_pivots) {
-        result.status = LemkeStatus::kPivotLimit;
-        return true;
-      }
-      bool undecided = false;
-      r = T.ratio_test(entering, undecided);
-      if (undecided) return false;
-      if (r < 0) {
-        result.status = LemkeStatus::kRayTermination;
-        return true;
-      }
-      const int leaving = T.basic(r);
-      T.pivot(r, entering);
-      ++result.pivots;
-      if (leaving == T.z0()) break;
-      entering = T.complement(leaving);
-    }
-  }
-  solve_basis(B, b, T.basis(), result.w, result.z);
-  result.status = LemkeStatus::kSolved;
-  return true;
-}
-
 }  // namespace
 
 std::string to_string(LemkeStatus status) {
@@ -319,13 +153,12 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) 
 
   if (!force_exact()) {
     LemkeResult filtered;
-    const bool certified = filtered_lemke(B, b, max_pivots, filtered);
-    internal::record_filter(FilterSite::kLemke, certified);
-    if (certified) {
+    if (internal::filtered_lemke(B, b, max_pivots, filtered)) {
       if (filtered.status == LemkeStatus::kSolved && !is_solution(B, b, filtered.w, filtered.z))
-        throw InternalError("solve_lcp_lemke: the certified final basis fails the independent is_solution check");
+        throw InternalError("solve_lcp_lemke: the filtered run's final basis fails the independent is_solution check");
       return filtered;
     }
+    internal::record_filter(FilterSite::kLemke, 0, 1);  // a pivot interval held zero: the whole run is exact
   }
 
   Tableau T(B, b);

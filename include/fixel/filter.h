@@ -13,7 +13,9 @@ namespace fixel {
 
 /// The filtered decisions, one counter pair each.
 enum class FilterSite {
-  kLemke,        ///< Lemke's pivot path and final basis (interval tableau).
+  kLemke,        ///< Lemke's pivot-path decisions (signs and ratio comparisons on an interval
+                 ///< tableau; a fallback is one decided on exact tableau columns, or one whole
+                 ///< run on the integer tableau when a pivot's interval held zero).
   kRayTest,      ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
   kOutTest,      ///< Does a segment's wrench cone miss the seating set (before the exact LP).
   kOrientation,  ///< Signs of planar cross products (direction extremes).

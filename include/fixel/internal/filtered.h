@@ -24,6 +24,8 @@ using Protect = CGAL::Protect_FPU_rounding<true>;
 
 // Counts one filtered decision (certified) or one exact fallback.
 void record_filter(FilterSite site, bool certified);
+// Adds a batch of decisions at once (one atomic update per counter).
+void record_filter(FilterSite site, long certified, long fallbacks);
 
 // An interval that certainly holds q: the point q when q is a dyadic
 // rational of at most 53 significant bits (common here: coordinates and
