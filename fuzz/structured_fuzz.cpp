@@ -8,22 +8,10 @@
 // is a defect.
 #include <cstddef>
 #include <cstdint>
-#include <exception>
-#include <iostream>
 
+#include "harness.h"
 #include "structured.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  try {
-    fixel::fuzz::run_operation(data, size);
-  } catch (const fixel::InternalError& e) {
-    std::cerr << "broken invariant: " << e.what() << "\n";
-    std::terminate();
-  } catch (const fixel::Error&) {
-    // Rejected with a message, or stopped by the time budget: fine.
-  } catch (const std::exception& e) {
-    std::cerr << "non-fixel exception: " << e.what() << "\n";
-    std::terminate();
-  }
-  return 0;
+  return fixel::fuzz::run_checked([&] { fixel::fuzz::run_operation(data, size); });
 }

@@ -6,6 +6,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/json_exact.h"
 #include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
@@ -17,11 +18,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json exact_json(const VectorQ& v) {
-  json out = json::array();
-  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
-  return out;
-}
+using internal::exact_json;
 
 json box_json(const Box& box) { return {{"lo", exact_json(box.lo)}, {"hi", exact_json(box.hi)}}; }
 

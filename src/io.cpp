@@ -10,6 +10,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/json_exact.h"
 #include "fixel/internal/readable.h"
 #include "fixel/off_io.h"
 #include "fixel/wrench_cone.h"
@@ -20,11 +21,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json exact(const VectorQ& v) {
-  json out = json::array();
-  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
-  return out;
-}
+using internal::exact_json;
 
 // Exact with decimals beside (docs/cli.md, "Numbers").
 std::string text(const VectorQ& v) { return internal::readable(v); }
@@ -57,7 +54,7 @@ std::string halfspace_text(const Halfspace& h) {
 namespace {
 json halfspaces_json(const std::vector<Halfspace>& hs) {
   json out = json::array();
-  for (const auto& h : hs) out.push_back({{"a", exact(h.a)}, {"c", to_string(h.c)}});
+  for (const auto& h : hs) out.push_back({{"a", exact_json(h.a)}, {"c", to_string(h.c)}});
   return out;
 }
 std::string polyhedron_text(const Polyhedron& P) {
@@ -164,20 +161,20 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport&
   doc["scene"] = scene.name;
   doc["dof"] = S.dof;
   doc["sliding"] = S.sliding;
-  doc["velocity_after"] = exact(S.nu_plus);
-  doc["tangential_velocity"] = exact(S.tangential_velocity);
-  doc["apex"] = exact(S.apex);
+  doc["velocity_after"] = exact_json(S.nu_plus);
+  doc["tangential_velocity"] = exact_json(S.tangential_velocity);
+  doc["apex"] = exact_json(S.apex);
   doc["rays"] = json::array();
-  for (const auto& r : S.rays) doc["rays"].push_back(exact(r));
+  for (const auto& r : S.rays) doc["rays"].push_back(exact_json(r));
   doc["halfspaces"] = json::array();
-  for (const auto& h : S.halfspaces) doc["halfspaces"].push_back({{"a", exact(h.a)}, {"c", to_string(h.c)}});
+  for (const auto& h : S.halfspaces) doc["halfspaces"].push_back({{"a", exact_json(h.a)}, {"c", to_string(h.c)}});
   if (report.impulse) {
-    doc["impulse"] = exact(report.impulse->impulse);
+    doc["impulse"] = exact_json(report.impulse->impulse);
     doc["contains"] = report.impulse->in_S;
     doc["meaning"] = "one-step: can seat";
     doc["outcomes"] = {{"total", report.impulse->outcomes.total}, {"seating", report.impulse->outcomes.seating}};
     if (report.impulse->y) {
-      doc["y"] = exact(*report.impulse->y);
+      doc["y"] = exact_json(*report.impulse->y);
       doc["y_names"] = report.impulse->y_names;
     }
   }
@@ -234,11 +231,11 @@ std::string simulation_json(const Scene& scene, const Simulation& sim, const Out
   if (first_step) doc["outcomes_of_first_step"] = {{"total", first_step->total}, {"seating", first_step->seating}};
   doc["steps"] = json::array();
   for (const auto& s : sim.steps)
-    doc["steps"].push_back({{"q", exact(s.q)},
-                            {"velocity", exact(s.velocity)},
-                            {"gaps", exact(s.gaps)},
-                            {"p_n", exact(s.p_n)},
-                            {"p_f", exact(s.p_f)},
+    doc["steps"].push_back({{"q", exact_json(s.q)},
+                            {"velocity", exact_json(s.velocity)},
+                            {"gaps", exact_json(s.gaps)},
+                            {"p_n", exact_json(s.p_n)},
+                            {"p_f", exact_json(s.p_f)},
                             {"pivots", s.pivots}});
   internal::add_approx(doc);
   return doc.dump(2) + "\n";
@@ -272,17 +269,17 @@ json mode_names(const std::vector<ContactMode>& modes) {
 std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
   json doc;
   doc["scene"] = scene.name;
-  doc["impulse"] = exact(p_ext);
+  doc["impulse"] = exact_json(p_ext);
   doc["solutions"] = json::array();
   int seating = 0;
   for (const auto& o : outcomes) {
     seating += o.seated ? 1 : 0;
     doc["solutions"].push_back({{"seated", o.seated},
                                 {"modes", mode_names(o.modes)},
-                                {"velocity", exact(o.velocity)},
-                                {"gaps", exact(o.gaps)},
-                                {"p_n", exact(o.p_n)},
-                                {"p_t", exact(o.p_t)},
+                                {"velocity", exact_json(o.velocity)},
+                                {"gaps", exact_json(o.gaps)},
+                                {"p_n", exact_json(o.p_n)},
+                                {"p_t", exact_json(o.p_t)},
                                 {"isolated", o.isolated}});
   }
   doc["seating"] = seating;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fixel/internal/json_exact.h"
 #include "fixel/io.h"
 
 namespace fixel {
@@ -50,11 +51,7 @@ json quantity(const Vec2& v, const char* unit) {
           {"approx", json::array({to_double(v.x), to_double(v.y)})},
           {"unit", unit}};
 }
-json exact(const VectorQ& v) {
-  json out = json::array();
-  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
-  return out;
-}
+using internal::exact_json;
 
 }  // namespace
 
@@ -142,7 +139,7 @@ std::string scene_info_json(const Scene& scene, const SceneInfo& info) {
   } else {
     doc["inertia"] = nullptr;
   }
-  doc["velocity"] = exact(b.velocity);
+  doc["velocity"] = exact_json(b.velocity);
   doc["area"] = info.area ? quantity(*info.area, "m²") : json(nullptr);
   json fixels = json::array();
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
@@ -169,7 +166,7 @@ std::string scene_info_json(const Scene& scene, const SceneInfo& info) {
   doc["fixels"] = fixels;
   doc["pusher_mu"] = scene.pusher_mu_hi ? json::array({to_string(scene.pusher_mu), to_string(*scene.pusher_mu_hi)})
                                         : json(to_string(scene.pusher_mu));
-  doc["background_impulse"] = exact(scene.background_impulse);
+  doc["background_impulse"] = exact_json(scene.background_impulse);
   if (info.seated)
     doc["seated_pose"] = json::parse(seated_pose_json(*info.seated));
   else

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "fixel/internal/json_approx.h"
+#include "fixel/internal/json_exact.h"
 #include "fixel/internal/readable.h"
 #include "fixel/io.h"
 
@@ -13,11 +14,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json exact(const VectorQ& v) {
-  json out = json::array();
-  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
-  return out;
-}
+using internal::exact_json;
 
 json window_json(const Magnitudes& m) {
   if (m.empty) return nullptr;
@@ -45,12 +42,12 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
   doc["u"] = to_string(plan.u);
   doc["point"] = {to_string(plan.point_A.x), to_string(plan.point_A.y)};
   doc["normal"] = {to_string(plan.normal_A.x), to_string(plan.normal_A.y)};
-  doc["wrench_direction"] = exact(plan.wrench_direction);
+  doc["wrench_direction"] = exact_json(plan.wrench_direction);
   json one = {{"meaning", "one-step: can seat"},
               {"status", to_string(plan.in_S)},
               {"magnitudes", window_json(plan.magnitudes_S)}};
   if (plan.sample_impulse) {
-    one["sample_impulse"] = exact(*plan.sample_impulse);
+    one["sample_impulse"] = exact_json(*plan.sample_impulse);
     one["sample_outcomes"] = {{"total", plan.sample_outcomes.total}, {"seating", plan.sample_outcomes.seating}};
     if (plan.sample_in_G) one["sample_in_G"] = *plan.sample_in_G;
   }

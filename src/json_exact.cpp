@@ -96,4 +96,10 @@ nlohmann::json parse_json_exact(const std::string& text, const std::string& sour
   return builder.result();
 }
 
+nlohmann::ordered_json exact_json(const VectorQ& v) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (int k = 0; k < v.size(); ++k) out.push_back(to_string(v[k]));
+  return out;
+}
+
 }  // namespace fixel::internal

@@ -69,6 +69,20 @@ std::optional<Rational> optional_rational(const std::optional<std::string>& text
 
 }  // namespace
 
+RegionOptions region_options(const std::string& resolution, const std::string& cone,
+                             const std::optional<std::string>& pusher_mu, bool exact, int digits,
+                             const std::optional<std::string>& resolution_length) {
+  RegionOptions options;
+  options.exact = exact;
+  options.digits = digits;
+  options.resolution = parse_rational(resolution, "resolution");
+  options.resolution_length = optional_rational(resolution_length, "resolution_length");
+  if (cone != "tight" && cone != "paper") throw InputError("cone", cone, "is not a cone method (tight or paper)");
+  options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+  options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
+  return options;
+}
+
 void bind_region(py::module_& m) {
   py::class_<Region, RegionPtr>(m, "Region")
       .def_property_readonly("intervals",
@@ -82,14 +96,7 @@ void bind_region(py::module_& m) {
   m.def("compute_region", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution,
                              const std::string& cone, const std::optional<std::string>& pusher_mu, const py::object& G,
                              bool exact, int digits, const std::optional<std::string>& resolution_length) {
-    RegionOptions options;
-    options.exact = exact;
-    options.digits = digits;
-    options.resolution = parse_rational(resolution, "resolution");
-    if (resolution_length) options.resolution_length = parse_rational(*resolution_length, "resolution_length");
-    if (cone != "tight" && cone != "paper") throw InputError("cone", cone, "is not a cone method (tight or paper)");
-    options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
-    options.pusher_mu = optional_rational(pusher_mu, "pusher_mu");
+    RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
     options.guaranteed = guaranteed_of(G, S);
     py::gil_scoped_release release;
     return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));

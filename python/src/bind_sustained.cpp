@@ -66,14 +66,7 @@ void bind_sustained(py::module_& m) {
   m.def("compute_region_sustained", [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution,
                                        const std::string& cone, const std::optional<std::string>& pusher_mu, bool exact,
                                        int digits, const std::optional<std::string>& resolution_length) {
-    RegionOptions options;
-    options.exact = exact;
-    options.digits = digits;
-    options.resolution = parse_rational(resolution, "resolution");
-    if (resolution_length) options.resolution_length = parse_rational(*resolution_length, "resolution_length");
-    if (cone != "tight" && cone != "paper") throw InputError("cone", cone, "is not a cone method (tight or paper)");
-    options.cone = cone == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
-    if (pusher_mu) options.pusher_mu = parse_rational(*pusher_mu, "pusher_mu");
+    const RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
     const Scene& s = checked(scene, "scene");
     const SustainedSet& j = checked(J, "sustained");
     py::gil_scoped_release release;

@@ -8,11 +8,13 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "fixel/guaranteed.h"
 #include "fixel/rational.h"
+#include "fixel/region.h"
 #include "fixel/seating.h"
 
 namespace fixel::python {
@@ -45,6 +47,12 @@ struct GuaranteedHandle {
 /// G of `S` from a Python object (None gives nullptr); InputError if G was
 /// built for another seating set.
 const GuaranteedSet* guaranteed_of(const py::object& g, const std::shared_ptr<SeatingSet>& S);
+
+/// The region options of compute_region and compute_region_sustained, from
+/// their keyword arguments (exact texts); InputError names a bad field.
+RegionOptions region_options(const std::string& resolution, const std::string& cone,
+                             const std::optional<std::string>& pusher_mu, bool exact, int digits,
+                             const std::optional<std::string>& resolution_length);
 
 void bind_scene(py::module_& m);
 void bind_sets(py::module_& m);
