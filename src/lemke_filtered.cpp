@@ -4,24 +4,68 @@
 #include <vector>
 
 #include "fixel/error.h"
-#include "fixel/internal/exact_lu.h"
 #include "fixel/internal/filtered.h"
 
 namespace fixel::internal {
 
 namespace {
 
-int sign(const Rational& x) { return x < 0 ? -1 : (x > 0 ? 1 : 0); }
+template <class T>
+int sign(const T& x) {
+  return x < 0 ? -1 : (x > 0 ? 1 : 0);
+}
+
+// [A | b] with equation i scaled by L_i > 0, the lcm of the denominators of
+// B's row i and b_i: every entry an integer. Scaling an equation changes no
+// solution of the systems below.
+class ScaledProblem {
+ public:
+  ScaledProblem(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())) {
+    scale_.resize(n_);
+    B_.assign(n_, std::vector<Integer>(n_));
+    b_.resize(n_);
+    for (int i = 0; i < n_; ++i) {
+      Integer L = boost::multiprecision::denominator(b[i]);
+      for (int j = 0; j < n_; ++j) L = boost::multiprecision::lcm(L, boost::multiprecision::denominator(B(i, j)));
+      scale_[i] = L;
+      for (int j = 0; j < n_; ++j) B_[i][j] = scaled(B(i, j), L);
+      b_[i] = scaled(b[i], L);
+    }
+  }
+
+  int n() const { return n_; }
+  const Integer& scale(int i) const { return scale_[i]; }
+  // L_i · (i, var) of [A | b]; var 0..n−1 w, n..2n−1 z, 2n z0, 2n+1 b.
+  Integer entry(int i, int var) const {
+    if (var < n_) return i == var ? scale_[i] : Integer(0);
+    if (var < 2 * n_) return -B_[i][var - n_];
+    if (var == 2 * n_) return -scale_[i];
+    return b_[i];
+  }
+
+ private:
+  static Integer scaled(const Rational& x, const Integer& L) {
+    return boost::multiprecision::numerator(x) * (L / boost::multiprecision::denominator(x));
+  }
+
+  int n_;
+  std::vector<Integer> scale_;
+  std::vector<std::vector<Integer>> B_;
+  std::vector<Integer> b_;
+};
 
 // The exact tableau A_β⁻¹ [A | b] at one basis β, A = [I, −B, −e], column by
-// column on demand. Rows whose basic variable is some w_i solve trivially, so
-// only a k×k block needs an LU factorisation, k being the number of basic z's
-// (and z0): at most the pivots made so far, so early ties are cheap. The
-// block's LU is exact (Eigen's full-pivot LU on rationals, threshold 0).
+// column on demand, in integers. Rows whose basic variable is some w_i solve
+// trivially, so only the k×k block C of the basic z's (and z0) on the other
+// equations is factored, k being at most the pivots made so far (early ties
+// are cheap). C is reduced by fraction-free (Bareiss) elimination, whose
+// divisions are exact; its last pivot D = ±det C. Entry (t, col) is then
+// N_t / σ_t with N_t an integer and σ_t = D (rows of z's) or D·L_i (the row
+// of w_i): no gcd until a value is needed.
 class ExactTableau {
  public:
-  ExactTableau(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis)
-      : B_(B), b_(b), basis_(basis), n_(static_cast<int>(b.size())), columns_(2 * n_ + 2) {
+  ExactTableau(const ScaledProblem& P, const std::vector<int>& basis)
+      : P_(P), basis_(basis), n_(P.n()), columns_(2 * n_ + 2) {
     std::vector<bool> w_basic(n_, false);
     for (int t = 0; t < n_; ++t) {
       if (basis_[t] < n_)
@@ -33,52 +77,97 @@ class ExactTableau {
       if (!w_basic[i]) R_.push_back(i);
     const int k = static_cast<int>(K_.size());
     if (static_cast<int>(R_.size()) != k) throw InternalError("filtered Lemke: the basis is not a basis");
-    MatrixQ C(k, k);
+    U_.assign(k, std::vector<Integer>(k));
     for (int a = 0; a < k; ++a)
-      for (int c = 0; c < k; ++c) C(a, c) = entry(R_[a], basis_[K_[c]]);
-    lu_ = exact_lu(C);
-    if (!lu_.isInvertible()) throw InternalError("filtered Lemke: the basis is singular");
+      for (int c = 0; c < k; ++c) U_[a][c] = P_.entry(R_[a], basis_[K_[c]]);
+    eliminate();
   }
 
-  // Column `col` (0..n−1 w, n..2n−1 z, 2n z0, 2n+1 the right-hand side).
-  const VectorQ& column(int col) {
+  // Numerators N_t of column `col`; the value of entry t is N_t / σ_t.
+  const std::vector<Integer>& column(int col) {
     auto& slot = columns_[col];
     if (slot) return *slot;
     const int k = static_cast<int>(K_.size());
-    VectorQ v(k);
-    for (int a = 0; a < k; ++a) v[a] = entry(R_[a], col);
-    const VectorQ y = lu_.solve(v);
-    VectorQ x(n_);
-    for (int c = 0; c < k; ++c) x[K_[c]] = y[c];
+    std::vector<Integer> y(k);
+    for (int a = 0; a < k; ++a) y[a] = P_.entry(R_[a], col);
+    // The stored elimination steps, then fraction-free back substitution:
+    // N_r = (D·y_r − Σ_{j>r} U_rj N_j) / U_rr (exact: D·x is an integer by Cramer).
+    for (int c = 0; c < k; ++c) {
+      std::swap(y[c], y[swaps_[c]]);
+      for (int r = c + 1; r < k; ++r) y[r] = (U_[c][c] * y[r] - multipliers_[r][c] * y[c]) / previous_[c];
+    }
+    std::vector<Integer> N(k);
+    for (int r = k; r-- > 0;) {
+      Integer acc = D_ * y[r];
+      for (int j = r + 1; j < k; ++j)
+        if (U_[r][j] != 0) acc -= U_[r][j] * N[j];
+      N[r] = acc / U_[r][r];
+    }
+    std::vector<Integer> x(n_);
+    for (int c = 0; c < k; ++c) x[K_[c]] = N[c];
     for (int t = 0; t < n_; ++t) {
       if (basis_[t] >= n_) continue;
+      // w_i = (v_i − A(i, K)·x_K), scaled by L_i·D.
       const int i = basis_[t];
-      Rational acc = entry(i, col);
+      Integer acc = D_ * P_.entry(i, col);
       for (int c = 0; c < k; ++c)
-        if (y[c] != 0) acc -= entry(i, basis_[K_[c]]) * y[c];
+        if (N[c] != 0) acc -= P_.entry(i, basis_[K_[c]]) * N[c];
       x[t] = acc;
     }
     slot = std::move(x);
     return *slot;
   }
 
- private:
-  // Entry (i, var) of [A | b].
-  Rational entry(int i, int var) const {
-    if (var < n_) return Rational(i == var ? 1 : 0);
-    if (var < 2 * n_) return -B_(i, var - n_);
-    if (var == 2 * n_) return Rational(-1);
-    return b_[i];
+  // Sign of entry (t, col).
+  int entry_sign(int t, int col) { return sign(column(col)[t]) * sign(D_); }
+
+  // Sign of T(i, col)·T(j, s) − T(j, col)·T(i, s): σ_i σ_j > 0 cancels.
+  int cross_sign(int i, int j, int col, int s) {
+    const auto& c = column(col);
+    const auto& x = column(s);
+    return sign(c[i] * x[j] - c[j] * x[i]);
   }
 
-  const MatrixQ& B_;
-  const VectorQ& b_;
+  // The exact value of entry (t, col).
+  Rational value(int t, int col) {
+    const Integer sigma = basis_[t] < n_ ? D_ * P_.scale(basis_[t]) : D_;
+    return Rational(column(col)[t], sigma);
+  }
+
+ private:
+  void eliminate() {
+    const int k = static_cast<int>(K_.size());
+    swaps_.assign(k, 0);
+    previous_.assign(k, Integer(1));
+    multipliers_.assign(k, std::vector<Integer>(k));
+    Integer previous = 1;
+    for (int c = 0; c < k; ++c) {
+      int p = c;
+      while (p < k && U_[p][c] == 0) ++p;
+      if (p == k) throw InternalError("filtered Lemke: the basis is singular");
+      std::swap(U_[p], U_[c]);
+      swaps_[c] = p;
+      previous_[c] = previous;
+      for (int r = c + 1; r < k; ++r) {
+        multipliers_[r][c] = U_[r][c];
+        for (int j = c + 1; j < k; ++j) U_[r][j] = (U_[c][c] * U_[r][j] - U_[r][c] * U_[c][j]) / previous;
+        U_[r][c] = 0;
+      }
+      previous = U_[c][c];
+    }
+    D_ = previous;
+  }
+
+  const ScaledProblem& P_;
   std::vector<int> basis_;
   int n_;
   std::vector<int> R_;  // equations whose w is nonbasic
   std::vector<int> K_;  // tableau rows whose basic variable is a z or z0
-  Eigen::FullPivLU<MatrixQ> lu_;
-  std::vector<std::optional<VectorQ>> columns_;
+  std::vector<std::vector<Integer>> U_, multipliers_;
+  std::vector<int> swaps_;
+  std::vector<Integer> previous_;
+  Integer D_ = 1;
+  std::vector<std::optional<std::vector<Integer>>> columns_;
 };
 
 // The same tableau in intervals (Gauss–Jordan on [I, −B, −e | b]): every
@@ -180,15 +269,15 @@ class FilteredRun {
     result.status = status;
     result.pivots = pivots;
     if (status == LemkeStatus::kSolved) {
-      const VectorQ& x = exact().column(T_.rhs());
+      ExactTableau& E = exact();
       result.w = VectorQ::Zero(n_);
       result.z = VectorQ::Zero(n_);
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
         if (v < n_)
-          result.w[v] = x[t];
+          result.w[v] = E.value(t, T_.rhs());
         else if (v < 2 * n_)
-          result.z[v - n_] = x[t];
+          result.z[v - n_] = E.value(t, T_.rhs());
       }
     }
     return true;
@@ -196,7 +285,8 @@ class FilteredRun {
 
  private:
   ExactTableau& exact() {
-    if (!exact_tableau_) exact_tableau_.emplace(B_, b_, T_.basis());
+    if (!scaled_) scaled_.emplace(B_, b_);
+    if (!exact_tableau_) exact_tableau_.emplace(*scaled_, T_.basis());
     return *exact_tableau_;
   }
 
@@ -212,7 +302,7 @@ class FilteredRun {
     const int s = certain_sign(T_.at(i, col));
     if (s != kUndecided) return ++certified_, s;
     ++exact_;
-    return sign(exact().column(col)[i]);
+    return exact().entry_sign(i, col);
   }
 
   // Sign of T(i, col)·T(j, s) − T(j, col)·T(i, s): the ratio T(i, col)/T(i, s)
@@ -221,10 +311,7 @@ class FilteredRun {
     const int c = certain_sign(T_.at(i, col) * T_.at(j, s) - T_.at(j, col) * T_.at(i, s));
     if (c != kUndecided) return ++certified_, c;
     ++exact_;
-    ExactTableau& E = exact();
-    const VectorQ& xc = E.column(col);
-    const VectorQ& xs = E.column(s);
-    return sign(xc[i] * xs[j] - xc[j] * xs[i]);
+    return exact().cross_sign(i, j, col, s);
   }
 
   // The lexicographic minimum ratio test of Tableau::ratio_test in
@@ -252,6 +339,7 @@ class FilteredRun {
   const VectorQ& b_;
   int n_;
   IntervalTableau T_;
+  std::optional<ScaledProblem> scaled_;
   std::optional<ExactTableau> exact_tableau_;
   long certified_ = 0, exact_ = 0;
 };
