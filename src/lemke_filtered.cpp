@@ -10,11 +10,6 @@ namespace fixel::internal {
 
 namespace {
 
-template <class T>
-int sign(const T& x) {
-  return x < 0 ? -1 : (x > 0 ? 1 : 0);
-}
-
 // [A | b] with equation i scaled by L_i > 0, the lcm of the denominators of
 // B's row i and b_i: every entry an integer. Scaling an equation changes no
 // solution of the systems below.
@@ -119,13 +114,13 @@ class ExactTableau {
   }
 
   // Sign of entry (t, col).
-  int entry_sign(int t, int col) { return sign(column(col)[t]) * sign(D_); }
+  int entry_sign(int t, int col) { return column(col)[t].sign() * D_.sign(); }
 
   // Sign of T(i, col)·T(j, s) − T(j, col)·T(i, s): σ_i σ_j > 0 cancels.
   int cross_sign(int i, int j, int col, int s) {
     const auto& c = column(col);
     const auto& x = column(s);
-    return sign(c[i] * x[j] - c[j] * x[i]);
+    return (c[i] * x[j] - c[j] * x[i]).sign();
   }
 
   // The exact value of entry (t, col).
@@ -238,7 +233,7 @@ class FilteredRun {
     for (int i = 1; i < n_; ++i) {
       int c = certain_sign(T_.at(i, T_.rhs()) - T_.at(r, T_.rhs()));
       if (c == kUndecided) {
-        c = sign(b_[i] - b_[r]);
+        c = fixel::sign(b_[i] - b_[r]);
         ++exact_;
       } else {
         ++certified_;

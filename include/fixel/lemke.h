@@ -30,6 +30,10 @@ struct LemkeResult {
 /// covering vector e and the lexicographic ratio test, so it cannot cycle on
 /// degenerate problems. The tableau holds integers and one common
 /// denominator; every ratio comparison is the exact sign of a·d − b·c.
+/// Unless force_exact(), the same pivot path is first followed on an
+/// interval tableau, with each decision the intervals cannot certify taken
+/// on exact columns of the tableau (docs/theory.md §6); status, pivots, w
+/// and z are the same either way.
 /// A kSolved result has been verified by is_solution. max_pivots <= 0 means
 /// 100·(n + 1). Throws InputError if B is not square or b has the wrong size.
 LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots = 0);
