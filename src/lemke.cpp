@@ -128,11 +128,41 @@ bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const Vec
   if (B.rows() != n || B.cols() != n || w.size() != n || z.size() != n) return false;
   for (int i = 0; i < n; ++i)
     if (w[i] < 0 || z[i] < 0 || (w[i] != 0 && z[i] != 0)) return false;  // w ≥ 0, z ≥ 0, wᵀz = 0
+  // Row by row in integers: with d the lcm of z's denominators (n_j = d·z_j)
+  // and L the lcm of the row's denominators of B, row i holds iff
+  // Σ_j (L·B_ij)·n_j = L·d·(w_i − b_i). This avoids a gcd per term; the
+  // values are reused from row to row, so the check allocates little.
+  Integer d = 1, L, factor, sum, term;
+  for (int j = 0; j < n; ++j) mpz_lcm(d.backend().data(), d.backend().data(), mpq_denref(z[j].backend().data()));
+  std::vector<Integer> scaled_z(n);
+  for (int j = 0; j < n; ++j) {
+    const auto* q = z[j].backend().data();
+    mpz_divexact(factor.backend().data(), d.backend().data(), mpq_denref(q));
+    mpz_mul(scaled_z[j].backend().data(), mpq_numref(q), factor.backend().data());
+  }
+  Rational rhs;
   for (int i = 0; i < n; ++i) {
-    Rational acc = b[i];
+    mpz_set_ui(L.backend().data(), 1);
     for (int j = 0; j < n; ++j)
-      if (z[j] != 0 && B(i, j) != 0) acc += B(i, j) * z[j];
-    if (acc != w[i]) return false;
+      if (z[j] != 0) mpz_lcm(L.backend().data(), L.backend().data(), mpq_denref(B(i, j).backend().data()));
+    mpz_set_ui(sum.backend().data(), 0);
+    for (int j = 0; j < n; ++j) {
+      if (z[j] == 0) continue;
+      const auto* q = B(i, j).backend().data();
+      if (mpz_sgn(mpq_numref(q)) == 0) continue;
+      mpz_divexact(factor.backend().data(), L.backend().data(), mpq_denref(q));
+      mpz_mul(term.backend().data(), mpq_numref(q), factor.backend().data());
+      mpz_addmul(sum.backend().data(), term.backend().data(), scaled_z[j].backend().data());
+    }
+    // L·d·(w_i − b_i) = L·d·p/q (lowest terms) must be the integer `sum`:
+    // q must divide L·d.
+    mpq_sub(rhs.backend().data(), w[i].backend().data(), b[i].backend().data());
+    const auto* r = rhs.backend().data();
+    mpz_mul(factor.backend().data(), L.backend().data(), d.backend().data());
+    if (!mpz_divisible_p(factor.backend().data(), mpq_denref(r))) return false;
+    mpz_divexact(factor.backend().data(), factor.backend().data(), mpq_denref(r));
+    mpz_mul(factor.backend().data(), factor.backend().data(), mpq_numref(r));
+    if (mpz_cmp(factor.backend().data(), sum.backend().data()) != 0) return false;
   }
   return true;
 }

@@ -1,6 +1,5 @@
 #include "fixel/internal/lemke_filtered.h"
 
-#include <optional>
 #include <vector>
 
 #include "fixel/error.h"
@@ -10,43 +9,54 @@ namespace fixel::internal {
 
 namespace {
 
-// [A | b] with equation i scaled by L_i > 0, the lcm of the denominators of
-// B's row i and b_i: every entry an integer. Scaling an equation changes no
-// solution of the systems below.
+// In-place GMP on Integer storage: the loops below reuse each value's limbs
+// instead of allocating a temporary per operation (Integer has no
+// expression templates), which was most of their cost.
+mpz_ptr mp(Integer& x) { return x.backend().data(); }
+mpz_srcptr mp(const Integer& x) { return x.backend().data(); }
+
+// [A | b] = [I, −B, −e | b] with equation i scaled by L_i > 0, the lcm of
+// the denominators of B's row i and b_i: every entry an integer. Scaling an
+// equation changes no solution of the systems below.
 class ScaledProblem {
  public:
-  ScaledProblem(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())) {
+  void assign(const MatrixQ& B, const VectorQ& b) {
+    n_ = static_cast<int>(b.size());
+    width_ = 2 * n_ + 2;
+    A_.resize(static_cast<std::size_t>(n_) * width_);
     scale_.resize(n_);
-    B_.assign(n_, std::vector<Integer>(n_));
-    b_.resize(n_);
+    Integer factor;
     for (int i = 0; i < n_; ++i) {
-      Integer L = boost::multiprecision::denominator(b[i]);
-      for (int j = 0; j < n_; ++j) L = boost::multiprecision::lcm(L, boost::multiprecision::denominator(B(i, j)));
-      scale_[i] = L;
-      for (int j = 0; j < n_; ++j) B_[i][j] = scaled(B(i, j), L);
-      b_[i] = scaled(b[i], L);
+      Integer& L = scale_[i];
+      mpz_set(mp(L), mpq_denref(b[i].backend().data()));
+      for (int j = 0; j < n_; ++j) mpz_lcm(mp(L), mp(L), mpq_denref(B(i, j).backend().data()));
+      for (int var = 0; var < n_; ++var) mpz_set_ui(mp(at(i, var)), 0);
+      mpz_set(mp(at(i, i)), mp(L));
+      for (int j = 0; j < n_; ++j) {
+        scaled(at(i, n_ + j), B(i, j), L, factor);
+        mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
+      }
+      mpz_neg(mp(at(i, 2 * n_)), mp(L));
+      scaled(at(i, 2 * n_ + 1), b[i], L, factor);
     }
   }
 
   int n() const { return n_; }
   const Integer& scale(int i) const { return scale_[i]; }
   // L_i · (i, var) of [A | b]; var 0..n−1 w, n..2n−1 z, 2n z0, 2n+1 b.
-  Integer entry(int i, int var) const {
-    if (var < n_) return i == var ? scale_[i] : Integer(0);
-    if (var < 2 * n_) return -B_[i][var - n_];
-    if (var == 2 * n_) return -scale_[i];
-    return b_[i];
-  }
+  const Integer& entry(int i, int var) const { return A_[static_cast<std::size_t>(i) * width_ + var]; }
 
  private:
-  static Integer scaled(const Rational& x, const Integer& L) {
-    return boost::multiprecision::numerator(x) * (L / boost::multiprecision::denominator(x));
+  Integer& at(int i, int var) { return A_[static_cast<std::size_t>(i) * width_ + var]; }
+  static void scaled(Integer& out, const Rational& x, const Integer& L, Integer& factor) {
+    const auto* q = x.backend().data();
+    mpz_divexact(mp(factor), mp(L), mpq_denref(q));
+    mpz_mul(mp(out), mpq_numref(q), mp(factor));
   }
 
-  int n_;
+  int n_ = 0, width_ = 0;
+  std::vector<Integer> A_;
   std::vector<Integer> scale_;
-  std::vector<std::vector<Integer>> B_;
-  std::vector<Integer> b_;
 };
 
 // The exact tableau A_β⁻¹ [A | b] at one basis β, A = [I, −B, −e], column by
@@ -56,12 +66,18 @@ class ScaledProblem {
 // are cheap). C is reduced by fraction-free (Bareiss) elimination, whose
 // divisions are exact; its last pivot D = ±det C. Entry (t, col) is then
 // N_t / σ_t with N_t an integer and σ_t = D (rows of z's) or D·L_i (the row
-// of w_i): no gcd until a value is needed.
+// of w_i): no gcd until a value is needed. Its storage is reused from basis
+// to basis and from run to run.
 class ExactTableau {
  public:
-  ExactTableau(const ScaledProblem& P, const std::vector<int>& basis)
-      : P_(P), basis_(basis), n_(P.n()), columns_(2 * n_ + 2) {
+  // Factors the block at `basis` (P must outlive the columns' use).
+  void assign(const ScaledProblem& P, const std::vector<int>& basis) {
+    P_ = &P;
+    basis_ = basis;
+    n_ = P.n();
     std::vector<bool> w_basic(n_, false);
+    K_.clear();
+    R_.clear();
     for (int t = 0; t < n_; ++t) {
       if (basis_[t] < n_)
         w_basic[basis_[t]] = true;
@@ -72,98 +88,129 @@ class ExactTableau {
       if (!w_basic[i]) R_.push_back(i);
     const int k = static_cast<int>(K_.size());
     if (static_cast<int>(R_.size()) != k) throw InternalError("filtered Lemke: the basis is not a basis");
-    U_.assign(k, std::vector<Integer>(k));
+    grow(U_, static_cast<std::size_t>(n_) * n_);
+    grow(multipliers_, static_cast<std::size_t>(n_) * n_);
+    grow(previous_, n_);
+    grow(y_, n_);
+    grow(N_, n_);
+    grow(columns_, static_cast<std::size_t>(2 * n_ + 2) * n_);
+    have_.assign(2 * n_ + 2, false);
     for (int a = 0; a < k; ++a)
-      for (int c = 0; c < k; ++c) U_[a][c] = P_.entry(R_[a], basis_[K_[c]]);
+      for (int c = 0; c < k; ++c) mpz_set(mp(u(a, c)), mp(P.entry(R_[a], basis_[K_[c]])));
     eliminate();
   }
 
-  // Numerators N_t of column `col`; the value of entry t is N_t / σ_t.
-  const std::vector<Integer>& column(int col) {
-    auto& slot = columns_[col];
-    if (slot) return *slot;
+  // Numerators N_t of column `col` (n of them from `data`); the value of
+  // entry t is N_t / σ_t.
+  const Integer* column(int col) {
+    Integer* x = &columns_[static_cast<std::size_t>(col) * n_];
+    if (have_[col]) return x;
     const int k = static_cast<int>(K_.size());
-    std::vector<Integer> y(k);
-    for (int a = 0; a < k; ++a) y[a] = P_.entry(R_[a], col);
+    for (int a = 0; a < k; ++a) mpz_set(mp(y_[a]), mp(P_->entry(R_[a], col)));
     // The stored elimination steps, then fraction-free back substitution:
     // N_r = (D·y_r − Σ_{j>r} U_rj N_j) / U_rr (exact: D·x is an integer by Cramer).
     for (int c = 0; c < k; ++c) {
-      std::swap(y[c], y[swaps_[c]]);
-      for (int r = c + 1; r < k; ++r) y[r] = (U_[c][c] * y[r] - multipliers_[r][c] * y[c]) / previous_[c];
+      if (swaps_[c] != c) mpz_swap(mp(y_[c]), mp(y_[swaps_[c]]));
+      for (int r = c + 1; r < k; ++r) {
+        mpz_mul(mp(t_), mp(u(c, c)), mp(y_[r]));
+        mpz_submul(mp(t_), mp(multiplier(r, c)), mp(y_[c]));
+        mpz_divexact(mp(y_[r]), mp(t_), mp(previous_[c]));
+      }
     }
-    std::vector<Integer> N(k);
     for (int r = k; r-- > 0;) {
-      Integer acc = D_ * y[r];
+      mpz_mul(mp(t_), mp(D_), mp(y_[r]));
       for (int j = r + 1; j < k; ++j)
-        if (U_[r][j] != 0) acc -= U_[r][j] * N[j];
-      N[r] = acc / U_[r][r];
+        if (mpz_sgn(mp(u(r, j))) != 0) mpz_submul(mp(t_), mp(u(r, j)), mp(N_[j]));
+      mpz_divexact(mp(N_[r]), mp(t_), mp(u(r, r)));
     }
-    std::vector<Integer> x(n_);
-    for (int c = 0; c < k; ++c) x[K_[c]] = N[c];
+    for (int c = 0; c < k; ++c) mpz_set(mp(x[K_[c]]), mp(N_[c]));
     for (int t = 0; t < n_; ++t) {
       if (basis_[t] >= n_) continue;
       // w_i = (v_i − A(i, K)·x_K), scaled by L_i·D.
       const int i = basis_[t];
-      Integer acc = D_ * P_.entry(i, col);
+      mpz_mul(mp(x[t]), mp(D_), mp(P_->entry(i, col)));
       for (int c = 0; c < k; ++c)
-        if (N[c] != 0) acc -= P_.entry(i, basis_[K_[c]]) * N[c];
-      x[t] = acc;
+        if (mpz_sgn(mp(N_[c])) != 0) mpz_submul(mp(x[t]), mp(P_->entry(i, basis_[K_[c]])), mp(N_[c]));
     }
-    slot = std::move(x);
-    return *slot;
+    have_[col] = true;
+    return x;
   }
 
   // Sign of entry (t, col).
-  int entry_sign(int t, int col) { return column(col)[t].sign() * D_.sign(); }
+  int entry_sign(int t, int col) { return mpz_sgn(mp(column(col)[t])) * mpz_sgn(mp(D_)); }
 
   // Sign of T(i, col)·T(j, s) − T(j, col)·T(i, s): σ_i σ_j > 0 cancels.
   int cross_sign(int i, int j, int col, int s) {
-    const auto& c = column(col);
-    const auto& x = column(s);
-    return (c[i] * x[j] - c[j] * x[i]).sign();
+    const Integer* c = column(col);
+    const Integer* x = column(s);
+    mpz_mul(mp(t_), mp(c[i]), mp(x[j]));
+    mpz_mul(mp(t2_), mp(c[j]), mp(x[i]));
+    const int cmp = mpz_cmp(mp(t_), mp(t2_));
+    return (cmp > 0) - (cmp < 0);
   }
 
   // The exact value of entry (t, col).
   Rational value(int t, int col) {
-    const Integer sigma = basis_[t] < n_ ? D_ * P_.scale(basis_[t]) : D_;
+    Integer sigma = D_;
+    if (basis_[t] < n_) mpz_mul(mp(sigma), mp(sigma), mp(P_->scale(basis_[t])));
     return Rational(column(col)[t], sigma);
   }
 
  private:
+  static void grow(std::vector<Integer>& v, std::size_t size) {
+    if (v.size() < size) v.resize(size);
+  }
+  Integer& u(int a, int c) { return U_[static_cast<std::size_t>(a) * n_ + c]; }
+  Integer& multiplier(int a, int c) { return multipliers_[static_cast<std::size_t>(a) * n_ + c]; }
+
   void eliminate() {
     const int k = static_cast<int>(K_.size());
     swaps_.assign(k, 0);
-    previous_.assign(k, Integer(1));
-    multipliers_.assign(k, std::vector<Integer>(k));
-    Integer previous = 1;
+    mpz_set_ui(mp(D_), 1);  // the previous pivot, 1 before the first
     for (int c = 0; c < k; ++c) {
       int p = c;
-      while (p < k && U_[p][c] == 0) ++p;
+      while (p < k && mpz_sgn(mp(u(p, c))) == 0) ++p;
       if (p == k) throw InternalError("filtered Lemke: the basis is singular");
-      std::swap(U_[p], U_[c]);
+      if (p != c)
+        for (int j = 0; j < k; ++j) mpz_swap(mp(u(p, j)), mp(u(c, j)));
       swaps_[c] = p;
-      previous_[c] = previous;
+      mpz_set(mp(previous_[c]), mp(D_));
       for (int r = c + 1; r < k; ++r) {
-        multipliers_[r][c] = U_[r][c];
-        for (int j = c + 1; j < k; ++j) U_[r][j] = (U_[c][c] * U_[r][j] - U_[r][c] * U_[c][j]) / previous;
-        U_[r][c] = 0;
+        mpz_set(mp(multiplier(r, c)), mp(u(r, c)));
+        for (int j = c + 1; j < k; ++j) {
+          mpz_mul(mp(t_), mp(u(c, c)), mp(u(r, j)));
+          mpz_submul(mp(t_), mp(u(r, c)), mp(u(c, j)));
+          mpz_divexact(mp(u(r, j)), mp(t_), mp(D_));
+        }
+        mpz_set_ui(mp(u(r, c)), 0);
       }
-      previous = U_[c][c];
+      mpz_set(mp(D_), mp(u(c, c)));
     }
-    D_ = previous;
   }
 
-  const ScaledProblem& P_;
+  const ScaledProblem* P_ = nullptr;
   std::vector<int> basis_;
-  int n_;
-  std::vector<int> R_;  // equations whose w is nonbasic
-  std::vector<int> K_;  // tableau rows whose basic variable is a z or z0
-  std::vector<std::vector<Integer>> U_, multipliers_;
+  int n_ = 0;
+  std::vector<int> R_;                    // equations whose w is nonbasic
+  std::vector<int> K_;                    // tableau rows whose basic variable is a z or z0
+  std::vector<Integer> U_, multipliers_;  // k×k, stride n
   std::vector<int> swaps_;
-  std::vector<Integer> previous_;
-  Integer D_ = 1;
-  std::vector<std::optional<std::vector<Integer>>> columns_;
+  std::vector<Integer> previous_, y_, N_;
+  Integer D_, t_, t2_;
+  std::vector<Integer> columns_;  // column col at [col·n, col·n + n)
+  std::vector<bool> have_;
 };
+
+// The exact side's storage, kept per thread so that GMP limbs are reused.
+struct ExactWorkspace {
+  ScaledProblem problem;
+  ExactTableau tableau;
+};
+
+ExactWorkspace& exact_workspace() {
+  thread_local ExactWorkspace workspace;
+  return workspace;
+}
 
 // The same tableau in intervals (Gauss–Jordan on [I, −B, −e | b]): every
 // entry encloses the exact tableau's. It is the integer tableau of
@@ -280,15 +327,22 @@ class FilteredRun {
 
  private:
   ExactTableau& exact() {
-    if (!scaled_) scaled_.emplace(B_, b_);
-    if (!exact_tableau_) exact_tableau_.emplace(*scaled_, T_.basis());
-    return *exact_tableau_;
+    ExactWorkspace& ws = exact_workspace();
+    if (!scaled_) {
+      ws.problem.assign(B_, b_);
+      scaled_ = true;
+    }
+    if (!tableau_current_) {
+      ws.tableau.assign(ws.problem, T_.basis());
+      tableau_current_ = true;
+    }
+    return ws.tableau;
   }
 
   bool pivot(int r, int s) {
     if (certain_sign(T_.at(r, s)) == kUndecided) return false;  // the division would lose everything
     T_.pivot(r, s);
-    exact_tableau_.reset();
+    tableau_current_ = false;
     return true;
   }
 
@@ -334,8 +388,7 @@ class FilteredRun {
   const VectorQ& b_;
   int n_;
   IntervalTableau T_;
-  std::optional<ScaledProblem> scaled_;
-  std::optional<ExactTableau> exact_tableau_;
+  bool scaled_ = false, tableau_current_ = false;
   long certified_ = 0, exact_ = 0;
 };
 

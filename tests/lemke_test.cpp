@@ -276,5 +276,29 @@ GTEST_TEST(IsSolution, RejectsEachViolatedCondition) {
   EXPECT_FALSE(is_solution(B, vec({1}), vec({2}), vec({1})));    // wᵀz ≠ 0
 }
 
+GTEST_TEST(IsSolution, AgreesWithTheRationalDefinitionOnRandomComplementaryPairs) {
+  // Second method: w == B·z + b evaluated by Eigen in rationals. Each pair is
+  // built to satisfy it, then one entry of b is moved by a tiny amount.
+  std::mt19937_64 rng(12);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 1 + trial % 8;
+    MatrixQ B(n, n);
+    VectorQ w(n), z(n);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) B(i, j) = test::random_rational(rng, -5, 5, 97);
+      const bool z_basic = rng() % 2 == 0;
+      z[i] = z_basic ? test::random_rational(rng, 0, 4, 1009) : Rational(0);
+      w[i] = z_basic ? Rational(0) : test::random_rational(rng, 0, 4, 1013);
+    }
+    VectorQ b = w - B * z;
+    ASSERT_EQ(VectorQ(B * z + b), w);
+    EXPECT_TRUE(is_solution(B, b, w, z)) << "trial " << trial;
+    const int i = static_cast<int>(rng() % n);
+    b[i] += Rational(1, 1000003);
+    ASSERT_NE(VectorQ(B * z + b), w);
+    EXPECT_FALSE(is_solution(B, b, w, z)) << "trial " << trial;
+  }
+}
+
 }  // namespace
 }  // namespace fixel
