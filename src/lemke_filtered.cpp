@@ -149,6 +149,33 @@ class ExactTableau {
     return (cmp > 0) - (cmp < 0);
   }
 
+  bool has_column(int col) const { return have_[col]; }
+
+  // The right-hand side at the basis that pivoting on (r, col) reaches, from
+  // this basis's columns `rhs` and `col` (both computed already): row r
+  // becomes N_r/S_r and row t ≠ r (N_t·S_r − N_r·S_t)/(σ_t·S_r). False if
+  // S_r = 0. This spares factoring the next basis for the final values.
+  bool values_after_pivot(int r, int col, int rhs, std::vector<Rational>& values) {
+    const Integer* N = column(rhs);
+    const Integer* S = column(col);
+    if (mpz_sgn(mp(S[r])) == 0) return false;
+    values.resize(n_);
+    for (int t = 0; t < n_; ++t) {
+      auto* q = values[t].backend().data();
+      if (t == r) {
+        mpz_set(mpq_numref(q), mp(N[r]));
+        mpz_set(mpq_denref(q), mp(S[r]));
+      } else {
+        mpz_mul(mpq_numref(q), mp(N[t]), mp(S[r]));
+        mpz_submul(mpq_numref(q), mp(N[r]), mp(S[t]));
+        mpz_mul(mpq_denref(q), mp(D_), mp(S[r]));
+        if (basis_[t] < n_) mpz_mul(mpq_denref(q), mpq_denref(q), mp(P_->scale(basis_[t])));
+      }
+      mpq_canonicalize(q);
+    }
+    return true;
+  }
+
   // The exact value of entry (t, col).
   Rational value(int t, int col) {
     Integer sigma = D_;
@@ -302,6 +329,13 @@ class FilteredRun {
         break;
       }
       const int leaving = T_.basic(r);
+      // The last pivot: when this basis's exact columns are at hand (the z0
+      // row usually wins a tie), the final values follow from them.
+      if (leaving == T_.z0() && tableau_current_) {
+        ExactTableau& E = exact_workspace().tableau;
+        if (E.has_column(T_.rhs()) && E.has_column(entering))
+          final_ready_ = E.values_after_pivot(r, entering, T_.rhs(), final_values_);
+      }
       if (!pivot(r, entering)) return false;
       ++pivots;
       if (leaving == T_.z0()) break;
@@ -311,15 +345,16 @@ class FilteredRun {
     result.status = status;
     result.pivots = pivots;
     if (status == LemkeStatus::kSolved) {
-      ExactTableau& E = exact();
       result.w = VectorQ::Zero(n_);
       result.z = VectorQ::Zero(n_);
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
-        if (v < n_)
-          result.w[v] = E.value(t, T_.rhs());
-        else if (v < 2 * n_)
-          result.z[v - n_] = E.value(t, T_.rhs());
+        if (v >= 2 * n_) continue;
+        Rational& out = v < n_ ? result.w[v] : result.z[v - n_];
+        if (final_ready_)
+          std::swap(out, final_values_[t]);
+        else
+          out = exact().value(t, T_.rhs());
       }
     }
     return true;
@@ -389,6 +424,8 @@ class FilteredRun {
   int n_;
   IntervalTableau T_;
   bool scaled_ = false, tableau_current_ = false;
+  bool final_ready_ = false;            // final_values_ hold the final basis's rows
+  std::vector<Rational> final_values_;  // by tableau row
   long certified_ = 0, exact_ = 0;
 };
 
