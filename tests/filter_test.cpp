@@ -5,10 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cfenv>
 #include <random>
 #include <regex>
 
 #include "fixel/guaranteed.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
@@ -36,6 +38,32 @@ auto run(bool exact, F f) {
 std::string region_json_of(const Scene& scene, const SeatingSet& S, const RegionOptions& opt) {
   const Region r = compute_region(scene, S, opt);
   return masked(region_json(scene, r));
+}
+
+GTEST_TEST(Filter, ToIntervalHoldsEveryRationalInEveryRoundingModeAndDyadicsArePoints) {
+  // Checked exactly: the interval's ends, as rationals, bracket q.
+  std::mt19937_64 rng(7);
+  const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+  const int old_mode = std::fegetround();
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int bits = 1 + static_cast<int>(rng() % 80);  // below and above 53 and 64 bits
+    Integer num = Integer(rng() >> (64 - std::min(bits, 63)));
+    if (bits > 63) num = num * Integer(rng()) + 1;
+    Integer den = trial % 5 == 0 ? Integer(1) << static_cast<int>(rng() % 60) : Integer(1 + (rng() >> (rng() % 64)));
+    const Rational q = Rational(trial % 2 ? -num : num, den);
+    for (const int mode : modes) {
+      std::fesetround(mode);
+      const internal::FI x = internal::to_interval(q);
+      std::fesetround(old_mode);
+      ASSERT_LE(Rational(x.inf()), q) << q << " mode " << mode;
+      ASSERT_GE(Rational(x.sup()), q) << q << " mode " << mode;
+      const auto* m = q.backend().data();
+      const bool dyadic = mpz_popcount(mpq_denref(m)) == 1 && mpz_sizeinbase(mpq_numref(m), 2) <= 53;
+      if (dyadic) {
+        EXPECT_EQ(x.inf(), x.sup()) << q;
+      }
+    }
+  }
 }
 
 GTEST_TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {

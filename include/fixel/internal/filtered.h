@@ -34,6 +34,19 @@ void record_filter(FilterSite site, long certified, long fallbacks);
 // rounding mode.
 inline FI to_interval(const Rational& q) {
   const auto& m = q.backend().data();
+  const mpz_srcptr num = mpq_numref(m), den = mpq_denref(m);
+  if (mpz_size(num) <= 1 && mpz_size(den) == 1) {
+    // Numerator and denominator exact in double: one division, which in any
+    // rounding mode lands within an ulp of q, so one ulp each way holds q.
+    constexpr mp_limb_t kExact = mp_limb_t(1) << 53;
+    const mp_limb_t n = mpz_getlimbn(num, 0), d = mpz_getlimbn(den, 0);
+    if (n < kExact && d < kExact) {
+      const double x = (mpz_sgn(num) < 0 ? -static_cast<double>(n) : static_cast<double>(n)) / static_cast<double>(d);
+      if ((d & (d - 1)) == 0) return FI(x);  // a power of two: the division is exact
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      return FI(std::nextafter(x, -inf), std::nextafter(x, inf));
+    }
+  }
   const double d = mpq_get_d(m);
   if (!(std::abs(d) < 1e300)) return FI::largest();
   const bool dyadic = mpz_popcount(mpq_denref(m)) == 1 && mpz_sizeinbase(mpq_denref(m), 2) < 900;
