@@ -133,7 +133,11 @@ bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const Vec
   // Σ_j (L·B_ij)·n_j = L·d·(w_i − b_i). This avoids a gcd per term; the
   // values are reused from row to row, so the check allocates little.
   Integer d = 1, L, factor, sum, term;
-  for (int j = 0; j < n; ++j) mpz_lcm(d.backend().data(), d.backend().data(), mpq_denref(z[j].backend().data()));
+  // lcm(L, q) only when q does not divide L already (denominators repeat).
+  const auto raise_to_multiple = [](Integer& L, mpz_srcptr q) {
+    if (!mpz_divisible_p(L.backend().data(), q)) mpz_lcm(L.backend().data(), L.backend().data(), q);
+  };
+  for (int j = 0; j < n; ++j) raise_to_multiple(d, mpq_denref(z[j].backend().data()));
   std::vector<Integer> scaled_z(n);
   for (int j = 0; j < n; ++j) {
     const auto* q = z[j].backend().data();
@@ -144,7 +148,7 @@ bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const Vec
   for (int i = 0; i < n; ++i) {
     mpz_set_ui(L.backend().data(), 1);
     for (int j = 0; j < n; ++j)
-      if (z[j] != 0) mpz_lcm(L.backend().data(), L.backend().data(), mpq_denref(B(i, j).backend().data()));
+      if (z[j] != 0) raise_to_multiple(L, mpq_denref(B(i, j).backend().data()));
     mpz_set_ui(sum.backend().data(), 0);
     for (int j = 0; j < n; ++j) {
       if (z[j] == 0) continue;

@@ -29,7 +29,10 @@ class ScaledProblem {
     for (int i = 0; i < n_; ++i) {
       Integer& L = scale_[i];
       mpz_set(mp(L), mpq_denref(b[i].backend().data()));
-      for (int j = 0; j < n_; ++j) mpz_lcm(mp(L), mp(L), mpq_denref(B(i, j).backend().data()));
+      for (int j = 0; j < n_; ++j) {
+        mpz_srcptr q = mpq_denref(B(i, j).backend().data());
+        if (!mpz_divisible_p(mp(L), q)) mpz_lcm(mp(L), mp(L), q);  // denominators repeat
+      }
       for (int var = 0; var < n_; ++var) mpz_set_ui(mp(at(i, var)), 0);
       mpz_set(mp(at(i, i)), mp(L));
       for (int j = 0; j < n_; ++j) {
