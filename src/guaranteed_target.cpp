@@ -1,10 +1,12 @@
 // The one-step target G of the pushing region: the guaranteed set
 // (docs/theory.md §9), a disjoint union of convex pieces, behind
 // RegionTarget.
+#include <array>
 #include <memory>
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/region_targets.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region_target.h"
@@ -35,10 +37,77 @@ bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<
   return is_empty(lifted);
 }
 
+using internal::FI;
+
+// One piece's rows a_h·x ≥ c_h (closed and strict alike: the closure) as
+// seen from b0: enclosures of a_h and of β_h = c_h − a_h·b0.
+struct PieceEnclosure {
+  std::vector<std::array<FI, 3>> a;
+  std::vector<FI> beta;
+
+  PieceEnclosure(const Polyhedron& Q, const VectorQ& b0) {
+    auto add = [&](const Halfspace& h) {
+      if (h.a.size() != 3) return;
+      a.push_back({internal::to_interval(h.a[0]), internal::to_interval(h.a[1]), internal::to_interval(h.a[2])});
+      beta.push_back(internal::to_interval(h.c - h.a.dot(b0)));
+    };
+    for (const auto& h : Q.closed) add(h);
+    for (const auto& h : Q.strict) add(h);
+  }
+
+  // A Farkas certificate that no μ ≥ 0 puts b0 + Σ μ_j g_j in the piece's
+  // closure, so none puts it in the piece: y ≥ 0 with Σ_h y_h a_h·g_j ≤ 0
+  // for every j and y·β > 0. Candidates are one row (y = e_h), then two
+  // (y = (1 − t)e_h + t e_k, t mid-way in the interval where the doubles
+  // satisfy every condition); each is checked in intervals with y taken as
+  // exact. True only when certified.
+  bool certify_missed(const std::vector<std::array<FI, 3>>& gens) const {
+    const std::size_t m = beta.size(), n = gens.size();
+    if (m == 0 || m > 64 || n == 0) return false;
+    internal::Protect guard;
+    std::vector<FI> alpha(m * n);  // alpha[h·n + j] = a_h·g_j
+    for (std::size_t h = 0; h < m; ++h)
+      for (std::size_t j = 0; j < n; ++j)
+        alpha[h * n + j] = a[h][0] * gens[j][0] + a[h][1] * gens[j][1] + a[h][2] * gens[j][2];
+    for (std::size_t h = 0; h < m; ++h) {
+      bool ok = beta[h].inf() > 0;
+      for (std::size_t j = 0; ok && j < n; ++j) ok = alpha[h * n + j].sup() <= 0;
+      if (ok) return true;
+    }
+    auto mid = [](const FI& x) { return (x.inf() + x.sup()) / 2; };
+    for (std::size_t h = 0; h < m; ++h)
+      for (std::size_t k = h + 1; k < m; ++k) {
+        // f(t) = u + t·(v − u) ≤ 0 for each generator, > 0 for β.
+        double lo = 0, hi = 1;
+        auto restrict = [&](double u, double v, bool positive) {
+          if (positive) u = -u, v = -v;  // f > 0  ⇔  −f < 0
+          const double slope = v - u;
+          if (slope > 0)
+            hi = std::min(hi, -u / slope);
+          else if (slope < 0)
+            lo = std::max(lo, -u / slope);
+          else if (u > 0)
+            lo = 2;  // infeasible
+        };
+        for (std::size_t j = 0; j < n; ++j) restrict(mid(alpha[h * n + j]), mid(alpha[k * n + j]), false);
+        restrict(mid(beta[h]), mid(beta[k]), true);
+        if (!(lo < hi)) continue;
+        const double t = (lo + hi) / 2, s = 1 - t;
+        if (!(t >= 0) || !(s >= 0)) continue;
+        bool ok = (FI(s) * beta[h] + FI(t) * beta[k]).inf() > 0;
+        for (std::size_t j = 0; ok && j < n; ++j) ok = (FI(s) * alpha[h * n + j] + FI(t) * alpha[k * n + j]).sup() <= 0;
+        if (ok) return true;
+      }
+    return false;
+  }
+};
+
 // The guaranteed set G: a disjoint union of convex pieces.
 class GuaranteedTarget final : public RegionTarget {
  public:
-  GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {}
+  GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {
+    for (const auto& piece : G_.pieces) enclosures_.emplace_back(piece, b0_);
+  }
   const char* push_model() const override { return "step"; }
   const char* name() const override { return "G"; }
 
@@ -61,12 +130,16 @@ class GuaranteedTarget final : public RegionTarget {
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2* d_first, const Vec2* d_last,
                      RegionInterval* detail) override {
     if (!d_first) return false;
-    for (const auto& piece : G_.pieces) {
+    hit_gens_ = gens;
+    piece_hit_.assign(G_.pieces.size(), false);
+    for (std::size_t p = 0; p < G_.pieces.size(); ++p) {
+      const Polyhedron& piece = G_.pieces[p];
       std::vector<Magnitudes> T;
       bool all = true;
       for (const auto& g : gens) {
         T.push_back(ray_magnitudes(piece, b0_, g));
         all = all && !T.back().empty;
+        if (!T.back().empty) piece_hit_[p] = true;
       }
       if (!all) continue;
       if (detail) {
@@ -83,9 +156,27 @@ class GuaranteedTarget final : public RegionTarget {
 
   // G is the disjoint union of its pieces: the cone misses G iff it misses
   // every piece.
+  // A piece some generator's ray hits (known from contains_cone on the same
+  // generators) is not missed; otherwise an interval-certified Farkas
+  // certificate, else the exact LP.
   bool misses(const std::vector<VectorQ>& gens) override {
-    for (const auto& piece : G_.pieces)
-      if (!cone_misses_piece(b0_, stats, gens, piece)) return false;
+    const bool hits_known = hit_gens_ == gens;
+    std::vector<std::array<FI, 3>> fg;
+    if (!force_exact())
+      for (const auto& g : gens)
+        fg.push_back({internal::to_interval(g[0]), internal::to_interval(g[1]), internal::to_interval(g[2])});
+    for (std::size_t p = 0; p < G_.pieces.size(); ++p) {
+      if (hits_known && piece_hit_[p]) return false;
+      if (!force_exact()) {
+        const bool certified = enclosures_[p].certify_missed(fg);
+        internal::record_filter(FilterSite::kOutTest, certified);
+        if (certified) {
+          if (stats) ++stats->lp_tests;  // as the LP it replaces would count
+          continue;
+        }
+      }
+      if (!cone_misses_piece(b0_, stats, gens, G_.pieces[p])) return false;
+    }
     return true;
   }
 
@@ -121,6 +212,9 @@ class GuaranteedTarget final : public RegionTarget {
   const GuaranteedSet& G_;
   const SeatingSet& S_;
   VectorQ b0_;
+  std::vector<PieceEnclosure> enclosures_;
+  std::vector<VectorQ> hit_gens_;  // the generators of the last contains_cone
+  std::vector<bool> piece_hit_;    // per piece: some generator's ray hit it
 };
 
 }  // namespace

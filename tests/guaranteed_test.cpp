@@ -6,10 +6,12 @@
 #include <random>
 
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/lcp.h"
 #include "fixel/region.h"
+#include "fixel/region_target.h"
 #include "fixel/scene_json.h"
 #include "test_util.h"
 
@@ -222,6 +224,46 @@ GTEST_TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
     }
   EXPECT_GT(checked, 3000);
   std::cout << "[ info     ] " << split << " sampled rays meet G in more than one interval\n";
+}
+
+GTEST_TEST(GuaranteedRegion, ConeMissTestsAgreeWithTheExactLpAndConesMeetingGFallBackToIt) {
+  // Second method: the same target with the filters off (the exact LP per piece).
+  const Scene scene = scene_file("nonunique_part");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  const auto target = guaranteed_target(G, S, scene.background_impulse);
+  std::vector<VectorQ> wrenches;
+  for (const auto& piece : scene.body.boundary->pieces)
+    for (int k = 0; k < 6; ++k) {
+      const Rational s(2 * k + 1, 12);
+      const Vec2 T = piece.derivative(s), x = piece.point(s);
+      const Vec2 r{x.x - scene.body.p_AoCm_A.x, x.y - scene.body.p_AoCm_A.y};
+      wrenches.push_back(contact_wrench(r, {-T.y, T.x}, 3));
+      wrenches.push_back(contact_wrench(r, {-T.y + T.x / 3, T.x + T.y / 3}, 3));
+    }
+  reset_filter_stats();
+  int missed = 0, met = 0;
+  for (std::size_t i = 0; i < wrenches.size(); ++i)
+    for (std::size_t j = i + 1; j < wrenches.size(); j += 9) {
+      const std::vector<VectorQ> gens{wrenches[i], wrenches[j]};
+      const bool filtered = target->misses(gens);
+      bool exact;
+      {
+        ForceExactScope scope(true);
+        exact = target->misses(gens);
+      }
+      ASSERT_EQ(filtered, exact) << "generators " << i << ", " << j;
+      (filtered ? missed : met) += 1;
+    }
+  const FilterCounts out = filter_stats().at(FilterSite::kOutTest);
+  std::cout << "[ info     ] " << missed << " cones miss G, " << met << " meet it; out test certified " << out.certified
+            << ", exact LP " << out.fallbacks << "\n";
+  EXPECT_GT(missed, 0);
+  EXPECT_GT(met, 0);
+  EXPECT_GT(out.certified, 0);
+  // A cone that meets G has no Farkas certificate: at least the piece it
+  // meets went to the LP.
+  EXPECT_GE(out.fallbacks, met);
 }
 
 GTEST_TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {

@@ -17,7 +17,7 @@ enum class FilterSite {
                  ///< tableau; a fallback is one decided on exact tableau columns, or one whole
                  ///< run on the integer tableau when a pivot's interval held zero).
   kRayTest,      ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
-  kOutTest,      ///< Does a segment's wrench cone miss the seating set (before the exact LP).
+  kOutTest,      ///< Does a segment's wrench cone miss S, or one piece of G (before the exact LP).
   kOrientation,  ///< Signs of planar cross products (direction extremes).
   kCone,         ///< The extreme moments of a segment's tight wrench cone.
   kMembership,   ///< Side of a half-space a·p ≥ c or > c (S, G and polyhedron membership).
