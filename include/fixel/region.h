@@ -66,8 +66,9 @@ struct RegionInterval {
 
 /// Counters of a region computation.
 struct RegionStats {
-  long cone_tests = 0;      ///< Segment classifications (one per segment visited).
-  long lp_tests = 0;        ///< OUT tests past the ray shortcut (exact LP, or its interval-certified Farkas test).
+  long cone_tests = 0;  ///< Segment classifications (one per segment visited).
+  long lp_tests =
+      0;  ///< OUT tests past the ray shortcut, per piece of G (exact LP, or an interval-certified Farkas test).
   long point_tests = 0;     ///< Point tests (corners, samples).
   int depth = 0;            ///< Deepest subdivision level (0 = whole Bézier piece).
   Rational partial_length;  ///< Total parameter length left PARTIAL.
