@@ -6,7 +6,9 @@
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/region_exact.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/lcp.h"
 #include "fixel/progress.h"
 #include "fixel/region_target.h"
@@ -23,19 +25,26 @@ std::vector<EdgeFamily> families(const Rational& mu) {
 // Limiting tangent directions at the ends of a Bézier piece: the first
 // non-zero forward difference P_k − P_0 (resp. P_p − P_k).
 Vec2 start_tangent(const BezierPiece& p) {
-  for (std::size_t k = 1; k < p.control.size(); ++k)
-    if (!is_zero(sub(p.control[k], p.control[0]))) return sub(p.control[k], p.control[0]);
+  for (std::size_t k = 1; k < p.control.size(); ++k) {
+    Vec2 t = sub(p.control[k], p.control[0]);
+    if (!is_zero(t)) return t;
+  }
   return {0, 0};
 }
 Vec2 end_tangent(const BezierPiece& p) {
   const Vec2& last = p.control.back();
-  for (std::size_t k = p.control.size() - 1; k-- > 0;)
-    if (!is_zero(sub(last, p.control[k]))) return sub(last, p.control[k]);
+  for (std::size_t k = p.control.size() - 1; k-- > 0;) {
+    Vec2 t = sub(last, p.control[k]);
+    if (!is_zero(t)) return t;
+  }
   return {0, 0};
 }
 
-// A tangent discontinuity between consecutive pieces.
-bool is_corner(const Vec2& t_in, const Vec2& t_out) { return cross(t_in, t_out) != 0 || dot(t_in, t_out) < 0; }
+// A tangent discontinuity between consecutive pieces (the cross product's
+// sign filtered; the dot product only for exactly parallel tangents).
+bool is_corner(const Vec2& t_in, const Vec2& t_out) {
+  return internal::orientation_filtered(t_in, t_out) != 0 || dot(t_in, t_out) < 0;
+}
 
 // Push directions at a point with incoming and outgoing tangents (equal at
 // a smooth point): the extreme edge directions of all friction cones around
@@ -74,6 +83,18 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
   ++ctx.stats.cone_tests;
   RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
+  // OUT and partial from enclosures alone when the target answers on them;
+  // IN and anything undecided: the exact construction below.
+  if (ctx.method == ConeMethod::kTight && !force_exact())
+    if (internal::IntervalTarget* it = ctx.target.interval_target()) {
+      const internal::Quick q = internal::quick_segment(seg, ctx.scene.body.p_AoCm_A, ctx.mu, families(ctx.mu), *it);
+      internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
+      if (q == internal::Quick::kPartial) return out;
+      if (q == internal::Quick::kOut) {
+        out.status = RegionStatus::kOut;
+        return out;
+      }
+    }
   // The tight cone needs no hull (min/max over all control points is the
   // same); the paper cone's ⊥-angle test wants the polygon's vertices.
   const SegmentBounds bounds = segment_bounds(seg, ctx.method == ConeMethod::kPaper);
@@ -181,6 +202,18 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>&
       t_in = t_out = piece.derivative(piece.local(u));
       point = piece.point(piece.local(u));
     }
+    if (!force_exact())
+      if (internal::IntervalTarget* it = ctx.target.interval_target()) {
+        const internal::Quick q =
+            internal::quick_point(t_in, t_out, point, ctx.scene.body.p_AoCm_A, ctx.mu, families(ctx.mu), *it);
+        internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
+        if (q == internal::Quick::kPartial) return RegionStatus::kPartial;
+        if (q == internal::Quick::kOut) {
+          ++ctx.stats.point_tests;
+          if (mags) *mags = Magnitudes{};
+          return RegionStatus::kOut;
+        }
+      }
     if (is_zero(t_in) || is_zero(t_out)) return RegionStatus::kPartial;  // undefined normal (cusp)
     Vec2 first, last;
     if (!push_extremes(t_in, t_out, ctx.mu, first, last)) return RegionStatus::kPartial;  // fan of π or more

@@ -11,6 +11,7 @@
 #include "fixel/internal/exact_lp.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/polynomial.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/internal/region_targets.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
@@ -170,7 +171,7 @@ struct FilteredHalfspaces {
 
 // The one-step seating set S (paper §4): convex, so a cone reaches it iff
 // every generator does.
-class SeatingTarget final : public RegionTarget {
+class SeatingTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
   SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0), filtered_(S.halfspaces, b0) {
     for (const auto& h : S.halfspaces) beta_.push_back(h.c - h.a.dot(b0));
@@ -204,6 +205,13 @@ class SeatingTarget final : public RegionTarget {
     return m;
   }
   const char* push_model() const override { return "step"; }
+  internal::IntervalTarget* interval_target() override { return this; }
+  int interval_ray_hits(const internal::FGen& g) const override { return filtered_.ray_hits(g); }
+  bool certify_misses(const std::vector<internal::FGen>& gens) override {
+    if (!filtered_.certify_infeasible(gens)) return false;
+    if (stats) ++stats->lp_tests;
+    return true;
+  }
   const char* name() const override { return "S"; }
 
   // Does the ray of g meet S: the interval filter, then the exact ray test.
@@ -226,8 +234,12 @@ class SeatingTarget final : public RegionTarget {
     // Every ray hits: the exact magnitudes (they are part of the answer).
     std::vector<Magnitudes> T;
     bool all_half = true;
-    for (const auto& g : gens) {
-      T.push_back(magnitudes(g));
+    for (std::size_t j = 0; j < gens.size(); ++j) {
+      // Equal generators (a straight piece's tight cone repeats its pair)
+      // share their magnitudes.
+      std::size_t i = 0;
+      while (i < j && gens[i] != gens[j]) ++i;
+      T.push_back(i < j ? T[i] : magnitudes(gens[j]));
       if (T.back().empty) throw InternalError("region: a certified ray hit has no exact magnitudes");
       all_half = all_half && T.back().half_line();
     }

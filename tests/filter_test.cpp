@@ -12,6 +12,7 @@
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
+#include "fixel/scene_json.h"
 #include "fixel/seat_report.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
@@ -234,6 +235,37 @@ GTEST_TEST(Filter, SustainedMembershipAgreesWithTheExactJamAndEscapeTests) {
   EXPECT_GT(in, 0);  // both answers occur
   EXPECT_LT(in, 200);
   EXPECT_GT(filter_stats().at(FilterSite::kJam).certified, 0);
+}
+
+// The region's interval pre-test (FilterSite::kRegionTest) decides OUT and
+// partial segments and corners from enclosures; a piece that is exactly
+// straight with coordinates in fifths and thirds (not doubles) has legs
+// whose orientations the enclosures cannot certify, so its pre-test falls
+// back to the exact path, and the answers stay identical.
+GTEST_TEST(Filter, AStraightPieceInThirdsFallsBackFromTheRegionPreTest) {
+  const std::string scene_json = R"({"name": "flat bottom", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"], "boundary": [{"type": "bspline", "degree": 3,
+      "knots": ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13", "14", "15", "16", "17", "18"],
+      "control_points": [["-2", "1"], ["-11/5", "0"], ["-2", "-1"], ["-1", "-9/5"], ["-1/3", "-9/5"], ["1/3", "-9/5"],
+        ["1", "-9/5"], ["2", "-1"], ["11/5", "0"], ["2", "1"], ["1", "9/5"], ["-1", "9/5"], ["-2", "1"], ["-11/5", "0"],
+        ["-2", "-1"]]}]},
+    "fixels": [{"point": ["-32/15", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},
+      {"point": ["0", "-2"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},
+      {"point": ["5/6", "-5/3"], "normal": ["-7/25", "24/25"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],
+    "pusher": {"mu": "0"}})";
+  const Scene scene = parse_scene(scene_json, "flat bottom");
+  const SeatingSet S = seating_set(scene);
+  for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+    RegionOptions opt;
+    opt.resolution = Rational(1, 64);
+    opt.pusher_mu = mu;
+    reset_filter_stats();
+    const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+    EXPECT_GT(pre.certified, 10) << "mu " << to_string(mu);
+    EXPECT_GE(pre.fallbacks, 1) << "mu " << to_string(mu);
+    EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); })) << "mu " << to_string(mu);
+  }
 }
 
 GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {

@@ -1,0 +1,54 @@
+#pragma once
+// Interval pre-tests of the pushing region (docs/performance.md, issue 12):
+// a segment's tight wrench cone and a point's push wrenches are built as
+// interval enclosures straight from the control points, with every decision
+// of the exact construction (zero legs, direction extremes, spans) taken on a
+// certified sign. A target that answers ray and OUT tests on enclosures then
+// decides OUT and partial without one exact rational; IN (whose magnitudes
+// are part of the answer) and anything undecided go to the exact path, which
+// recomputes from scratch, so no answer depends on which path ran.
+
+#include <array>
+#include <vector>
+
+#include "fixel/internal/filtered.h"
+#include "fixel/region.h"
+#include "fixel/wrench_cone.h"
+
+namespace fixel::internal {
+
+// A wrench generator (f_x, f_y, moment about the centre of mass) enclosed.
+using FGen = std::array<FI, 3>;
+
+// What a target answers on enclosures. Its owner promises: contains_cone is
+// true iff every generator's ray hits, test_point is contains_cone (IN or
+// OUT), and misses is true iff no generator's ray hits and the LP proves the
+// cone misses (the Farkas certificate below is one such proof).
+class IntervalTarget {
+ public:
+  virtual ~IntervalTarget() = default;
+  // Does the ray of g meet the target: 1 hit, 0 miss, kUndecided.
+  virtual int interval_ray_hits(const FGen& g) const = 0;
+  // True only when certified that cone(gens) misses the target; then the
+  // target counts the LP test it stands for (RegionStats::lp_tests).
+  virtual bool certify_misses(const std::vector<FGen>& gens) = 0;
+};
+
+// The pre-test's answer.
+enum class Quick {
+  kIn,       // certified IN: the exact path runs for the magnitudes
+  kOut,      // certified OUT (a segment: the LP test is counted)
+  kPartial,  // certified partial (a segment that must split, a point with no defined fan)
+  kUnknown,  // some sign undecided: the exact path decides
+};
+
+// The tight-cone segment test of classify (region.cpp) for `families` of
+// push directions with pusher friction mu, centre of mass c.
+Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
+                    IntervalTarget& target);
+
+// The point test of status_at: tangents t_in, t_out at `point`.
+Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
+                  const std::vector<EdgeFamily>& families, IntervalTarget& target);
+
+}  // namespace fixel::internal

@@ -1,0 +1,189 @@
+// Interval pre-tests of the pushing region (internal/region_filter.h): the
+// decisions of segment_bounds, segment_wrench_cone (tight), push_extremes
+// and the target's ray and OUT tests, each on a certified sign of an
+// enclosure; the first sign the enclosures cannot certify abandons the
+// pre-test (Quick::kUnknown) and the exact path decides.
+#include "fixel/internal/region_filter.h"
+
+#include <algorithm>
+
+namespace fixel::internal {
+
+namespace {
+
+// Thrown at the first uncertified sign; caught by the two entry points.
+struct Undecided {};
+
+int sign_of(const FI& x) {
+  const int s = certain_sign(x);
+  if (s == kUndecided) throw Undecided{};
+  return s;
+}
+
+FI fcross(const FVec2& a, const FVec2& b) { return a.x * b.y - a.y * b.x; }
+FI fdot(const FVec2& a, const FVec2& b) { return a.x * b.x + a.y * b.y; }
+FVec2 fsub(const FVec2& a, const FVec2& b) { return {a.x - b.x, a.y - b.y}; }
+FVec2 frot90(const FVec2& v) { return {-v.y, v.x}; }
+
+// is_zero(v), certified.
+bool is_zero_f(const FVec2& v) {
+  const int sx = certain_sign(v.x), sy = certain_sign(v.y);
+  if ((sx != 0 && sx != kUndecided) || (sy != 0 && sy != kUndecided)) return false;
+  if (sx == 0 && sy == 0) return true;
+  throw Undecided{};
+}
+
+// push_direction (wrench_cone.cpp) on enclosures, the same formula.
+FVec2 fpush(const FVec2& tangent, EdgeFamily family, const FI& mu) {
+  const FVec2 n = frot90(tangent), t = frot90(n);
+  switch (family) {
+    case EdgeFamily::kNormal:
+      return n;
+    case EdgeFamily::kPlus:
+      return {n.x + mu * t.x, n.y + mu * t.y};
+    case EdgeFamily::kMinus:
+    case EdgeFamily::kWholeCone:
+      return {n.x - mu * t.x, n.y - mu * t.y};
+  }
+  return n;
+}
+
+// direction_extremes (wrench_cone.cpp) on enclosures: the same decisions in
+// the same order; the indices of the extremes. False when not pointed.
+bool extremes(const std::vector<FVec2>& v, std::size_t& first, std::size_t& last) {
+  auto orient = [&](std::size_t i, std::size_t j) { return i == j ? 0 : sign_of(fcross(v[i], v[j])); };
+  int s = -1, e = -1;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    bool all_ccw = true, all_cw = true;
+    for (std::size_t j = 0; j < v.size() && (all_ccw || all_cw); ++j) {
+      const int o = orient(i, j);
+      all_ccw = all_ccw && o >= 0;
+      all_cw = all_cw && o <= 0;
+    }
+    if (all_ccw && s < 0) s = static_cast<int>(i);
+    if (all_cw && e < 0) e = static_cast<int>(i);
+  }
+  if (s < 0 || e < 0) return false;
+  const FVec2 &f = v[s], &l = v[e];
+  const int c = orient(s, e);
+  if (c < 0 || (c == 0 && sign_of(fdot(f, l)) < 0)) return false;
+  for (std::size_t j = 0; j < v.size(); ++j) {
+    const int a = orient(s, j);
+    bool inside;
+    if (c == 0)
+      inside = a == 0 && sign_of(fdot(f, v[j])) > 0;
+    else
+      inside = a >= 0 && orient(j, e) >= 0;
+    if (!inside && !(c == 0 && a == 0 && sign_of(fdot(f, v[j])) > 0)) return false;
+  }
+  first = static_cast<std::size_t>(s);
+  last = static_cast<std::size_t>(e);
+  return true;
+}
+
+// min_k and max_k of (P_k − c) ⊗ d enclosed (the tight cone's moments; the
+// exact path takes the same extremes of the same values).
+void moment_range(const std::vector<FVec2>& r, const FVec2& d, FI& lo, FI& hi) {
+  double lo_inf = 0, lo_sup = 0, hi_inf = 0, hi_sup = 0;
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const FI m = fcross(r[k], d);
+    lo_inf = k ? std::min(lo_inf, m.inf()) : m.inf();
+    lo_sup = k ? std::min(lo_sup, m.sup()) : m.sup();
+    hi_inf = k ? std::max(hi_inf, m.inf()) : m.inf();
+    hi_sup = k ? std::max(hi_sup, m.sup()) : m.sup();
+  }
+  lo = FI(lo_inf, lo_sup);
+  hi = FI(hi_inf, hi_sup);
+}
+
+// The ray tests of every generator; kIn when all hit, else the OUT tests of
+// each cone in order (as classify asks target.misses), else partial.
+Quick decide(const std::vector<std::vector<FGen>>& cones, IntervalTarget& target, bool segment) {
+  std::vector<std::vector<int>> hits(cones.size());
+  bool all = true;
+  for (std::size_t c = 0; c < cones.size(); ++c)
+    for (const auto& g : cones[c]) {
+      const int h = target.interval_ray_hits(g);
+      if (h == kUndecided) throw Undecided{};
+      hits[c].push_back(h);
+      all = all && h == 1;
+    }
+  if (all) return Quick::kIn;
+  if (!segment) return Quick::kOut;
+  for (std::size_t c = 0; c < cones.size(); ++c) {
+    if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
+    if (target.certify_misses(cones[c])) return Quick::kOut;
+    throw Undecided{};  // the exact LP decides
+  }
+  return Quick::kPartial;
+}
+
+}  // namespace
+
+Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
+                    IntervalTarget& target) {
+  try {
+    std::vector<std::vector<FGen>> cones;
+    {
+      Protect guard;
+      const FVec2 fc = to_interval(c);
+      const FI fmu = to_interval(mu);
+      std::vector<FVec2> P, r, legs;
+      for (const auto& p : seg.control) {
+        P.push_back(to_interval(p));
+        r.push_back(fsub(P.back(), fc));
+      }
+      for (std::size_t k = 0; k + 1 < P.size(); ++k) {
+        const FVec2 leg = fsub(P[k + 1], P[k]);
+        if (!is_zero_f(leg)) legs.push_back(leg);
+      }
+      if (legs.empty()) throw Undecided{};  // the exact path reports the degenerate segment
+      std::size_t s = 0, e = 0;
+      if (!extremes(legs, s, e)) return Quick::kPartial;  // not pointed: split
+      for (const EdgeFamily f : families) {
+        const FVec2 ds = fpush(legs[s], f, fmu);
+        const FVec2 de = fpush(legs[e], f == EdgeFamily::kWholeCone ? EdgeFamily::kPlus : f, fmu);
+        const int span = sign_of(fcross(ds, de));
+        if (span < 0 || (span == 0 && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
+        std::vector<FGen> gens;
+        for (const FVec2& d : {ds, de}) {
+          FI lo, hi;
+          moment_range(r, d, lo, hi);
+          gens.push_back({d.x, d.y, lo});
+          gens.push_back({d.x, d.y, hi});
+        }
+        cones.push_back(std::move(gens));
+      }
+    }
+    return decide(cones, target, true);
+  } catch (const Undecided&) {
+    return Quick::kUnknown;
+  }
+}
+
+Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
+                  const std::vector<EdgeFamily>& families, IntervalTarget& target) {
+  try {
+    std::vector<std::vector<FGen>> cones(1);
+    {
+      Protect guard;
+      const FVec2 ti = to_interval(t_in), to = to_interval(t_out);
+      if (is_zero_f(ti) || is_zero_f(to)) return Quick::kPartial;  // undefined normal (cusp)
+      const FI fmu = to_interval(mu);
+      std::vector<FVec2> dirs;
+      for (const EdgeFamily f : families) {
+        dirs.push_back(fpush(ti, f, fmu));
+        dirs.push_back(fpush(to, f, fmu));
+      }
+      std::size_t s = 0, e = 0;
+      if (!extremes(dirs, s, e)) return Quick::kPartial;  // fan of π or more
+      const FVec2 r = fsub(to_interval(point), to_interval(c));
+      for (const std::size_t k : {s, e}) cones[0].push_back({dirs[k].x, dirs[k].y, fcross(r, dirs[k])});
+    }
+    return decide(cones, target, false);
+  } catch (const Undecided&) {
+    return Quick::kUnknown;
+  }
+}
+
+}  // namespace fixel::internal
