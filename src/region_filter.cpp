@@ -96,6 +96,55 @@ void moment_range(const std::vector<FVec2>& r, const FVec2& d, FI& lo, FI& hi) {
   hi = FI(hi_inf, hi_sup);
 }
 
+FI fmax(const FI& a, const FI& b) { return FI(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
+FI fmin(const FI& a, const FI& b) { return FI(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup())); }
+
+// cos_half_angle_lower(a, b) (wrench_cone.cpp) enclosed. With C = cos(Δ/2)
+// exact: its answer c passed the exact test c <= C; it starts at the
+// double estimate floored to 2^-20 (within 10^-6 + 2^-20 below C: the
+// estimate's error is far below 10^-6 once a, b are normalised), and each
+// step down from a c' > C lands at c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20.
+// Certified only when that lower end is positive (then c > 0).
+bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
+  const FI Q = fdot(a, a) * fdot(b, b);
+  if (!(Q.inf() > 0)) return false;
+  const FI h = (1 + fdot(a, b) / CGAL::sqrt(Q)) / 2;
+  if (!(h.sup() > 0)) return false;
+  const FI C = CGAL::sqrt(FI(std::max(0.0, h.inf()), h.sup()));
+  const FI step(1.0 / 1048576);
+  const double low = std::min((C - FI(1e-6) - step).inf(), (C * FI(1 - 1.0 / 1024) - step).inf());
+  if (!(low > 0) || !(C.sup() >= low)) return false;
+  out = FI(low, C.sup());
+  return true;
+}
+
+// common_magnitudes (region_targets.cpp) enclosed: lo = max_j T_j.lo ·
+// sqrt_upper(|f_j|²), hi = min_j T_j.hi · sqrt_lower(|f_j|²) · c, where
+// sqrt_upper(x) ∈ [√x, √x + 2^-20] and sqrt_lower(x) ∈ [√x − 2^-20, √x].
+bool common_bounds(const std::vector<FGen>& gens, const FVec2& first, const FVec2& last, const IntervalTarget& target,
+                   MagnitudeBounds& m) {
+  Protect guard;
+  FI c;
+  if (!cos_half_bounds(first, last, c)) return false;
+  const FI step(1.0 / 1048576);
+  m = MagnitudeBounds{};
+  m.lo = FI(0);
+  for (const auto& g : gens) {
+    FMagnitudes T;
+    if (!target.interval_magnitudes(g, T)) return false;
+    const FI f = CGAL::sqrt(g[0] * g[0] + g[1] * g[1]);
+    m.lo = fmax(m.lo, T.lo * FI(f.inf(), (f + step).sup()));
+    m.lo_closed = m.lo_closed && T.lo_closed;
+    m.all_half = m.all_half && !T.has_hi;
+    if (T.has_hi) {
+      const FI hi = T.hi * FI(std::max(0.0, (f - step).inf()), f.sup()) * c;
+      m.hi = m.has_hi ? fmin(m.hi, hi) : hi;
+      m.has_hi = true;
+    }
+  }
+  return !m.has_hi || m.hi.inf() > m.lo.sup();  // certainly not crossing
+}
+
 // The ray tests of every generator; kIn when all hit, else the OUT tests of
 // each cone in order (as classify asks target.misses), else partial.
 Quick decide(const std::vector<std::vector<FGen>>& cones, IntervalTarget& target, bool segment) {
@@ -118,12 +167,23 @@ Quick decide(const std::vector<std::vector<FGen>>& cones, IntervalTarget& target
   return Quick::kPartial;
 }
 
+// On kIn: the enclosure of the answer's magnitudes (force parts spanning
+// first to last), when certified.
+void in_bounds(const std::vector<std::vector<FGen>>& cones, const FVec2& first, const FVec2& last,
+               const IntervalTarget& target, std::optional<MagnitudeBounds>* bounds) {
+  std::vector<FGen> gens;
+  for (const auto& cone : cones) gens.insert(gens.end(), cone.begin(), cone.end());
+  MagnitudeBounds m;
+  if (common_bounds(gens, first, last, target, m)) *bounds = m;
+}
+
 }  // namespace
 
 Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
-                    IntervalTarget& target) {
+                    IntervalTarget& target, std::optional<MagnitudeBounds>* bounds) {
+  std::vector<std::vector<FGen>> cones;
+  std::vector<FVec2> forces;
   try {
-    std::vector<std::vector<FGen>> cones;
     {
       Protect guard;
       const FVec2 fc = to_interval(c);
@@ -145,6 +205,8 @@ Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, c
         const FVec2 de = fpush(legs[e], f == EdgeFamily::kWholeCone ? EdgeFamily::kPlus : f, fmu);
         const int span = sign_of(fcross(ds, de));
         if (span < 0 || (span == 0 && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
+        forces.push_back(ds);
+        forces.push_back(de);
         std::vector<FGen> gens;
         for (const FVec2& d : {ds, de}) {
           FI lo, hi;
@@ -155,16 +217,30 @@ Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, c
         cones.push_back(std::move(gens));
       }
     }
-    return decide(cones, target, true);
+    const Quick q = decide(cones, target, true);
+    if (q != Quick::kIn || !bounds) return q;
   } catch (const Undecided&) {
     return Quick::kUnknown;
   }
+  try {  // IN is decided; the bounds are optional
+    std::size_t s = 0, e = 0;
+    bool pointed = false;
+    {
+      Protect guard;
+      pointed = extremes(forces, s, e);
+    }
+    if (pointed) in_bounds(cones, forces[s], forces[e], target, bounds);
+  } catch (const Undecided&) {
+  }
+  return Quick::kIn;
 }
 
 Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
-                  const std::vector<EdgeFamily>& families, IntervalTarget& target) {
+                  const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                  std::optional<MagnitudeBounds>* bounds) {
+  std::vector<std::vector<FGen>> cones(1);
+  FVec2 first, last;
   try {
-    std::vector<std::vector<FGen>> cones(1);
     {
       Protect guard;
       const FVec2 ti = to_interval(t_in), to = to_interval(t_out);
@@ -179,11 +255,19 @@ Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const 
       if (!extremes(dirs, s, e)) return Quick::kPartial;  // fan of π or more
       const FVec2 r = fsub(to_interval(point), to_interval(c));
       for (const std::size_t k : {s, e}) cones[0].push_back({dirs[k].x, dirs[k].y, fcross(r, dirs[k])});
+      first = dirs[s];
+      last = dirs[e];
     }
-    return decide(cones, target, false);
+    const Quick q = decide(cones, target, false);
+    if (q != Quick::kIn || !bounds) return q;
   } catch (const Undecided&) {
     return Quick::kUnknown;
   }
+  try {
+    in_bounds(cones, first, last, target, bounds);
+  } catch (const Undecided&) {
+  }
+  return Quick::kIn;
 }
 
 }  // namespace fixel::internal

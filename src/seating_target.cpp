@@ -110,6 +110,30 @@ struct FilteredHalfspaces {
     return undecided ? kUndecided : 1;
   }
 
+  // T(g) of ray_magnitudes enclosed (see SeatingTarget::magnitudes): lo the
+  // largest β_k/α_k over α_k > 0 (closed iff one has β_k > 0), hi the
+  // smallest over α_k < 0. False when a sign is undecided or T may be empty.
+  bool magnitudes(const std::array<FI, 3>& g, internal::FMagnitudes& T) const {
+    internal::Protect guard;
+    T = internal::FMagnitudes{};
+    T.lo = FI(0);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      const FI al = alpha(k, g);
+      const int sa = certain_sign(al), sb = certain_sign(beta[k]);
+      if (sa == kUndecided || sb == kUndecided || (sa == 0 && sb > 0)) return false;
+      if (sa > 0) {
+        const FI v = beta[k] / al;
+        T.lo = FI(std::max(T.lo.inf(), v.inf()), std::max(T.lo.sup(), v.sup()));
+        T.lo_closed = T.lo_closed || sb > 0;
+      } else if (sa < 0) {
+        const FI v = beta[k] / al;
+        T.hi = T.has_hi ? FI(std::min(T.hi.inf(), v.inf()), std::min(T.hi.sup(), v.sup())) : v;
+        T.has_hi = true;
+      }
+    }
+    return !T.has_hi || T.hi.inf() > T.lo.sup();
+  }
+
   // A Farkas certificate that no μ >= 0 has a_k·(b0 + Σ μ_j g_j) ≥ c_k for
   // every k: y >= 0 with Σ_k y_k a_k·g_j <= 0 for every j and y·β > 0. A
   // candidate y is found in doubles (three halfspaces: the vertices of the
@@ -207,6 +231,9 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
   const char* push_model() const override { return "step"; }
   internal::IntervalTarget* interval_target() override { return this; }
   int interval_ray_hits(const internal::FGen& g) const override { return filtered_.ray_hits(g); }
+  bool interval_magnitudes(const internal::FGen& g, internal::FMagnitudes& T) const override {
+    return filtered_.magnitudes(g, T);
+  }
   bool certify_misses(const std::vector<internal::FGen>& gens) override {
     if (!filtered_.certify_infeasible(gens)) return false;
     if (stats) ++stats->lp_tests;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <regex>
 
@@ -266,6 +268,45 @@ GTEST_TEST(Filter, AStraightPieceInThirdsFallsBackFromTheRegionPreTest) {
     EXPECT_GE(pre.fallbacks, 1) << "mu " << to_string(mu);
     EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); })) << "mu " << to_string(mu);
   }
+}
+
+// IN answers certified on enclosures keep their exact magnitudes waiting
+// until the merge, which computes only those that can decide a run's ends:
+// a polyline ellipse (long IN runs of straight pieces and corners) gives
+// the same JSON as the exact path, merged and unmerged, with and without
+// pusher friction.
+GTEST_TEST(Filter, DeferredMagnitudesOfLongInRunsGiveIdenticalJson) {
+  std::string pts;
+  const int edges = 400;
+  for (int k = 0; k <= edges; ++k) {
+    const double phi = 2 * M_PI * (k % edges) / edges;
+    auto grid = [](double x) { return "\"" + std::to_string(std::llround(x * 1048576.0)) + "/1048576\""; };
+    pts += (k ? ", [" : "[") + grid(2 * std::cos(phi)) + ", " + grid(std::sin(phi)) + "]";
+  }
+  const Scene scene = parse_scene(
+      R"({"name": "ellipse", "time_step": "1", "body": {"dof": 3, "velocity": ["0", "0", "0"], "boundary": [)"
+      R"({"type": "polyline", "points": [)" +
+          pts +
+          R"(]}]}, "fixels": [{"point": ["-2", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},)"
+          R"({"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},)"
+          R"({"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],)"
+          R"( "pusher": {"mu": "0"}})",
+      "ellipse");
+  const SeatingSet S = seating_set(scene);
+  for (const Rational& mu : {Rational(0), Rational(1, 10)})
+    for (const bool merge : {true, false}) {
+      RegionOptions opt;
+      opt.pusher_mu = mu;
+      opt.merge = merge;
+      const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+      EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); }))
+          << "mu " << to_string(mu) << " merge " << merge;
+      const Region r = compute_region(scene, S, opt);
+      EXPECT_GT(
+          std::count_if(r.intervals.begin(), r.intervals.end(),
+                        [](const RegionInterval& i) { return i.status == RegionStatus::kIn && !i.magnitudes.empty; }),
+          0);
+    }
 }
 
 GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {

@@ -9,6 +9,7 @@
 // recomputes from scratch, so no answer depends on which path ran.
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "fixel/internal/filtered.h"
@@ -19,6 +20,16 @@ namespace fixel::internal {
 
 // A wrench generator (f_x, f_y, moment about the centre of mass) enclosed.
 using FGen = std::array<FI, 3>;
+
+// Enclosure of a target's exact ray magnitudes T(g) = {τ > 0 : b0 + τ g in
+// the target}, certified non-empty: lo (closed or open), hi when bounded
+// (then closed).
+struct FMagnitudes {
+  FI lo;
+  bool lo_closed = false;
+  bool has_hi = false;
+  FI hi;
+};
 
 // What a target answers on enclosures. Its owner promises: contains_cone is
 // true iff every generator's ray hits, test_point is contains_cone (IN or
@@ -32,6 +43,20 @@ class IntervalTarget {
   // True only when certified that cone(gens) misses the target; then the
   // target counts the LP test it stands for (RegionStats::lp_tests).
   virtual bool certify_misses(const std::vector<FGen>& gens) = 0;
+  // T(g) enclosed; false when a sign is undecided or T(g) may be empty. The
+  // owner's contains_cone reports common_magnitudes (region_targets.h) of
+  // these T and half_line = no T has an upper end.
+  virtual bool interval_magnitudes(const FGen& g, FMagnitudes& out) const = 0;
+};
+
+// Enclosure of the magnitudes an IN answer reports (certified non-empty).
+struct MagnitudeBounds {
+  FI lo;
+  bool lo_closed = true;
+  bool has_hi = false;
+  FI hi;
+  bool hi_closed = true;
+  bool all_half = true;  // no generator's T(g) has an upper end
 };
 
 // The pre-test's answer.
@@ -43,12 +68,15 @@ enum class Quick {
 };
 
 // The tight-cone segment test of classify (region.cpp) for `families` of
-// push directions with pusher friction mu, centre of mass c.
+// push directions with pusher friction mu, centre of mass c. On kIn,
+// `bounds` (if given) gets the enclosure of the answer's magnitudes when it
+// can be certified.
 Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
-                    IntervalTarget& target);
+                    IntervalTarget& target, std::optional<MagnitudeBounds>* bounds = nullptr);
 
 // The point test of status_at: tangents t_in, t_out at `point`.
 Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
-                  const std::vector<EdgeFamily>& families, IntervalTarget& target);
+                  const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                  std::optional<MagnitudeBounds>* bounds = nullptr);
 
 }  // namespace fixel::internal
