@@ -166,22 +166,22 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
     const bool at_start = u == piece.u0, inside = u > piece.u0 && u < piece.u1;
     const bool at_curve_end = u == piece.u1 && (k + 1 == b.pieces.size() || b.pieces[k + 1].curve != curve);
     if (!at_start && !inside && !at_curve_end) continue;
-    Vec2 t_in, t_out;
-    Vec2 point;
-    if (at_start || at_curve_end) {
-      const internal::Join& j = js[at_start ? k : (k + 1) % b.pieces.size()];
-      t_in = j.t_in;
-      t_out = j.t_out;
-      point = at_start ? piece.control.front() : piece.control.back();
-    } else {
-      t_in = t_out = piece.derivative(piece.local(u));
-      point = piece.point(piece.local(u));
-    }
+    // At a piece start the join has the tangents' enclosures; the exact
+    // tangents are made only when the exact path needs them.
+    const internal::Join* j = at_start || at_curve_end ? &js[at_start ? k : (k + 1) % b.pieces.size()] : nullptr;
+    const Vec2 point = j ? (at_start ? piece.control.front() : piece.control.back()) : piece.point(piece.local(u));
+    const Vec2 t = j ? Vec2{} : piece.derivative(piece.local(u));
+    auto tangents = [&b, j, t](Vec2& t_in, Vec2& t_out) {
+      t_in = j ? internal::end_tangent(b.pieces[j->prev]) : t;
+      t_out = j ? internal::start_tangent(b.pieces[j->next]) : t;
+    };
     if (!force_exact())
       if (internal::IntervalTarget* it = ctx.target.interval_target()) {
         std::optional<internal::MagnitudeBounds> bounds;
-        const internal::Quick q = internal::quick_point(t_in, t_out, point, ctx.scene.body.p_AoCm_A, ctx.mu,
-                                                        families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
+        const internal::FVec2 ft = j ? internal::FVec2{} : internal::to_interval(t);
+        const internal::Quick q =
+            internal::quick_point(j ? j->t_in : ft, j ? j->t_out : ft, point, ctx.scene.body.p_AoCm_A, ctx.mu,
+                                  families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
         internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
         if (q == internal::Quick::kPartial) return RegionStatus::kPartial;
         if (q == internal::Quick::kOut) {
@@ -192,10 +192,11 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
         if (q == internal::Quick::kIn && bounds && mags) {
           ++ctx.stats.point_tests;
           *mags = internal::neutral_magnitudes();
-          const Vec2 r = sub(point, ctx.scene.body.p_AoCm_A);
           ctx.deferred->push_back(
-              {kUnplaced, *bounds, [&ctx, t_in, t_out, r] {
-                 Vec2 first, last;
+              {kUnplaced, *bounds, [&ctx, tangents, point] {
+                 Vec2 t_in, t_out, first, last;
+                 tangents(t_in, t_out);
+                 const Vec2 r = sub(point, ctx.scene.body.p_AoCm_A);
                  Magnitudes m;
                  if (!push_extremes(t_in, t_out, ctx.mu, first, last) ||
                      ctx.target.test_point({contact_wrench(r, first, 3), contact_wrench(r, last, 3)}, first, last, &m,
@@ -206,6 +207,8 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
           return RegionStatus::kIn;
         }
       }
+    Vec2 t_in, t_out;
+    tangents(t_in, t_out);
     if (is_zero(t_in) || is_zero(t_out)) return RegionStatus::kPartial;  // undefined normal (cusp)
     Vec2 first, last;
     if (!push_extremes(t_in, t_out, ctx.mu, first, last)) return RegionStatus::kPartial;  // fan of π or more
@@ -265,6 +268,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   target.stats = &ctx.stats;
   const std::vector<internal::Join> js = internal::joins(b);
   std::vector<RegionInterval> raw;
+  raw.reserve(2 * b.pieces.size());  // a corner and a segment per piece when nothing splits
   std::vector<internal::Deferred> deferred;
   if (!options.exact) ctx.deferred = &deferred;
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {

@@ -235,7 +235,7 @@ Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, c
   return Quick::kIn;
 }
 
-Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
+Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
                   const std::vector<EdgeFamily>& families, IntervalTarget& target,
                   std::optional<MagnitudeBounds>* bounds) {
   std::vector<std::vector<FGen>> cones(1);
@@ -243,7 +243,7 @@ Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const 
   try {
     {
       Protect guard;
-      const FVec2 ti = to_interval(t_in), to = to_interval(t_out);
+      const FVec2 &ti = t_in, &to = t_out;
       if (is_zero_f(ti) || is_zero_f(to)) return Quick::kPartial;  // undefined normal (cusp)
       const FI fmu = to_interval(mu);
       std::vector<FVec2> dirs;

@@ -1,5 +1,6 @@
 // Where region intervals are on the part: exact end points, and display
 // figures (arc length, push direction) for reports.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -27,9 +28,18 @@ Hodograph hodograph(const BezierPiece& piece) {
 
 // Speed |B'(s)| in metres per unit of local parameter: de Casteljau on the
 // hodograph (display).
-double speed(Hodograph d, double s) {
-  const int n = static_cast<int>(d.size());
+double speed(const Hodograph& h, double s) {
+  const int n = static_cast<int>(h.size());
   if (n < 1) return 0;
+  std::array<std::array<double, 2>, 8> small;  // no allocation for degree <= 8
+  Hodograph large;
+  std::array<double, 2>* d = small.data();
+  if (n > 8) {
+    large = h;
+    d = large.data();
+  } else {
+    std::copy(h.begin(), h.end(), small.begin());
+  }
   for (int r = 1; r < n; ++r)
     for (int k = 0; k + r < n; ++k) d[k] = {(1 - s) * d[k][0] + s * d[k + 1][0], (1 - s) * d[k][1] + s * d[k + 1][1]};
   return std::hypot(d[0][0], d[0][1]);

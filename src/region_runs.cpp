@@ -8,10 +8,6 @@
 
 namespace fixel::internal {
 
-namespace {
-
-// Limiting tangent directions at the ends of a Bézier piece: the first
-// non-zero forward difference P_k − P_0 (resp. P_p − P_k).
 Vec2 start_tangent(const BezierPiece& p) {
   for (std::size_t k = 1; k < p.control.size(); ++k) {
     Vec2 t = sub(p.control[k], p.control[0]);
@@ -28,21 +24,66 @@ Vec2 end_tangent(const BezierPiece& p) {
   return {0, 0};
 }
 
-// A tangent discontinuity between consecutive pieces (the cross product's
-// sign filtered; the dot product only for exactly parallel tangents).
-bool is_corner(const Vec2& t_in, const Vec2& t_out) {
-  return internal::orientation_filtered(t_in, t_out) != 0 || dot(t_in, t_out) < 0;
+namespace {
+
+// Whether the enclosure certainly excludes 0 (1), is the point 0 (0), or
+// cannot tell (kUndecided).
+int nonzero(const FVec2& v) {
+  const int sx = certain_sign(v.x), sy = certain_sign(v.y);
+  if ((sx != 0 && sx != kUndecided) || (sy != 0 && sy != kUndecided)) return 1;
+  return sx == 0 && sy == 0 ? 0 : kUndecided;
+}
+
+// start_tangent (from_end false) or end_tangent enclosed: the first
+// difference certainly non-zero after certain zeros; false when a zero test
+// is undecided. Needs a Protect scope.
+bool tangent_enclosure(const BezierPiece& p, bool from_end, FVec2& out) {
+  const std::size_t n = p.control.size();
+  const FVec2 base = to_interval(from_end ? p.control.back() : p.control.front());
+  for (std::size_t i = 1; i < n; ++i) {
+    const FVec2 q = to_interval(p.control[from_end ? n - 1 - i : i]);
+    const FVec2 d = from_end ? FVec2{base.x - q.x, base.y - q.y} : FVec2{q.x - base.x, q.y - base.y};
+    const int z = nonzero(d);
+    if (z == kUndecided) return false;
+    if (z == 1) {
+      out = d;
+      return true;
+    }
+  }
+  out = {FI(0), FI(0)};
+  return true;
 }
 
 }  // namespace
 
-// Tangents on both sides of every piece start (in loop order).
 std::vector<Join> joins(const Boundary& b) {
   std::vector<Join> out;
   const std::size_t n = b.pieces.size();
+  out.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const Vec2 t_in = end_tangent(b.pieces[(k + n - 1) % n]), t_out = start_tangent(b.pieces[k]);
-    out.push_back({t_in, t_out, is_corner(t_in, t_out)});
+    Join j{(k + n - 1) % n, k, {}, {}, false};
+    int c = kUndecided;
+    if (!force_exact()) {  // the enclosures serve the filters only
+      Protect guard;
+      if (!tangent_enclosure(b.pieces[j.prev], true, j.t_in)) j.t_in = to_interval(end_tangent(b.pieces[j.prev]));
+      if (!tangent_enclosure(b.pieces[k], false, j.t_out)) j.t_out = to_interval(start_tangent(b.pieces[k]));
+      // A tangent discontinuity: cross(t_in, t_out) != 0 || dot(t_in, t_out) < 0.
+      {
+        const int o = certain_sign(j.t_in.x * j.t_out.y - j.t_in.y * j.t_out.x);
+        const int d = certain_sign(j.t_in.x * j.t_out.x + j.t_in.y * j.t_out.y);
+        if (o != kUndecided && o != 0)
+          c = 1;
+        else if (o == 0 && d != kUndecided)
+          c = d < 0;
+        record_filter(FilterSite::kOrientation, c != kUndecided);
+      }
+    }
+    if (c == kUndecided) {
+      const Vec2 t_in = end_tangent(b.pieces[j.prev]), t_out = start_tangent(b.pieces[k]);
+      c = cross(t_in, t_out) != 0 || dot(t_in, t_out) < 0;
+    }
+    j.corner = c == 1;
+    out.push_back(j);
   }
   return out;
 }

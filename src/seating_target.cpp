@@ -3,6 +3,7 @@
 // interval filter first and the exact test when the filter cannot decide.
 #include <algorithm>
 #include <array>
+#include <boost/container/small_vector.hpp>
 #include <cmath>
 #include <memory>
 
@@ -142,7 +143,8 @@ struct FilteredHalfspaces {
   bool certify_infeasible(const std::vector<std::array<FI, 3>>& gens) const {
     if (a.size() != 3) return false;
     using V3 = std::array<double, 3>;
-    std::vector<V3> u;  // constraints u·y <= 0
+    using V3s = boost::container::small_vector<V3, 24>;  // no allocation for small cones
+    V3s u;                                               // constraints u·y <= 0
     {
       internal::Protect guard;
       for (const auto& g : gens) {
@@ -155,8 +157,8 @@ struct FilteredHalfspaces {
     const V3 b{CGAL::to_double(beta[0]), CGAL::to_double(beta[1]), CGAL::to_double(beta[2])};
     auto dot3 = [](const V3& x, const V3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
     // Vertices: u_p·y = u_q·y = 0, Σ y = 1.
-    auto vertices = [&](const std::vector<V3>& cons) {
-      std::vector<V3> out;
+    auto vertices = [&](const V3s& cons) {
+      V3s out;
       for (std::size_t p = 0; p < cons.size(); ++p)
         for (std::size_t q = p + 1; q < cons.size(); ++q) {
           const V3 &r0 = cons[p], &r1 = cons[q];
@@ -174,7 +176,7 @@ struct FilteredHalfspaces {
     double best = 0;
     for (const auto& y : vertices(u)) best = std::max(best, dot3(b, y));
     if (!(best > 0)) return false;
-    std::vector<V3> cons = u;
+    V3s cons = u;
     cons.push_back({best / 2 - b[0], best / 2 - b[1], best / 2 - b[2]});  // y·β >= best/2
     const auto vs = vertices(cons);
     if (vs.empty()) return false;

@@ -74,8 +74,9 @@ enum class Quick {
 Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
                     IntervalTarget& target, std::optional<MagnitudeBounds>* bounds = nullptr);
 
-// The point test of status_at: tangents t_in, t_out at `point`.
-Quick quick_point(const Vec2& t_in, const Vec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
+// The point test of status_at: tangents t_in, t_out (enclosures of the exact
+// ones) at `point`.
+Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
                   const std::vector<EdgeFamily>& families, IntervalTarget& target,
                   std::optional<MagnitudeBounds>* bounds = nullptr);
 

@@ -6,17 +6,26 @@
 #include <functional>
 #include <vector>
 
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/region_filter.h"
 #include "fixel/region.h"
 
 namespace fixel::internal {
 
-// Tangents on both sides of a piece start (in loop order).
+// Where piece `next` starts after piece `prev` (in loop order): enclosures
+// of the exact tangents on both sides (end_tangent(prev), start_tangent(next))
+// and whether they make a corner (decided exactly).
 struct Join {
-  Vec2 t_in, t_out;
+  std::size_t prev, next;
+  FVec2 t_in, t_out;
   bool corner;
 };
 std::vector<Join> joins(const Boundary& b);
+
+// Limiting tangent directions at the ends of a Bézier piece: the first
+// non-zero forward difference P_k − P_0 (resp. P_p − P_k); zero if none.
+Vec2 start_tangent(const BezierPiece& p);
+Vec2 end_tangent(const BezierPiece& p);
 
 // Merges consecutive intervals of one curve with equal status, each starting
 // where the last ended; their magnitudes intersect.
