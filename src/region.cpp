@@ -18,9 +18,9 @@ namespace fixel {
 
 namespace {
 
-std::vector<EdgeFamily> families(const Rational& mu) {
-  if (mu == 0) return {EdgeFamily::kNormal};
-  return {EdgeFamily::kMinus, EdgeFamily::kPlus};
+const std::vector<EdgeFamily>& families(const Rational& mu) {
+  static const std::vector<EdgeFamily> normal{EdgeFamily::kNormal}, edges{EdgeFamily::kMinus, EdgeFamily::kPlus};
+  return mu == 0 ? normal : edges;
 }
 
 // Push directions at a point with incoming and outgoing tangents (equal at
@@ -294,7 +294,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   internal::settle(raw, deferred, options.merge);
   target.stats = nullptr;
   Region region;
-  region.intervals = options.merge ? internal::merge_runs(raw) : raw;
+  region.intervals = options.merge ? internal::merge_runs(std::move(raw)) : std::move(raw);
   if (options.exact) {
     region.exact = true;
     region.digits = options.digits;

@@ -6,10 +6,17 @@
 #include "fixel/internal/region_filter.h"
 
 #include <algorithm>
+#include <boost/container/small_vector.hpp>
 
 namespace fixel::internal {
 
 namespace {
+
+// Small fixed-capacity vectors: no allocation for the usual few control
+// points, generators and families.
+using FVecs = boost::container::small_vector<FVec2, 8>;
+using FGens = boost::container::small_vector<FGen, 8>;
+using Cones = boost::container::small_vector<FGens, 2>;
 
 // Thrown at the first uncertified sign; caught by the two entry points.
 struct Undecided {};
@@ -50,7 +57,7 @@ FVec2 fpush(const FVec2& tangent, EdgeFamily family, const FI& mu) {
 
 // direction_extremes (wrench_cone.cpp) on enclosures: the same decisions in
 // the same order; the indices of the extremes. False when not pointed.
-bool extremes(const std::vector<FVec2>& v, std::size_t& first, std::size_t& last) {
+bool extremes(const FVecs& v, std::size_t& first, std::size_t& last) {
   auto orient = [&](std::size_t i, std::size_t j) { return i == j ? 0 : sign_of(fcross(v[i], v[j])); };
   int s = -1, e = -1;
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -83,7 +90,7 @@ bool extremes(const std::vector<FVec2>& v, std::size_t& first, std::size_t& last
 
 // min_k and max_k of (P_k − c) ⊗ d enclosed (the tight cone's moments; the
 // exact path takes the same extremes of the same values).
-void moment_range(const std::vector<FVec2>& r, const FVec2& d, FI& lo, FI& hi) {
+void moment_range(const FVecs& r, const FVec2& d, FI& lo, FI& hi) {
   double lo_inf = 0, lo_sup = 0, hi_inf = 0, hi_sup = 0;
   for (std::size_t k = 0; k < r.size(); ++k) {
     const FI m = fcross(r[k], d);
@@ -121,7 +128,7 @@ bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
 // common_magnitudes (region_targets.cpp) enclosed: lo = max_j T_j.lo ·
 // sqrt_upper(|f_j|²), hi = min_j T_j.hi · sqrt_lower(|f_j|²) · c, where
 // sqrt_upper(x) ∈ [√x, √x + 2^-20] and sqrt_lower(x) ∈ [√x − 2^-20, √x].
-bool common_bounds(const std::vector<FGen>& gens, const FVec2& first, const FVec2& last, const IntervalTarget& target,
+bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, const IntervalTarget& target,
                    MagnitudeBounds& m) {
   Protect guard;
   FI c;
@@ -147,8 +154,8 @@ bool common_bounds(const std::vector<FGen>& gens, const FVec2& first, const FVec
 
 // The ray tests of every generator; kIn when all hit, else the OUT tests of
 // each cone in order (as classify asks target.misses), else partial.
-Quick decide(const std::vector<std::vector<FGen>>& cones, IntervalTarget& target, bool segment) {
-  std::vector<std::vector<int>> hits(cones.size());
+Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
+  boost::container::small_vector<boost::container::small_vector<int, 8>, 2> hits(cones.size());
   bool all = true;
   for (std::size_t c = 0; c < cones.size(); ++c)
     for (const auto& g : cones[c]) {
@@ -161,7 +168,7 @@ Quick decide(const std::vector<std::vector<FGen>>& cones, IntervalTarget& target
   if (!segment) return Quick::kOut;
   for (std::size_t c = 0; c < cones.size(); ++c) {
     if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
-    if (target.certify_misses(cones[c])) return Quick::kOut;
+    if (target.certify_misses(cones[c].data(), cones[c].size())) return Quick::kOut;
     throw Undecided{};  // the exact LP decides
   }
   return Quick::kPartial;
@@ -169,9 +176,9 @@ Quick decide(const std::vector<std::vector<FGen>>& cones, IntervalTarget& target
 
 // On kIn: the enclosure of the answer's magnitudes (force parts spanning
 // first to last), when certified.
-void in_bounds(const std::vector<std::vector<FGen>>& cones, const FVec2& first, const FVec2& last,
-               const IntervalTarget& target, std::optional<MagnitudeBounds>* bounds) {
-  std::vector<FGen> gens;
+void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const IntervalTarget& target,
+               std::optional<MagnitudeBounds>* bounds) {
+  FGens gens;
   for (const auto& cone : cones) gens.insert(gens.end(), cone.begin(), cone.end());
   MagnitudeBounds m;
   if (common_bounds(gens, first, last, target, m)) *bounds = m;
@@ -181,14 +188,14 @@ void in_bounds(const std::vector<std::vector<FGen>>& cones, const FVec2& first, 
 
 Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
                     IntervalTarget& target, std::optional<MagnitudeBounds>* bounds) {
-  std::vector<std::vector<FGen>> cones;
-  std::vector<FVec2> forces;
+  Cones cones;
+  FVecs forces;
   try {
     {
       Protect guard;
       const FVec2 fc = to_interval(c);
       const FI fmu = to_interval(mu);
-      std::vector<FVec2> P, r, legs;
+      FVecs P, r, legs;
       for (const auto& p : seg.control) {
         P.push_back(to_interval(p));
         r.push_back(fsub(P.back(), fc));
@@ -207,7 +214,7 @@ Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, c
         if (span < 0 || (span == 0 && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
         forces.push_back(ds);
         forces.push_back(de);
-        std::vector<FGen> gens;
+        FGens gens;
         for (const FVec2& d : {ds, de}) {
           FI lo, hi;
           moment_range(r, d, lo, hi);
@@ -238,7 +245,7 @@ Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, c
 Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
                   const std::vector<EdgeFamily>& families, IntervalTarget& target,
                   std::optional<MagnitudeBounds>* bounds) {
-  std::vector<std::vector<FGen>> cones(1);
+  Cones cones(1);
   FVec2 first, last;
   try {
     {
@@ -246,7 +253,7 @@ Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, cons
       const FVec2 &ti = t_in, &to = t_out;
       if (is_zero_f(ti) || is_zero_f(to)) return Quick::kPartial;  // undefined normal (cusp)
       const FI fmu = to_interval(mu);
-      std::vector<FVec2> dirs;
+      FVecs dirs;
       for (const EdgeFamily f : families) {
         dirs.push_back(fpush(ti, f, fmu));
         dirs.push_back(fpush(to, f, fmu));

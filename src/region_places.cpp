@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fixel/geometry.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/region.h"
 
 namespace fixel {
@@ -17,12 +18,25 @@ namespace {
 // once per piece: n·(P_{k+1} − P_k), each difference taken exactly first.
 using Hodograph = std::vector<std::array<double, 2>>;
 
+// to_double(a − b): when a and b are doubles (point enclosures) and their
+// double difference is exact (its two-sum error is 0), that difference is
+// the value itself; otherwise the exact difference, converted.
+double difference(const Rational& a, const Rational& b) {
+  const internal::FI fa = internal::to_interval(a), fb = internal::to_interval(b);
+  if (fa.inf() == fa.sup() && fb.inf() == fb.sup()) {
+    const double x = fa.inf(), y = -fb.inf(), s = x + y, yy = s - x;
+    if (std::isfinite(s) && (x - (s - yy)) + (y - yy) == 0) return s;
+  }
+  return to_double(a - b);
+}
+
 Hodograph hodograph(const BezierPiece& piece) {
   const int n = static_cast<int>(piece.control.size()) - 1;
   Hodograph d;
+  d.reserve(n);
   for (int k = 0; k < n; ++k)
-    d.push_back({n * to_double(piece.control[k + 1].x - piece.control[k].x),
-                 n * to_double(piece.control[k + 1].y - piece.control[k].y)});
+    d.push_back({n * difference(piece.control[k + 1].x, piece.control[k].x),
+                 n * difference(piece.control[k + 1].y, piece.control[k].y)});
   return d;
 }
 

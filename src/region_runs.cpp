@@ -88,9 +88,9 @@ std::vector<Join> joins(const Boundary& b) {
   return out;
 }
 
-std::vector<RegionInterval> merge_runs(const std::vector<RegionInterval>& in) {
+std::vector<RegionInterval> merge_runs(std::vector<RegionInterval> in) {
   std::vector<RegionInterval> out;
-  for (const auto& r : in) {
+  for (auto& r : in) {
     if (!out.empty() && out.back().curve == r.curve && out.back().status == r.status && out.back().u1 == r.u0) {
       out.back().u1 = r.u1;
       out.back().exact_u1 = r.exact_u1;
@@ -102,7 +102,7 @@ std::vector<RegionInterval> merge_runs(const std::vector<RegionInterval>& in) {
         out.back().magnitude_set.clear();
       continue;
     }
-    out.push_back(r);
+    out.push_back(std::move(r));
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <boost/container/small_vector.hpp>
+#include <boost/range/iterator_range.hpp>
 #include <cmath>
 #include <memory>
 
@@ -140,14 +141,14 @@ struct FilteredHalfspaces {
   // candidate y is found in doubles (three halfspaces: the vertices of the
   // feasible polygon on the simplex Σ y = 1, then its centre at half the best
   // y·β) and checked in intervals. True only when certified.
-  bool certify_infeasible(const std::vector<std::array<FI, 3>>& gens) const {
+  bool certify_infeasible(const std::array<FI, 3>* gens, std::size_t n) const {
     if (a.size() != 3) return false;
     using V3 = std::array<double, 3>;
     using V3s = boost::container::small_vector<V3, 24>;  // no allocation for small cones
     V3s u;                                               // constraints u·y <= 0
     {
       internal::Protect guard;
-      for (const auto& g : gens) {
+      for (const auto& g : boost::make_iterator_range(gens, gens + n)) {
         V3 c;
         for (int k = 0; k < 3; ++k) c[k] = CGAL::to_double(alpha(k, g));
         u.push_back(c);
@@ -186,7 +187,7 @@ struct FilteredHalfspaces {
     for (auto& x : y) x = std::max(x, 0.0);
     // Certify with the data's enclosures; y is taken as exact.
     internal::Protect guard;
-    for (const auto& g : gens) {
+    for (const auto& g : boost::make_iterator_range(gens, gens + n)) {
       const FI t = FI(y[0]) * alpha(0, g) + FI(y[1]) * alpha(1, g) + FI(y[2]) * alpha(2, g);
       if (!(t.sup() <= 0)) return false;
     }
@@ -236,8 +237,8 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
   bool interval_magnitudes(const internal::FGen& g, internal::FMagnitudes& T) const override {
     return filtered_.magnitudes(g, T);
   }
-  bool certify_misses(const std::vector<internal::FGen>& gens) override {
-    if (!filtered_.certify_infeasible(gens)) return false;
+  bool certify_misses(const internal::FGen* gens, std::size_t n) override {
+    if (!filtered_.certify_infeasible(gens, n)) return false;
     if (stats) ++stats->lp_tests;
     return true;
   }
@@ -294,7 +295,7 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
     if (!force_exact()) {
       std::vector<std::array<FI, 3>> fg;
       for (const auto& g : gens) fg.push_back(to_interval3(g));
-      const bool certified = filtered_.certify_infeasible(fg);
+      const bool certified = filtered_.certify_infeasible(fg.data(), fg.size());
       internal::record_filter(FilterSite::kOutTest, certified);
       if (certified) return true;
     }

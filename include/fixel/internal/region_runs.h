@@ -29,7 +29,7 @@ Vec2 end_tangent(const BezierPiece& p);
 
 // Merges consecutive intervals of one curve with equal status, each starting
 // where the last ended; their magnitudes intersect.
-std::vector<RegionInterval> merge_runs(const std::vector<RegionInterval>& in);
+std::vector<RegionInterval> merge_runs(std::vector<RegionInterval> in);
 
 // An IN interval of the raw list whose exact magnitudes wait for the merge:
 // raw[index] holds neutral_magnitudes() meanwhile.
