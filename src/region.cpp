@@ -94,17 +94,17 @@ RegionInterval classify_exact(Context& ctx, const BezierPiece& seg) {
   return out;
 }
 
-RegionInterval classify(Context& ctx, const BezierPiece& seg) {
+RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
   poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
   ++ctx.stats.cone_tests;
-  RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
+  RegionInterval out{seg.curve(), seg.u0(), seg.u1(), RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
   // OUT and partial from enclosures alone when the target answers on them;
   // IN with enclosed magnitudes waits for the merge; the rest: exact.
   if (ctx.method == ConeMethod::kTight && !force_exact())
     if (internal::IntervalTarget* it = ctx.target.interval_target()) {
       std::optional<internal::MagnitudeBounds> bounds;
-      const internal::Quick q = internal::quick_segment(seg, ctx.scene.body.p_AoCm_A, ctx.mu, families(ctx.mu), *it,
-                                                        ctx.deferred ? &bounds : nullptr);
+      const internal::Quick q = internal::quick_segment(seg.enclosures(), ctx.scene.body.p_AoCm_A, ctx.mu,
+                                                        families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
       internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
       if (q == internal::Quick::kPartial) return out;
       if (q == internal::Quick::kOut) {
@@ -116,7 +116,7 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
         out.half_line = bounds->all_half;
         out.magnitudes = internal::neutral_magnitudes();
         ctx.deferred->push_back({kUnplaced, *bounds, [&ctx, seg] {
-                                   const RegionInterval r = classify_exact(ctx, seg);
+                                   const RegionInterval r = classify_exact(ctx, seg.exact());
                                    if (r.status != RegionStatus::kIn)
                                      throw InternalError("region: a certified IN segment is not IN exactly");
                                    return r.magnitudes;
@@ -124,7 +124,7 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
         return out;
       }
     }
-  return classify_exact(ctx, seg);
+  return classify_exact(ctx, seg.exact());
 }
 
 // Gives a deferred answer just pushed as out.back() its index.
@@ -133,16 +133,16 @@ void place_deferred(Context& ctx, std::size_t index) {
     ctx.deferred->back().index = index;
 }
 
-void subdivide(Context& ctx, const BezierPiece& seg, int depth, std::vector<RegionInterval>& out) {
+void subdivide(Context& ctx, const internal::LazyPiece& seg, int depth, std::vector<RegionInterval>& out) {
   RegionInterval r = classify(ctx, seg);
   ctx.stats.depth = std::max(ctx.stats.depth, depth);
-  if (r.status != RegionStatus::kPartial || seg.u1 - seg.u0 <= ctx.resolution || depth >= 200) {
-    if (r.status == RegionStatus::kPartial) ctx.stats.partial_length += seg.u1 - seg.u0;
+  if (r.status != RegionStatus::kPartial || seg.u1() - seg.u0() <= ctx.resolution || depth >= 200) {
+    if (r.status == RegionStatus::kPartial) ctx.stats.partial_length += seg.u1() - seg.u0();
     out.push_back(std::move(r));
     place_deferred(ctx, out.size() - 1);
     return;
   }
-  const auto halves = seg.split(Rational(1, 2));
+  const auto halves = seg.halves();
   subdivide(ctx, halves.first, depth + 1, out);
   subdivide(ctx, halves.second, depth + 1, out);
 }
@@ -288,7 +288,8 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
       target.stats = &ctx.stats;  // the point tests reset it
     } else {
       if (!widths.empty()) ctx.resolution = widths[k];
-      subdivide(ctx, piece, 0, raw);
+      const bool enclose = ctx.method == ConeMethod::kTight && !force_exact() && target.interval_target();
+      subdivide(ctx, internal::LazyPiece(piece, enclose), 0, raw);
     }
   }
   internal::settle(raw, deferred, options.merge);

@@ -186,8 +186,52 @@ void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const 
 
 }  // namespace
 
-Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
-                    IntervalTarget& target, std::optional<MagnitudeBounds>* bounds) {
+LazyPiece::LazyPiece(const BezierPiece& root, bool enclose) : root_(&root), u0_(root.u0), u1_(root.u1) {
+  if (enclose)
+    for (const auto& p : root.control) ctrl_.push_back(to_interval(p));
+}
+
+const BezierPiece& LazyPiece::exact() const {
+  asked_ = true;
+  if (exact_) return *exact_;
+  if (u0_ == root_->u0 && u1_ == root_->u1) return *root_;
+  exact_ = root_->restrict_to(u0_, u1_);
+  return *exact_;
+}
+
+std::pair<LazyPiece, LazyPiece> LazyPiece::halves() const {
+  if (asked_) {  // the exact path ran here: halve exactly, as before
+    auto h = exact().split(Rational(1, 2));
+    std::pair<LazyPiece, LazyPiece> out{LazyPiece(root_, h.first.u0, h.first.u1),
+                                        LazyPiece(root_, h.second.u0, h.second.u1)};
+    out.first.exact_ = std::move(h.first);
+    out.second.exact_ = std::move(h.second);
+    for (LazyPiece* c : {&out.first, &out.second})
+      if (!ctrl_.empty())
+        for (const auto& p : c->exact_->control) c->ctrl_.push_back(to_interval(p));
+    return out;
+  }
+  const Rational um = (u0_ + u1_) / 2;
+  std::pair<LazyPiece, LazyPiece> out{LazyPiece(root_, u0_, um), LazyPiece(root_, um, u1_)};
+  if (ctrl_.empty()) return out;
+  // De Casteljau at 1/2 on the enclosures.
+  const std::size_t n = ctrl_.size();
+  Enclosures pts = ctrl_;
+  out.first.ctrl_.resize(n);
+  out.second.ctrl_.resize(n);
+  Protect guard;
+  for (std::size_t level = 0; level < n; ++level) {
+    out.first.ctrl_[level] = pts.front();
+    out.second.ctrl_[n - 1 - level] = pts[n - 1 - level];
+    for (std::size_t i = 0; i + 1 < n - level; ++i)
+      pts[i] = {(pts[i].x + pts[i + 1].x) / 2, (pts[i].y + pts[i + 1].y) / 2};
+  }
+  return out;
+}
+
+Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const Rational& mu,
+                    const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                    std::optional<MagnitudeBounds>* bounds) {
   Cones cones;
   FVecs forces;
   try {
@@ -196,8 +240,9 @@ Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, c
       const FVec2 fc = to_interval(c);
       const FI fmu = to_interval(mu);
       FVecs P, r, legs;
-      for (const auto& p : seg.control) {
-        P.push_back(to_interval(p));
+      if (control.empty()) throw Undecided{};
+      for (const auto& p : control) {
+        P.push_back(p);
         r.push_back(fsub(P.back(), fc));
       }
       for (std::size_t k = 0; k + 1 < P.size(); ++k) {

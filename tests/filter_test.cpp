@@ -11,6 +11,7 @@
 #include <regex>
 
 #include "fixel/guaranteed.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
@@ -307,6 +308,36 @@ GTEST_TEST(Filter, DeferredMagnitudesOfLongInRunsGiveIdenticalJson) {
                         [](const RegionInterval& i) { return i.status == RegionStatus::kIn && !i.magnitudes.empty; }),
           0);
     }
+}
+
+// The subdivision's lazy pieces: halving enclosures keeps them around the
+// exact control points, and the exact points made from the boundary piece
+// at depth 12 equal those of twelve exact halvings.
+GTEST_TEST(Filter, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
+  const BezierPiece root{0, Rational(1, 3), Rational(2), {{0, 0}, {Rational(1, 3), 2}, {3, Rational(5, 7)}, {4, 0}}};
+  ForceExactScope filtered(false);
+  internal::LazyPiece lazy(root, true);
+  BezierPiece exact = root;
+  for (int depth = 0; depth < 12; ++depth) {
+    const bool left = depth % 3 == 1;
+    const auto h = lazy.halves();
+    lazy = left ? h.first : h.second;
+    const auto e = exact.split(Rational(1, 2));
+    exact = left ? e.first : e.second;
+  }
+  ASSERT_EQ(lazy.enclosures().size(), exact.control.size());
+  for (std::size_t k = 0; k < exact.control.size(); ++k) {
+    const double x = to_double(exact.control[k].x), y = to_double(exact.control[k].y);
+    EXPECT_TRUE(lazy.enclosures()[k].x.inf() <= x && x <= lazy.enclosures()[k].x.sup()) << k;
+    EXPECT_TRUE(lazy.enclosures()[k].y.inf() <= y && y <= lazy.enclosures()[k].y.sup()) << k;
+  }
+  EXPECT_EQ(lazy.u0(), exact.u0);
+  EXPECT_EQ(lazy.u1(), exact.u1);
+  const BezierPiece& made = lazy.exact();
+  for (std::size_t k = 0; k < exact.control.size(); ++k) {
+    EXPECT_EQ(made.control[k].x, exact.control[k].x) << k;
+    EXPECT_EQ(made.control[k].y, exact.control[k].y) << k;
+  }
 }
 
 GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {

@@ -9,6 +9,7 @@
 // recomputes from scratch, so no answer depends on which path ran.
 
 #include <array>
+#include <boost/container/small_vector.hpp>
 #include <optional>
 #include <vector>
 
@@ -67,12 +68,43 @@ enum class Quick {
   kUnknown,  // some sign undecided: the exact path decides
 };
 
+// A piece of the subdivision: a parameter range [u0, u1] of a boundary
+// piece, enclosures of its control points (halved in intervals), and its
+// exact control points only when asked for (the exact path), then made from
+// the boundary piece (the control points of a sub-curve are unique, so they
+// equal those of repeated halving). Children of a piece whose exact points
+// were asked for are halved exactly.
+class LazyPiece {
+ public:
+  using Enclosures = boost::container::small_vector<FVec2, 4>;
+  // The whole boundary piece; with `enclose`, its control points' enclosures.
+  LazyPiece(const BezierPiece& root, bool enclose);
+  int curve() const { return root_->curve; }
+  const Rational& u0() const { return u0_; }
+  const Rational& u1() const { return u1_; }
+  // Empty when made without enclosures.
+  const Enclosures& enclosures() const { return ctrl_; }
+  const BezierPiece& exact() const;
+  // The halves at local parameter 1/2.
+  std::pair<LazyPiece, LazyPiece> halves() const;
+
+ private:
+  LazyPiece(const BezierPiece* root, Rational u0, Rational u1) : root_(root), u0_(std::move(u0)), u1_(std::move(u1)) {}
+  const BezierPiece* root_;
+  Rational u0_, u1_;
+  Enclosures ctrl_;
+  mutable std::optional<BezierPiece> exact_;
+  mutable bool asked_ = false;
+};
+
 // The tight-cone segment test of classify (region.cpp) for `families` of
-// push directions with pusher friction mu, centre of mass c. On kIn,
+// push directions with pusher friction mu, centre of mass c, from the
+// enclosures of the segment's control points. On kIn,
 // `bounds` (if given) gets the enclosure of the answer's magnitudes when it
 // can be certified.
-Quick quick_segment(const BezierPiece& seg, const Vec2& c, const Rational& mu, const std::vector<EdgeFamily>& families,
-                    IntervalTarget& target, std::optional<MagnitudeBounds>* bounds = nullptr);
+Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const Rational& mu,
+                    const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                    std::optional<MagnitudeBounds>* bounds = nullptr);
 
 // The point test of status_at: tangents t_in, t_out (enclosures of the exact
 // ones) at `point`.
