@@ -1,5 +1,7 @@
 #include "fixel/curve.h"
 
+#include <gmp.h>
+
 #include <algorithm>
 
 #include "fixel/error.h"
@@ -130,16 +132,37 @@ Vec2 BezierPiece::derivative(const Rational& s, int k) const {
   return de_casteljau(pts, s);
 }
 
+namespace {
+// (a + b) / 2 in place of lerp(a, b, 1/2): the same canonical rational, one
+// addition and a halving that needs no gcd (mpq_div_2exp).
+void halfway(Rational& out, const Rational& a, const Rational& b) {
+  mpq_add(out.backend().data(), a.backend().data(), b.backend().data());
+  mpq_div_2exp(out.backend().data(), out.backend().data(), 1);
+}
+}  // namespace
+
 std::pair<BezierPiece, BezierPiece> BezierPiece::split(const Rational& s) const {
   const std::size_t n = control.size();
+  const bool half = s == Rational(1, 2);  // the region's subdivision
   std::vector<Vec2> left(n), right(n), pts = control;
   for (std::size_t level = 0; level < n; ++level) {
     left[level] = pts.front();
     right[n - 1 - level] = pts[n - 1 - level];
-    for (std::size_t i = 0; i + 1 < n - level; ++i) pts[i] = lerp(pts[i], pts[i + 1], s);
+    for (std::size_t i = 0; i + 1 < n - level; ++i) {
+      if (!half) {
+        pts[i] = lerp(pts[i], pts[i + 1], s);
+        continue;
+      }
+      halfway(pts[i].x, pts[i].x, pts[i + 1].x);
+      halfway(pts[i].y, pts[i].y, pts[i + 1].y);
+    }
   }
-  const Rational um = u0 + s * (u1 - u0);
-  return {BezierPiece{curve, u0, um, left}, BezierPiece{curve, um, u1, right}};
+  Rational um;
+  if (half)
+    halfway(um, u0, u1);
+  else
+    um = u0 + s * (u1 - u0);
+  return {BezierPiece{curve, u0, um, std::move(left)}, BezierPiece{curve, um, u1, std::move(right)}};
 }
 
 BezierPiece BezierPiece::restrict_to(const Rational& a, const Rational& b) const {

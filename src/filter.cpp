@@ -38,6 +38,8 @@ std::string to_string(FilterSite site) {
       return "membership";
     case FilterSite::kJam:
       return "jam test";
+    case FilterSite::kRegionTest:
+      return "region test";
     case FilterSite::kCount:
       break;
   }

@@ -6,7 +6,10 @@
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/region_exact.h"
+#include "fixel/internal/region_filter.h"
+#include "fixel/internal/region_runs.h"
 #include "fixel/lcp.h"
 #include "fixel/progress.h"
 #include "fixel/region_target.h"
@@ -15,27 +18,10 @@ namespace fixel {
 
 namespace {
 
-std::vector<EdgeFamily> families(const Rational& mu) {
-  if (mu == 0) return {EdgeFamily::kNormal};
-  return {EdgeFamily::kMinus, EdgeFamily::kPlus};
+const std::vector<EdgeFamily>& families(const Rational& mu) {
+  static const std::vector<EdgeFamily> normal{EdgeFamily::kNormal}, edges{EdgeFamily::kMinus, EdgeFamily::kPlus};
+  return mu == 0 ? normal : edges;
 }
-
-// Limiting tangent directions at the ends of a Bézier piece: the first
-// non-zero forward difference P_k − P_0 (resp. P_p − P_k).
-Vec2 start_tangent(const BezierPiece& p) {
-  for (std::size_t k = 1; k < p.control.size(); ++k)
-    if (!is_zero(sub(p.control[k], p.control[0]))) return sub(p.control[k], p.control[0]);
-  return {0, 0};
-}
-Vec2 end_tangent(const BezierPiece& p) {
-  const Vec2& last = p.control.back();
-  for (std::size_t k = p.control.size() - 1; k-- > 0;)
-    if (!is_zero(sub(last, p.control[k]))) return sub(last, p.control[k]);
-  return {0, 0};
-}
-
-// A tangent discontinuity between consecutive pieces.
-bool is_corner(const Vec2& t_in, const Vec2& t_out) { return cross(t_in, t_out) != 0 || dot(t_in, t_out) < 0; }
 
 // Push directions at a point with incoming and outgoing tangents (equal at
 // a smooth point): the extreme edge directions of all friction cones around
@@ -57,7 +43,12 @@ struct Context {
   Rational resolution;
   RegionStats stats;
   RunControl* control = nullptr;
+  // When set, IN answers whose magnitudes the enclosures bound wait here for
+  // the merge (internal::settle); index SIZE_MAX until the interval is placed.
+  std::vector<internal::Deferred>* deferred = nullptr;
 };
+
+constexpr std::size_t kUnplaced = static_cast<std::size_t>(-1);
 
 // Exact point test from the extreme push directions at lever arm r.
 RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
@@ -70,9 +61,7 @@ RegionStatus test_directions(Context& ctx, const Vec2& r, const Vec2& d_first, c
 // Segment test: IN when the cone of every family's wrenches reaches the
 // target, OUT when one family's cone misses it (that edge direction then
 // misses at every point), else PARTIAL.
-RegionInterval classify(Context& ctx, const BezierPiece& seg) {
-  poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
-  ++ctx.stats.cone_tests;
+RegionInterval classify_exact(Context& ctx, const BezierPiece& seg) {
   RegionInterval out{seg.curve, seg.u0, seg.u1, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
   // The tight cone needs no hull (min/max over all control points is the
   // same); the paper cone's ⊥-angle test wants the polygon's vertices.
@@ -105,36 +94,57 @@ RegionInterval classify(Context& ctx, const BezierPiece& seg) {
   return out;
 }
 
-void subdivide(Context& ctx, const BezierPiece& seg, int depth, std::vector<RegionInterval>& out) {
-  RegionInterval r = classify(ctx, seg);
-  ctx.stats.depth = std::max(ctx.stats.depth, depth);
-  if (r.status != RegionStatus::kPartial || seg.u1 - seg.u0 <= ctx.resolution || depth >= 200) {
-    if (r.status == RegionStatus::kPartial) ctx.stats.partial_length += seg.u1 - seg.u0;
-    out.push_back(std::move(r));
-    return;
-  }
-  const auto halves = seg.split(Rational(1, 2));
-  subdivide(ctx, halves.first, depth + 1, out);
-  subdivide(ctx, halves.second, depth + 1, out);
+RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
+  poll(ctx.control, "region", ctx.stats.cone_tests, 0, "segments classified");
+  ++ctx.stats.cone_tests;
+  RegionInterval out{seg.curve(), seg.u0(), seg.u1(), RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
+  // OUT and partial from enclosures alone when the target answers on them;
+  // IN with enclosed magnitudes waits for the merge; the rest: exact.
+  if (ctx.method == ConeMethod::kTight && !force_exact())
+    if (internal::IntervalTarget* it = ctx.target.interval_target()) {
+      std::optional<internal::MagnitudeBounds> bounds;
+      const internal::Quick q = internal::quick_segment(seg.enclosures(), ctx.scene.body.p_AoCm_A, ctx.mu,
+                                                        families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
+      internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
+      if (q == internal::Quick::kPartial) return out;
+      if (q == internal::Quick::kOut) {
+        out.status = RegionStatus::kOut;
+        return out;
+      }
+      if (q == internal::Quick::kIn && bounds) {
+        out.status = RegionStatus::kIn;
+        out.half_line = bounds->all_half;
+        out.magnitudes = internal::neutral_magnitudes();
+        ctx.deferred->push_back({kUnplaced, *bounds, [&ctx, seg] {
+                                   const RegionInterval r = classify_exact(ctx, seg.exact());
+                                   if (r.status != RegionStatus::kIn)
+                                     throw InternalError("region: a certified IN segment is not IN exactly");
+                                   return r.magnitudes;
+                                 }});
+        return out;
+      }
+    }
+  return classify_exact(ctx, seg.exact());
 }
 
-std::vector<RegionInterval> merge(const std::vector<RegionInterval>& in) {
-  std::vector<RegionInterval> out;
-  for (const auto& r : in) {
-    if (!out.empty() && out.back().curve == r.curve && out.back().status == r.status && out.back().u1 == r.u0) {
-      out.back().u1 = r.u1;
-      out.back().exact_u1 = r.exact_u1;
-      out.back().half_line = out.back().half_line && r.half_line;
-      out.back().magnitudes = out.back().magnitudes.intersect(r.magnitudes);
-      if (!out.back().magnitude_set.empty() && !r.magnitude_set.empty() && !out.back().magnitudes.empty)
-        out.back().magnitude_set = {out.back().magnitudes};  // certified pieces intersect to one interval
-      else
-        out.back().magnitude_set.clear();
-      continue;
-    }
-    out.push_back(r);
+// Gives a deferred answer just pushed as out.back() its index.
+void place_deferred(Context& ctx, std::size_t index) {
+  if (ctx.deferred && !ctx.deferred->empty() && ctx.deferred->back().index == kUnplaced)
+    ctx.deferred->back().index = index;
+}
+
+void subdivide(Context& ctx, const internal::LazyPiece& seg, int depth, std::vector<RegionInterval>& out) {
+  RegionInterval r = classify(ctx, seg);
+  ctx.stats.depth = std::max(ctx.stats.depth, depth);
+  if (r.status != RegionStatus::kPartial || seg.u1() - seg.u0() <= ctx.resolution || depth >= 200) {
+    if (r.status == RegionStatus::kPartial) ctx.stats.partial_length += seg.u1() - seg.u0();
+    out.push_back(std::move(r));
+    place_deferred(ctx, out.size() - 1);
+    return;
   }
-  return out;
+  const auto halves = seg.halves();
+  subdivide(ctx, halves.first, depth + 1, out);
+  subdivide(ctx, halves.second, depth + 1, out);
 }
 
 void check_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {
@@ -145,42 +155,60 @@ void check_inputs(const Scene& scene, const Rational& mu, const RegionTarget& ta
   if (mu < 0) throw InputError("RegionOptions.pusher_mu", to_string(mu), "must be >= 0");
 }
 
-// Tangents on both sides of every piece start (in loop order).
-struct Join {
-  Vec2 t_in, t_out;
-  bool corner;
-};
-std::vector<Join> joins(const Boundary& b) {
-  std::vector<Join> out;
-  const std::size_t n = b.pieces.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec2 t_in = end_tangent(b.pieces[(k + n - 1) % n]), t_out = start_tangent(b.pieces[k]);
-    out.push_back({t_in, t_out, is_corner(t_in, t_out)});
-  }
-  return out;
-}
-
 // `first`: no piece before it holds u (the caller knows; saves a scan of
 // every piece per corner, which made long polylines quadratic).
-RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<Join>& js, int curve, const Rational& u,
-                       Magnitudes* mags, std::vector<Magnitudes>* set = nullptr, std::size_t first = 0) {
+RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<internal::Join>& js, int curve,
+                       const Rational& u, Magnitudes* mags, std::vector<Magnitudes>* set = nullptr,
+                       std::size_t first = 0) {
   for (std::size_t k = first; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (piece.curve != curve) continue;
     const bool at_start = u == piece.u0, inside = u > piece.u0 && u < piece.u1;
     const bool at_curve_end = u == piece.u1 && (k + 1 == b.pieces.size() || b.pieces[k + 1].curve != curve);
     if (!at_start && !inside && !at_curve_end) continue;
+    // At a piece start the join has the tangents' enclosures; the exact
+    // tangents are made only when the exact path needs them.
+    const internal::Join* j = at_start || at_curve_end ? &js[at_start ? k : (k + 1) % b.pieces.size()] : nullptr;
+    const Vec2 point = j ? (at_start ? piece.control.front() : piece.control.back()) : piece.point(piece.local(u));
+    const Vec2 t = j ? Vec2{} : piece.derivative(piece.local(u));
+    auto tangents = [&b, j, t](Vec2& t_in, Vec2& t_out) {
+      t_in = j ? internal::end_tangent(b.pieces[j->prev]) : t;
+      t_out = j ? internal::start_tangent(b.pieces[j->next]) : t;
+    };
+    if (!force_exact())
+      if (internal::IntervalTarget* it = ctx.target.interval_target()) {
+        std::optional<internal::MagnitudeBounds> bounds;
+        const internal::FVec2 ft = j ? internal::FVec2{} : internal::to_interval(t);
+        const internal::Quick q =
+            internal::quick_point(j ? j->t_in : ft, j ? j->t_out : ft, point, ctx.scene.body.p_AoCm_A, ctx.mu,
+                                  families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
+        internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
+        if (q == internal::Quick::kPartial) return RegionStatus::kPartial;
+        if (q == internal::Quick::kOut) {
+          ++ctx.stats.point_tests;
+          if (mags) *mags = Magnitudes{};
+          return RegionStatus::kOut;
+        }
+        if (q == internal::Quick::kIn && bounds && mags) {
+          ++ctx.stats.point_tests;
+          *mags = internal::neutral_magnitudes();
+          ctx.deferred->push_back(
+              {kUnplaced, *bounds, [&ctx, tangents, point] {
+                 Vec2 t_in, t_out, first, last;
+                 tangents(t_in, t_out);
+                 const Vec2 r = sub(point, ctx.scene.body.p_AoCm_A);
+                 Magnitudes m;
+                 if (!push_extremes(t_in, t_out, ctx.mu, first, last) ||
+                     ctx.target.test_point({contact_wrench(r, first, 3), contact_wrench(r, last, 3)}, first, last, &m,
+                                           nullptr) != RegionStatus::kIn)
+                   throw InternalError("region: a certified IN point is not IN exactly");
+                 return m;
+               }});
+          return RegionStatus::kIn;
+        }
+      }
     Vec2 t_in, t_out;
-    Vec2 point;
-    if (at_start || at_curve_end) {
-      const Join& j = js[at_start ? k : (k + 1) % b.pieces.size()];
-      t_in = j.t_in;
-      t_out = j.t_out;
-      point = at_start ? piece.control.front() : piece.control.back();
-    } else {
-      t_in = t_out = piece.derivative(piece.local(u));
-      point = piece.point(piece.local(u));
-    }
+    tangents(t_in, t_out);
     if (is_zero(t_in) || is_zero(t_out)) return RegionStatus::kPartial;  // undefined normal (cusp)
     Vec2 first, last;
     if (!push_extremes(t_in, t_out, ctx.mu, first, last)) return RegionStatus::kPartial;  // fan of π or more
@@ -222,44 +250,6 @@ bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
 
 }  // namespace
 
-Rational speed_bound(const BezierPiece& piece) {
-  Rational longest = 0;
-  for (const Vec2& leg : piece.legs()) {
-    const Rational sq = leg.x * leg.x + leg.y * leg.y;
-    if (sq == 0) continue;
-    // An upper bound on sqrt(sq): the double square root rounded up, checked
-    // exactly; |x| + |y| when that check fails (or the double overflows).
-    Rational up = boost::multiprecision::abs(leg.x) + boost::multiprecision::abs(leg.y);
-    const double d = std::sqrt(to_double(sq));
-    if (std::isfinite(d) && d > 0) {
-      for (const double candidate : {d, std::nextafter(d * (1 + 1e-12), std::numeric_limits<double>::infinity())}) {
-        const Rational guess(candidate);  // exact conversion of the double
-        if (guess * guess >= sq) {        // (d itself when the root is exact)
-          if (guess < up) up = guess;
-          break;
-        }
-      }
-    }
-    longest = std::max(longest, up);
-  }
-  return Rational(piece.degree()) * longest;
-}
-
-Rational resolution_width(const BezierPiece& piece, const Rational& length) {
-  if (length <= 0) throw InputError("RegionOptions.resolution_length", to_string(length), "must be > 0");
-  const Rational speed = speed_bound(piece);
-  Rational width = piece.u1 - piece.u0, bound = speed;
-  for (int d = 0; bound > length; ++d) {
-    if (d >= 64)
-      throw InputError("RegionOptions.resolution_length", to_string(length),
-                       "is too small for curve " + std::to_string(piece.curve) + ", u in [" + to_string(piece.u0) +
-                           ", " + to_string(piece.u1) + "]: it needs more than 2^64 parts");
-    width /= 2;
-    bound /= 2;
-  }
-  return width;
-}
-
 Region compute_region(const Scene& scene, RegionTarget& target, const RegionOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
@@ -276,15 +266,21 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   if (options.resolution_length && !options.exact)
     for (const auto& piece : b.pieces) widths.push_back(resolution_width(piece, *options.resolution_length));
   target.stats = &ctx.stats;
-  const std::vector<Join> js = joins(b);
+  const std::vector<internal::Join> js = internal::joins(b);
   std::vector<RegionInterval> raw;
+  raw.reserve(2 * b.pieces.size());  // a corner and a segment per piece when nothing splits
+  std::vector<internal::Deferred> deferred;
+  if (!options.exact) ctx.deferred = &deferred;
   for (std::size_t k = 0; k < b.pieces.size(); ++k) {
     const BezierPiece& piece = b.pieces[k];
     if (js[k].corner) {
       RegionInterval corner{piece.curve, piece.u0, piece.u0, RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
       corner.status = status_at(ctx, b, js, piece.curve, piece.u0, &corner.magnitudes, &corner.magnitude_set, k);
       corner.half_line = in_half_line(target, corner);
+      if (!deferred.empty() && deferred.back().index == kUnplaced)  // its magnitudes wait: the bounds say
+        corner.half_line = std::string(target.push_model()) == "sustained" || !deferred.back().bounds.has_hi;
       raw.push_back(corner);
+      place_deferred(ctx, raw.size() - 1);
     }
     if (options.exact) {
       poll(ctx.control, "region", static_cast<long>(k), static_cast<long>(b.pieces.size()), "pieces");
@@ -292,12 +288,14 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
       target.stats = &ctx.stats;  // the point tests reset it
     } else {
       if (!widths.empty()) ctx.resolution = widths[k];
-      subdivide(ctx, piece, 0, raw);
+      const bool enclose = ctx.method == ConeMethod::kTight && !force_exact() && target.interval_target();
+      subdivide(ctx, internal::LazyPiece(piece, enclose), 0, raw);
     }
   }
+  internal::settle(raw, deferred, options.merge);
   target.stats = nullptr;
   Region region;
-  region.intervals = options.merge ? merge(raw) : raw;
+  region.intervals = options.merge ? internal::merge_runs(std::move(raw)) : std::move(raw);
   if (options.exact) {
     region.exact = true;
     region.digits = options.digits;
@@ -341,7 +339,7 @@ RegionStatus point_status(const Scene& scene, RegionTarget& target, int curve, c
   check_inputs(scene, mu, target);
   Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = nullptr;
-  return status_at(ctx, *scene.body.boundary, joins(*scene.body.boundary), curve, u, magnitudes);
+  return status_at(ctx, *scene.body.boundary, internal::joins(*scene.body.boundary), curve, u, magnitudes);
 }
 
 RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, const Rational& u, const Rational& mu,
@@ -360,7 +358,7 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   const Boundary& b = *scene.body.boundary;
   Context ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = &ctx.stats;
-  const std::vector<Join> js = joins(b);
+  const std::vector<internal::Join> js = internal::joins(b);
   const long total = static_cast<long>(b.curves.size()) * points_per_curve;
   Region region;
   for (std::size_t c = 0; c < b.curves.size(); ++c) {

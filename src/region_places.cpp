@@ -1,11 +1,13 @@
 // Where region intervals are on the part: exact end points, and display
 // figures (arc length, push direction) for reports.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
 
 #include "fixel/geometry.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/region.h"
 
 namespace fixel {
@@ -16,20 +18,42 @@ namespace {
 // once per piece: n·(P_{k+1} − P_k), each difference taken exactly first.
 using Hodograph = std::vector<std::array<double, 2>>;
 
+// to_double(a − b): when a and b are doubles (point enclosures) and their
+// double difference is exact (its two-sum error is 0), that difference is
+// the value itself; otherwise the exact difference, converted.
+double difference(const Rational& a, const Rational& b) {
+  const internal::FI fa = internal::to_interval(a), fb = internal::to_interval(b);
+  if (fa.inf() == fa.sup() && fb.inf() == fb.sup()) {
+    const double x = fa.inf(), y = -fb.inf(), s = x + y, yy = s - x;
+    if (std::isfinite(s) && (x - (s - yy)) + (y - yy) == 0) return s;
+  }
+  return to_double(a - b);
+}
+
 Hodograph hodograph(const BezierPiece& piece) {
   const int n = static_cast<int>(piece.control.size()) - 1;
   Hodograph d;
+  d.reserve(n);
   for (int k = 0; k < n; ++k)
-    d.push_back({n * to_double(piece.control[k + 1].x - piece.control[k].x),
-                 n * to_double(piece.control[k + 1].y - piece.control[k].y)});
+    d.push_back({n * difference(piece.control[k + 1].x, piece.control[k].x),
+                 n * difference(piece.control[k + 1].y, piece.control[k].y)});
   return d;
 }
 
 // Speed |B'(s)| in metres per unit of local parameter: de Casteljau on the
 // hodograph (display).
-double speed(Hodograph d, double s) {
-  const int n = static_cast<int>(d.size());
+double speed(const Hodograph& h, double s) {
+  const int n = static_cast<int>(h.size());
   if (n < 1) return 0;
+  std::array<std::array<double, 2>, 8> small;  // no allocation for degree <= 8
+  Hodograph large;
+  std::array<double, 2>* d = small.data();
+  if (n > 8) {
+    large = h;
+    d = large.data();
+  } else {
+    std::copy(h.begin(), h.end(), small.begin());
+  }
   for (int r = 1; r < n; ++r)
     for (int k = 0; k + r < n; ++k) d[k] = {(1 - s) * d[k][0] + s * d[k + 1][0], (1 - s) * d[k][1] + s * d[k + 1][1]};
   return std::hypot(d[0][0], d[0][1]);

@@ -3,6 +3,8 @@
 // interval filter first and the exact test when the filter cannot decide.
 #include <algorithm>
 #include <array>
+#include <boost/container/small_vector.hpp>
+#include <boost/range/iterator_range.hpp>
 #include <cmath>
 #include <memory>
 
@@ -11,6 +13,7 @@
 #include "fixel/internal/exact_lp.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/polynomial.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/internal/region_targets.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
@@ -109,18 +112,43 @@ struct FilteredHalfspaces {
     return undecided ? kUndecided : 1;
   }
 
+  // T(g) of ray_magnitudes enclosed (see SeatingTarget::magnitudes): lo the
+  // largest β_k/α_k over α_k > 0 (closed iff one has β_k > 0), hi the
+  // smallest over α_k < 0. False when a sign is undecided or T may be empty.
+  bool magnitudes(const std::array<FI, 3>& g, internal::FMagnitudes& T) const {
+    internal::Protect guard;
+    T = internal::FMagnitudes{};
+    T.lo = FI(0);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      const FI al = alpha(k, g);
+      const int sa = certain_sign(al), sb = certain_sign(beta[k]);
+      if (sa == kUndecided || sb == kUndecided || (sa == 0 && sb > 0)) return false;
+      if (sa > 0) {
+        const FI v = beta[k] / al;
+        T.lo = FI(std::max(T.lo.inf(), v.inf()), std::max(T.lo.sup(), v.sup()));
+        T.lo_closed = T.lo_closed || sb > 0;
+      } else if (sa < 0) {
+        const FI v = beta[k] / al;
+        T.hi = T.has_hi ? FI(std::min(T.hi.inf(), v.inf()), std::min(T.hi.sup(), v.sup())) : v;
+        T.has_hi = true;
+      }
+    }
+    return !T.has_hi || T.hi.inf() > T.lo.sup();
+  }
+
   // A Farkas certificate that no μ >= 0 has a_k·(b0 + Σ μ_j g_j) ≥ c_k for
   // every k: y >= 0 with Σ_k y_k a_k·g_j <= 0 for every j and y·β > 0. A
   // candidate y is found in doubles (three halfspaces: the vertices of the
   // feasible polygon on the simplex Σ y = 1, then its centre at half the best
   // y·β) and checked in intervals. True only when certified.
-  bool certify_infeasible(const std::vector<std::array<FI, 3>>& gens) const {
+  bool certify_infeasible(const std::array<FI, 3>* gens, std::size_t n) const {
     if (a.size() != 3) return false;
     using V3 = std::array<double, 3>;
-    std::vector<V3> u;  // constraints u·y <= 0
+    using V3s = boost::container::small_vector<V3, 24>;  // no allocation for small cones
+    V3s u;                                               // constraints u·y <= 0
     {
       internal::Protect guard;
-      for (const auto& g : gens) {
+      for (const auto& g : boost::make_iterator_range(gens, gens + n)) {
         V3 c;
         for (int k = 0; k < 3; ++k) c[k] = CGAL::to_double(alpha(k, g));
         u.push_back(c);
@@ -130,8 +158,8 @@ struct FilteredHalfspaces {
     const V3 b{CGAL::to_double(beta[0]), CGAL::to_double(beta[1]), CGAL::to_double(beta[2])};
     auto dot3 = [](const V3& x, const V3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
     // Vertices: u_p·y = u_q·y = 0, Σ y = 1.
-    auto vertices = [&](const std::vector<V3>& cons) {
-      std::vector<V3> out;
+    auto vertices = [&](const V3s& cons) {
+      V3s out;
       for (std::size_t p = 0; p < cons.size(); ++p)
         for (std::size_t q = p + 1; q < cons.size(); ++q) {
           const V3 &r0 = cons[p], &r1 = cons[q];
@@ -149,7 +177,7 @@ struct FilteredHalfspaces {
     double best = 0;
     for (const auto& y : vertices(u)) best = std::max(best, dot3(b, y));
     if (!(best > 0)) return false;
-    std::vector<V3> cons = u;
+    V3s cons = u;
     cons.push_back({best / 2 - b[0], best / 2 - b[1], best / 2 - b[2]});  // y·β >= best/2
     const auto vs = vertices(cons);
     if (vs.empty()) return false;
@@ -159,7 +187,7 @@ struct FilteredHalfspaces {
     for (auto& x : y) x = std::max(x, 0.0);
     // Certify with the data's enclosures; y is taken as exact.
     internal::Protect guard;
-    for (const auto& g : gens) {
+    for (const auto& g : boost::make_iterator_range(gens, gens + n)) {
       const FI t = FI(y[0]) * alpha(0, g) + FI(y[1]) * alpha(1, g) + FI(y[2]) * alpha(2, g);
       if (!(t.sup() <= 0)) return false;
     }
@@ -170,7 +198,7 @@ struct FilteredHalfspaces {
 
 // The one-step seating set S (paper §4): convex, so a cone reaches it iff
 // every generator does.
-class SeatingTarget final : public RegionTarget {
+class SeatingTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
   SeatingTarget(const SeatingSet& S, const VectorQ& b0) : S_(S), b0_(b0), filtered_(S.halfspaces, b0) {
     for (const auto& h : S.halfspaces) beta_.push_back(h.c - h.a.dot(b0));
@@ -204,6 +232,16 @@ class SeatingTarget final : public RegionTarget {
     return m;
   }
   const char* push_model() const override { return "step"; }
+  internal::IntervalTarget* interval_target() override { return this; }
+  int interval_ray_hits(const internal::FGen& g) const override { return filtered_.ray_hits(g); }
+  bool interval_magnitudes(const internal::FGen& g, internal::FMagnitudes& T) const override {
+    return filtered_.magnitudes(g, T);
+  }
+  bool certify_misses(const internal::FGen* gens, std::size_t n) override {
+    if (!filtered_.certify_infeasible(gens, n)) return false;
+    if (stats) ++stats->lp_tests;
+    return true;
+  }
   const char* name() const override { return "S"; }
 
   // Does the ray of g meet S: the interval filter, then the exact ray test.
@@ -226,8 +264,12 @@ class SeatingTarget final : public RegionTarget {
     // Every ray hits: the exact magnitudes (they are part of the answer).
     std::vector<Magnitudes> T;
     bool all_half = true;
-    for (const auto& g : gens) {
-      T.push_back(magnitudes(g));
+    for (std::size_t j = 0; j < gens.size(); ++j) {
+      // Equal generators (a straight piece's tight cone repeats its pair)
+      // share their magnitudes.
+      std::size_t i = 0;
+      while (i < j && gens[i] != gens[j]) ++i;
+      T.push_back(i < j ? T[i] : magnitudes(gens[j]));
       if (T.back().empty) throw InternalError("region: a certified ray hit has no exact magnitudes");
       all_half = all_half && T.back().half_line();
     }
@@ -253,7 +295,7 @@ class SeatingTarget final : public RegionTarget {
     if (!force_exact()) {
       std::vector<std::array<FI, 3>> fg;
       for (const auto& g : gens) fg.push_back(to_interval3(g));
-      const bool certified = filtered_.certify_infeasible(fg);
+      const bool certified = filtered_.certify_infeasible(fg.data(), fg.size());
       internal::record_filter(FilterSite::kOutTest, certified);
       if (certified) return true;
     }

@@ -134,6 +134,36 @@ GTEST_TEST(BezierPiece, DeCasteljauSplitReproducesBothHalves) {
   EXPECT_TRUE(eq(mid.point(1), piece.point(Rational(1, 2))));
 }
 
+// The halving split (the region's subdivision takes (a + b)/2 with a gcd-free
+// halving) gives exactly the control points of the general lerp formula,
+// on coordinates with odd denominators.
+GTEST_TEST(BezierPiece, HalvingSplitEqualsTheGeneralDeCasteljauSplit) {
+  std::mt19937_64 rng(3);
+  for (int trial = 0; trial < 20; ++trial) {
+    BezierPiece piece{0, test::random_rational(rng, -3, 3, 7), 0, {}};
+    piece.u1 = piece.u0 + test::random_rational(rng, 1, 4, 9);
+    for (int k = 0; k <= 3; ++k)
+      piece.control.push_back(
+          {test::random_rational(rng, -5, 5, 3 + trial % 5), test::random_rational(rng, -5, 5, 15)});
+    // The same split with lerp(a, b, s) = a + s (b − a).
+    std::vector<Vec2> left, right(4), pts = piece.control;
+    const Rational s(1, 2);
+    for (std::size_t level = 0; level < 4; ++level) {
+      left.push_back(pts.front());
+      right[3 - level] = pts[3 - level];
+      for (std::size_t i = 0; i + 1 < 4 - level; ++i)
+        pts[i] = {pts[i].x + s * (pts[i + 1].x - pts[i].x), pts[i].y + s * (pts[i + 1].y - pts[i].y)};
+    }
+    const auto halves = piece.split(s);
+    EXPECT_EQ(halves.first.u1, piece.u0 + s * (piece.u1 - piece.u0));
+    EXPECT_EQ(halves.second.u0, halves.first.u1);
+    for (std::size_t k = 0; k < 4; ++k) {
+      EXPECT_TRUE(eq(halves.first.control[k], left[k])) << "trial " << trial << " left " << k;
+      EXPECT_TRUE(eq(halves.second.control[k], right[k])) << "trial " << trial << " right " << k;
+    }
+  }
+}
+
 GTEST_TEST(Curve, RejectsBadKnotsAndControlCounts) {
   const std::vector<Vec2> pts = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   auto message = [](Curve c) {

@@ -5,15 +5,19 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfenv>
+#include <cmath>
 #include <random>
 #include <regex>
 
 #include "fixel/guaranteed.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
+#include "fixel/scene_json.h"
 #include "fixel/seat_report.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
@@ -262,6 +266,106 @@ GTEST_TEST(Filter, SustainedMembershipAgreesWithTheExactJamAndEscapeTests) {
   EXPECT_GT(in, 0);  // both answers occur
   EXPECT_LT(in, 200);
   EXPECT_GT(filter_stats().at(FilterSite::kJam).certified, 0);
+}
+
+// The region's interval pre-test (FilterSite::kRegionTest) decides OUT and
+// partial segments and corners from enclosures; a piece that is exactly
+// straight with coordinates in fifths and thirds (not doubles) has legs
+// whose orientations the enclosures cannot certify, so its pre-test falls
+// back to the exact path, and the answers stay identical.
+GTEST_TEST(Filter, AStraightPieceInThirdsFallsBackFromTheRegionPreTest) {
+  const std::string scene_json = R"({"name": "flat bottom", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"], "boundary": [{"type": "bspline", "degree": 3,
+      "knots": ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13", "14", "15", "16", "17", "18"],
+      "control_points": [["-2", "1"], ["-11/5", "0"], ["-2", "-1"], ["-1", "-9/5"], ["-1/3", "-9/5"], ["1/3", "-9/5"],
+        ["1", "-9/5"], ["2", "-1"], ["11/5", "0"], ["2", "1"], ["1", "9/5"], ["-1", "9/5"], ["-2", "1"], ["-11/5", "0"],
+        ["-2", "-1"]]}]},
+    "fixels": [{"point": ["-32/15", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},
+      {"point": ["0", "-2"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},
+      {"point": ["5/6", "-5/3"], "normal": ["-7/25", "24/25"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],
+    "pusher": {"mu": "0"}})";
+  const Scene scene = parse_scene(scene_json, "flat bottom");
+  const SeatingSet S = seating_set(scene);
+  for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+    RegionOptions opt;
+    opt.resolution = Rational(1, 64);
+    opt.pusher_mu = mu;
+    reset_filter_stats();
+    const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+    EXPECT_GT(pre.certified, 10) << "mu " << to_string(mu);
+    EXPECT_GE(pre.fallbacks, 1) << "mu " << to_string(mu);
+    EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); })) << "mu " << to_string(mu);
+  }
+}
+
+// IN answers certified on enclosures keep their exact magnitudes waiting
+// until the merge, which computes only those that can decide a run's ends:
+// a polyline ellipse (long IN runs of straight pieces and corners) gives
+// the same JSON as the exact path, merged and unmerged, with and without
+// pusher friction.
+GTEST_TEST(Filter, DeferredMagnitudesOfLongInRunsGiveIdenticalJson) {
+  std::string pts;
+  const int edges = 400;
+  for (int k = 0; k <= edges; ++k) {
+    const double phi = 2 * M_PI * (k % edges) / edges;
+    auto grid = [](double x) { return "\"" + std::to_string(std::llround(x * 1048576.0)) + "/1048576\""; };
+    pts += (k ? ", [" : "[") + grid(2 * std::cos(phi)) + ", " + grid(std::sin(phi)) + "]";
+  }
+  const Scene scene = parse_scene(
+      R"({"name": "ellipse", "time_step": "1", "body": {"dof": 3, "velocity": ["0", "0", "0"], "boundary": [)"
+      R"({"type": "polyline", "points": [)" +
+          pts +
+          R"(]}]}, "fixels": [{"point": ["-2", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},)"
+          R"({"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},)"
+          R"({"point": ["1", "-1"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],)"
+          R"( "pusher": {"mu": "0"}})",
+      "ellipse");
+  const SeatingSet S = seating_set(scene);
+  for (const Rational& mu : {Rational(0), Rational(1, 10)})
+    for (const bool merge : {true, false}) {
+      RegionOptions opt;
+      opt.pusher_mu = mu;
+      opt.merge = merge;
+      const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+      EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); }))
+          << "mu " << to_string(mu) << " merge " << merge;
+      const Region r = compute_region(scene, S, opt);
+      EXPECT_GT(
+          std::count_if(r.intervals.begin(), r.intervals.end(),
+                        [](const RegionInterval& i) { return i.status == RegionStatus::kIn && !i.magnitudes.empty; }),
+          0);
+    }
+}
+
+// The subdivision's lazy pieces: halving enclosures keeps them around the
+// exact control points, and the exact points made from the boundary piece
+// at depth 12 equal those of twelve exact halvings.
+GTEST_TEST(Filter, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
+  const BezierPiece root{0, Rational(1, 3), Rational(2), {{0, 0}, {Rational(1, 3), 2}, {3, Rational(5, 7)}, {4, 0}}};
+  ForceExactScope filtered(false);
+  internal::LazyPiece lazy(root, true);
+  BezierPiece exact = root;
+  for (int depth = 0; depth < 12; ++depth) {
+    const bool left = depth % 3 == 1;
+    const auto h = lazy.halves();
+    lazy = left ? h.first : h.second;
+    const auto e = exact.split(Rational(1, 2));
+    exact = left ? e.first : e.second;
+  }
+  ASSERT_EQ(lazy.enclosures().size(), exact.control.size());
+  for (std::size_t k = 0; k < exact.control.size(); ++k) {
+    const double x = to_double(exact.control[k].x), y = to_double(exact.control[k].y);
+    EXPECT_TRUE(lazy.enclosures()[k].x.inf() <= x && x <= lazy.enclosures()[k].x.sup()) << k;
+    EXPECT_TRUE(lazy.enclosures()[k].y.inf() <= y && y <= lazy.enclosures()[k].y.sup()) << k;
+  }
+  EXPECT_EQ(lazy.u0(), exact.u0);
+  EXPECT_EQ(lazy.u1(), exact.u1);
+  const BezierPiece& made = lazy.exact();
+  for (std::size_t k = 0; k < exact.control.size(); ++k) {
+    EXPECT_EQ(made.control[k].x, exact.control[k].x) << k;
+    EXPECT_EQ(made.control[k].y, exact.control[k].y) << k;
+  }
 }
 
 GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {

@@ -22,10 +22,13 @@ enum class FilterSite {
   kCone,         ///< The extreme moments of a segment's tight wrench cone.
   kMembership,   ///< Side of a half-space a·p ≥ c or > c (S, G and polyhedron membership).
   kJam,          ///< Signs of J's escape and jam rows at an exact seated pose (Q(√d)).
+  kRegionTest,   ///< A region segment or point test on enclosures of its cone (OUT and partial need
+                 ///< no exact value; IN then computes its exact magnitudes).
   kCount,
 };
 
-/// "lemke", "ray test", "out test", "orientation", "cone", "membership", "jam test".
+/// "lemke", "ray test", "out test", "orientation", "cone", "membership", "jam test",
+/// "region test".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and

@@ -20,6 +20,10 @@ struct GuaranteedSet;
 struct SeatingSet;
 struct SustainedSet;
 
+namespace internal {
+class IntervalTarget;  // internal/region_filter.h
+}
+
 /// A target of the pushing region. Wrenches and generators are in frame A
 /// (f_x, f_y, moment about the centre of mass); every answer is exact.
 class RegionTarget {
@@ -64,6 +68,10 @@ class RegionTarget {
 
   /// Throws if the target cannot answer for a pusher with friction `mu`.
   virtual void check_pusher(const Rational& mu) const { (void)mu; }
+
+  /// The target's answers on interval enclosures (internal/region_filter.h),
+  /// or null: the region code then asks only the exact questions above.
+  virtual internal::IntervalTarget* interval_target() { return nullptr; }
 
   /// Counters of the run (set by the region code before use; may be null).
   RegionStats* stats = nullptr;

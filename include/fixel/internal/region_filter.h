@@ -1,0 +1,115 @@
+#pragma once
+// Interval pre-tests of the pushing region (docs/performance.md, issue 12):
+// a segment's tight wrench cone and a point's push wrenches are built as
+// interval enclosures straight from the control points, with every decision
+// of the exact construction (zero legs, direction extremes, spans) taken on a
+// certified sign. A target that answers ray and OUT tests on enclosures then
+// decides OUT and partial without one exact rational; IN (whose magnitudes
+// are part of the answer) and anything undecided go to the exact path, which
+// recomputes from scratch, so no answer depends on which path ran.
+
+#include <array>
+#include <boost/container/small_vector.hpp>
+#include <optional>
+#include <vector>
+
+#include "fixel/internal/filtered.h"
+#include "fixel/region.h"
+#include "fixel/wrench_cone.h"
+
+namespace fixel::internal {
+
+// A wrench generator (f_x, f_y, moment about the centre of mass) enclosed.
+using FGen = std::array<FI, 3>;
+
+// Enclosure of a target's exact ray magnitudes T(g) = {τ > 0 : b0 + τ g in
+// the target}, certified non-empty: lo (closed or open), hi when bounded
+// (then closed).
+struct FMagnitudes {
+  FI lo;
+  bool lo_closed = false;
+  bool has_hi = false;
+  FI hi;
+};
+
+// What a target answers on enclosures. Its owner promises: contains_cone is
+// true iff every generator's ray hits, test_point is contains_cone (IN or
+// OUT), and misses is true iff no generator's ray hits and the LP proves the
+// cone misses (the Farkas certificate below is one such proof).
+class IntervalTarget {
+ public:
+  virtual ~IntervalTarget() = default;
+  // Does the ray of g meet the target: 1 hit, 0 miss, kUndecided.
+  virtual int interval_ray_hits(const FGen& g) const = 0;
+  // True only when certified that cone(gens[0..n)) misses the target; then the
+  // target counts the LP test it stands for (RegionStats::lp_tests).
+  virtual bool certify_misses(const FGen* gens, std::size_t n) = 0;
+  // T(g) enclosed; false when a sign is undecided or T(g) may be empty. The
+  // owner's contains_cone reports common_magnitudes (region_targets.h) of
+  // these T and half_line = no T has an upper end.
+  virtual bool interval_magnitudes(const FGen& g, FMagnitudes& out) const = 0;
+};
+
+// Enclosure of the magnitudes an IN answer reports (certified non-empty).
+struct MagnitudeBounds {
+  FI lo;
+  bool lo_closed = true;
+  bool has_hi = false;
+  FI hi;
+  bool hi_closed = true;
+  bool all_half = true;  // no generator's T(g) has an upper end
+};
+
+// The pre-test's answer.
+enum class Quick {
+  kIn,       // certified IN: the exact path runs for the magnitudes
+  kOut,      // certified OUT (a segment: the LP test is counted)
+  kPartial,  // certified partial (a segment that must split, a point with no defined fan)
+  kUnknown,  // some sign undecided: the exact path decides
+};
+
+// A piece of the subdivision: a parameter range [u0, u1] of a boundary
+// piece, enclosures of its control points (halved in intervals), and its
+// exact control points only when asked for (the exact path), then made from
+// the boundary piece (the control points of a sub-curve are unique, so they
+// equal those of repeated halving). Children of a piece whose exact points
+// were asked for are halved exactly.
+class LazyPiece {
+ public:
+  using Enclosures = boost::container::small_vector<FVec2, 4>;
+  // The whole boundary piece; with `enclose`, its control points' enclosures.
+  LazyPiece(const BezierPiece& root, bool enclose);
+  int curve() const { return root_->curve; }
+  const Rational& u0() const { return u0_; }
+  const Rational& u1() const { return u1_; }
+  // Empty when made without enclosures.
+  const Enclosures& enclosures() const { return ctrl_; }
+  const BezierPiece& exact() const;
+  // The halves at local parameter 1/2.
+  std::pair<LazyPiece, LazyPiece> halves() const;
+
+ private:
+  LazyPiece(const BezierPiece* root, Rational u0, Rational u1) : root_(root), u0_(std::move(u0)), u1_(std::move(u1)) {}
+  const BezierPiece* root_;
+  Rational u0_, u1_;
+  Enclosures ctrl_;
+  mutable std::optional<BezierPiece> exact_;
+  mutable bool asked_ = false;
+};
+
+// The tight-cone segment test of classify (region.cpp) for `families` of
+// push directions with pusher friction mu, centre of mass c, from the
+// enclosures of the segment's control points. On kIn,
+// `bounds` (if given) gets the enclosure of the answer's magnitudes when it
+// can be certified.
+Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const Rational& mu,
+                    const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                    std::optional<MagnitudeBounds>* bounds = nullptr);
+
+// The point test of status_at: tangents t_in, t_out (enclosures of the exact
+// ones) at `point`.
+Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
+                  const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                  std::optional<MagnitudeBounds>* bounds = nullptr);
+
+}  // namespace fixel::internal

@@ -1,0 +1,325 @@
+// Interval pre-tests of the pushing region (internal/region_filter.h): the
+// decisions of segment_bounds, segment_wrench_cone (tight), push_extremes
+// and the target's ray and OUT tests, each on a certified sign of an
+// enclosure; the first sign the enclosures cannot certify abandons the
+// pre-test (Quick::kUnknown) and the exact path decides.
+#include "fixel/internal/region_filter.h"
+
+#include <algorithm>
+#include <boost/container/small_vector.hpp>
+
+namespace fixel::internal {
+
+namespace {
+
+// Small fixed-capacity vectors: no allocation for the usual few control
+// points, generators and families.
+using FVecs = boost::container::small_vector<FVec2, 8>;
+using FGens = boost::container::small_vector<FGen, 8>;
+using Cones = boost::container::small_vector<FGens, 2>;
+
+// Thrown at the first uncertified sign; caught by the two entry points.
+struct Undecided {};
+
+int sign_of(const FI& x) {
+  const int s = certain_sign(x);
+  if (s == kUndecided) throw Undecided{};
+  return s;
+}
+
+FI fcross(const FVec2& a, const FVec2& b) { return a.x * b.y - a.y * b.x; }
+FI fdot(const FVec2& a, const FVec2& b) { return a.x * b.x + a.y * b.y; }
+FVec2 fsub(const FVec2& a, const FVec2& b) { return {a.x - b.x, a.y - b.y}; }
+FVec2 frot90(const FVec2& v) { return {-v.y, v.x}; }
+
+// is_zero(v), certified.
+bool is_zero_f(const FVec2& v) {
+  const int sx = certain_sign(v.x), sy = certain_sign(v.y);
+  if ((sx != 0 && sx != kUndecided) || (sy != 0 && sy != kUndecided)) return false;
+  if (sx == 0 && sy == 0) return true;
+  throw Undecided{};
+}
+
+// push_direction (wrench_cone.cpp) on enclosures, the same formula.
+FVec2 fpush(const FVec2& tangent, EdgeFamily family, const FI& mu) {
+  const FVec2 n = frot90(tangent), t = frot90(n);
+  switch (family) {
+    case EdgeFamily::kNormal:
+      return n;
+    case EdgeFamily::kPlus:
+      return {n.x + mu * t.x, n.y + mu * t.y};
+    case EdgeFamily::kMinus:
+    case EdgeFamily::kWholeCone:
+      return {n.x - mu * t.x, n.y - mu * t.y};
+  }
+  return n;
+}
+
+// direction_extremes (wrench_cone.cpp) on enclosures: the same decisions in
+// the same order; the indices of the extremes. False when not pointed.
+bool extremes(const FVecs& v, std::size_t& first, std::size_t& last) {
+  auto orient = [&](std::size_t i, std::size_t j) { return i == j ? 0 : sign_of(fcross(v[i], v[j])); };
+  int s = -1, e = -1;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    bool all_ccw = true, all_cw = true;
+    for (std::size_t j = 0; j < v.size() && (all_ccw || all_cw); ++j) {
+      const int o = orient(i, j);
+      all_ccw = all_ccw && o >= 0;
+      all_cw = all_cw && o <= 0;
+    }
+    if (all_ccw && s < 0) s = static_cast<int>(i);
+    if (all_cw && e < 0) e = static_cast<int>(i);
+  }
+  if (s < 0 || e < 0) return false;
+  const FVec2 &f = v[s], &l = v[e];
+  const int c = orient(s, e);
+  if (c < 0 || (c == 0 && sign_of(fdot(f, l)) < 0)) return false;
+  for (std::size_t j = 0; j < v.size(); ++j) {
+    const int a = orient(s, j);
+    bool inside;
+    if (c == 0)
+      inside = a == 0 && sign_of(fdot(f, v[j])) > 0;
+    else
+      inside = a >= 0 && orient(j, e) >= 0;
+    if (!inside && !(c == 0 && a == 0 && sign_of(fdot(f, v[j])) > 0)) return false;
+  }
+  first = static_cast<std::size_t>(s);
+  last = static_cast<std::size_t>(e);
+  return true;
+}
+
+// min_k and max_k of (P_k − c) ⊗ d enclosed (the tight cone's moments; the
+// exact path takes the same extremes of the same values).
+void moment_range(const FVecs& r, const FVec2& d, FI& lo, FI& hi) {
+  double lo_inf = 0, lo_sup = 0, hi_inf = 0, hi_sup = 0;
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const FI m = fcross(r[k], d);
+    lo_inf = k ? std::min(lo_inf, m.inf()) : m.inf();
+    lo_sup = k ? std::min(lo_sup, m.sup()) : m.sup();
+    hi_inf = k ? std::max(hi_inf, m.inf()) : m.inf();
+    hi_sup = k ? std::max(hi_sup, m.sup()) : m.sup();
+  }
+  lo = FI(lo_inf, lo_sup);
+  hi = FI(hi_inf, hi_sup);
+}
+
+FI fmax(const FI& a, const FI& b) { return FI(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
+FI fmin(const FI& a, const FI& b) { return FI(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup())); }
+
+// cos_half_angle_lower(a, b) (wrench_cone.cpp) enclosed. With C = cos(Δ/2)
+// exact: its answer c passed the exact test c <= C; it starts at the
+// double estimate floored to 2^-20 (within 10^-6 + 2^-20 below C: the
+// estimate's error is far below 10^-6 once a, b are normalised), and each
+// step down from a c' > C lands at c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20.
+// Certified only when that lower end is positive (then c > 0).
+bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
+  const FI Q = fdot(a, a) * fdot(b, b);
+  if (!(Q.inf() > 0)) return false;
+  const FI h = (1 + fdot(a, b) / CGAL::sqrt(Q)) / 2;
+  if (!(h.sup() > 0)) return false;
+  const FI C = CGAL::sqrt(FI(std::max(0.0, h.inf()), h.sup()));
+  const FI step(1.0 / 1048576);
+  const double low = std::min((C - FI(1e-6) - step).inf(), (C * FI(1 - 1.0 / 1024) - step).inf());
+  if (!(low > 0) || !(C.sup() >= low)) return false;
+  out = FI(low, C.sup());
+  return true;
+}
+
+// common_magnitudes (region_targets.cpp) enclosed: lo = max_j T_j.lo ·
+// sqrt_upper(|f_j|²), hi = min_j T_j.hi · sqrt_lower(|f_j|²) · c, where
+// sqrt_upper(x) ∈ [√x, √x + 2^-20] and sqrt_lower(x) ∈ [√x − 2^-20, √x].
+bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, const IntervalTarget& target,
+                   MagnitudeBounds& m) {
+  Protect guard;
+  FI c;
+  if (!cos_half_bounds(first, last, c)) return false;
+  const FI step(1.0 / 1048576);
+  m = MagnitudeBounds{};
+  m.lo = FI(0);
+  for (const auto& g : gens) {
+    FMagnitudes T;
+    if (!target.interval_magnitudes(g, T)) return false;
+    const FI f = CGAL::sqrt(g[0] * g[0] + g[1] * g[1]);
+    m.lo = fmax(m.lo, T.lo * FI(f.inf(), (f + step).sup()));
+    m.lo_closed = m.lo_closed && T.lo_closed;
+    m.all_half = m.all_half && !T.has_hi;
+    if (T.has_hi) {
+      const FI hi = T.hi * FI(std::max(0.0, (f - step).inf()), f.sup()) * c;
+      m.hi = m.has_hi ? fmin(m.hi, hi) : hi;
+      m.has_hi = true;
+    }
+  }
+  return !m.has_hi || m.hi.inf() > m.lo.sup();  // certainly not crossing
+}
+
+// The ray tests of every generator; kIn when all hit, else the OUT tests of
+// each cone in order (as classify asks target.misses), else partial.
+Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
+  boost::container::small_vector<boost::container::small_vector<int, 8>, 2> hits(cones.size());
+  bool all = true;
+  for (std::size_t c = 0; c < cones.size(); ++c)
+    for (const auto& g : cones[c]) {
+      const int h = target.interval_ray_hits(g);
+      if (h == kUndecided) throw Undecided{};
+      hits[c].push_back(h);
+      all = all && h == 1;
+    }
+  if (all) return Quick::kIn;
+  if (!segment) return Quick::kOut;
+  for (std::size_t c = 0; c < cones.size(); ++c) {
+    if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
+    if (target.certify_misses(cones[c].data(), cones[c].size())) return Quick::kOut;
+    throw Undecided{};  // the exact LP decides
+  }
+  return Quick::kPartial;
+}
+
+// On kIn: the enclosure of the answer's magnitudes (force parts spanning
+// first to last), when certified.
+void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const IntervalTarget& target,
+               std::optional<MagnitudeBounds>* bounds) {
+  FGens gens;
+  for (const auto& cone : cones) gens.insert(gens.end(), cone.begin(), cone.end());
+  MagnitudeBounds m;
+  if (common_bounds(gens, first, last, target, m)) *bounds = m;
+}
+
+}  // namespace
+
+LazyPiece::LazyPiece(const BezierPiece& root, bool enclose) : root_(&root), u0_(root.u0), u1_(root.u1) {
+  if (enclose)
+    for (const auto& p : root.control) ctrl_.push_back(to_interval(p));
+}
+
+const BezierPiece& LazyPiece::exact() const {
+  asked_ = true;
+  if (exact_) return *exact_;
+  if (u0_ == root_->u0 && u1_ == root_->u1) return *root_;
+  exact_ = root_->restrict_to(u0_, u1_);
+  return *exact_;
+}
+
+std::pair<LazyPiece, LazyPiece> LazyPiece::halves() const {
+  if (asked_) {  // the exact path ran here: halve exactly, as before
+    auto h = exact().split(Rational(1, 2));
+    std::pair<LazyPiece, LazyPiece> out{LazyPiece(root_, h.first.u0, h.first.u1),
+                                        LazyPiece(root_, h.second.u0, h.second.u1)};
+    out.first.exact_ = std::move(h.first);
+    out.second.exact_ = std::move(h.second);
+    for (LazyPiece* c : {&out.first, &out.second})
+      if (!ctrl_.empty())
+        for (const auto& p : c->exact_->control) c->ctrl_.push_back(to_interval(p));
+    return out;
+  }
+  const Rational um = (u0_ + u1_) / 2;
+  std::pair<LazyPiece, LazyPiece> out{LazyPiece(root_, u0_, um), LazyPiece(root_, um, u1_)};
+  if (ctrl_.empty()) return out;
+  // De Casteljau at 1/2 on the enclosures.
+  const std::size_t n = ctrl_.size();
+  Enclosures pts = ctrl_;
+  out.first.ctrl_.resize(n);
+  out.second.ctrl_.resize(n);
+  Protect guard;
+  for (std::size_t level = 0; level < n; ++level) {
+    out.first.ctrl_[level] = pts.front();
+    out.second.ctrl_[n - 1 - level] = pts[n - 1 - level];
+    for (std::size_t i = 0; i + 1 < n - level; ++i)
+      pts[i] = {(pts[i].x + pts[i + 1].x) / 2, (pts[i].y + pts[i + 1].y) / 2};
+  }
+  return out;
+}
+
+Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const Rational& mu,
+                    const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                    std::optional<MagnitudeBounds>* bounds) {
+  Cones cones;
+  FVecs forces;
+  try {
+    {
+      Protect guard;
+      const FVec2 fc = to_interval(c);
+      const FI fmu = to_interval(mu);
+      FVecs P, r, legs;
+      if (control.empty()) throw Undecided{};
+      for (const auto& p : control) {
+        P.push_back(p);
+        r.push_back(fsub(P.back(), fc));
+      }
+      for (std::size_t k = 0; k + 1 < P.size(); ++k) {
+        const FVec2 leg = fsub(P[k + 1], P[k]);
+        if (!is_zero_f(leg)) legs.push_back(leg);
+      }
+      if (legs.empty()) throw Undecided{};  // the exact path reports the degenerate segment
+      std::size_t s = 0, e = 0;
+      if (!extremes(legs, s, e)) return Quick::kPartial;  // not pointed: split
+      for (const EdgeFamily f : families) {
+        const FVec2 ds = fpush(legs[s], f, fmu);
+        const FVec2 de = fpush(legs[e], f == EdgeFamily::kWholeCone ? EdgeFamily::kPlus : f, fmu);
+        const int span = sign_of(fcross(ds, de));
+        if (span < 0 || (span == 0 && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
+        forces.push_back(ds);
+        forces.push_back(de);
+        FGens gens;
+        for (const FVec2& d : {ds, de}) {
+          FI lo, hi;
+          moment_range(r, d, lo, hi);
+          gens.push_back({d.x, d.y, lo});
+          gens.push_back({d.x, d.y, hi});
+        }
+        cones.push_back(std::move(gens));
+      }
+    }
+    const Quick q = decide(cones, target, true);
+    if (q != Quick::kIn || !bounds) return q;
+  } catch (const Undecided&) {
+    return Quick::kUnknown;
+  }
+  try {  // IN is decided; the bounds are optional
+    std::size_t s = 0, e = 0;
+    bool pointed = false;
+    {
+      Protect guard;
+      pointed = extremes(forces, s, e);
+    }
+    if (pointed) in_bounds(cones, forces[s], forces[e], target, bounds);
+  } catch (const Undecided&) {
+  }
+  return Quick::kIn;
+}
+
+Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
+                  const std::vector<EdgeFamily>& families, IntervalTarget& target,
+                  std::optional<MagnitudeBounds>* bounds) {
+  Cones cones(1);
+  FVec2 first, last;
+  try {
+    {
+      Protect guard;
+      const FVec2 &ti = t_in, &to = t_out;
+      if (is_zero_f(ti) || is_zero_f(to)) return Quick::kPartial;  // undefined normal (cusp)
+      const FI fmu = to_interval(mu);
+      FVecs dirs;
+      for (const EdgeFamily f : families) {
+        dirs.push_back(fpush(ti, f, fmu));
+        dirs.push_back(fpush(to, f, fmu));
+      }
+      std::size_t s = 0, e = 0;
+      if (!extremes(dirs, s, e)) return Quick::kPartial;  // fan of π or more
+      const FVec2 r = fsub(to_interval(point), to_interval(c));
+      for (const std::size_t k : {s, e}) cones[0].push_back({dirs[k].x, dirs[k].y, fcross(r, dirs[k])});
+      first = dirs[s];
+      last = dirs[e];
+    }
+    const Quick q = decide(cones, target, false);
+    if (q != Quick::kIn || !bounds) return q;
+  } catch (const Undecided&) {
+    return Quick::kUnknown;
+  }
+  try {
+    in_bounds(cones, first, last, target, bounds);
+  } catch (const Undecided&) {
+  }
+  return Quick::kIn;
+}
+
+}  // namespace fixel::internal
