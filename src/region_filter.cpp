@@ -259,14 +259,13 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const R
         if (span < 0 || (span == 0 && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
         forces.push_back(ds);
         forces.push_back(de);
-        FGens gens;
+        FGens& gens = cones.emplace_back();  // filled in place: no small_vector move
         for (const FVec2& d : {ds, de}) {
           FI lo, hi;
           moment_range(r, d, lo, hi);
           gens.push_back({d.x, d.y, lo});
           gens.push_back({d.x, d.y, hi});
         }
-        cones.push_back(std::move(gens));
       }
     }
     const Quick q = decide(cones, target, true);
