@@ -255,8 +255,11 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const R
       for (const EdgeFamily f : families) {
         const FVec2 ds = fpush(legs[s], f, fmu);
         const FVec2 de = fpush(legs[e], f == EdgeFamily::kWholeCone ? EdgeFamily::kPlus : f, fmu);
-        const int span = sign_of(fcross(ds, de));
-        if (span < 0 || (span == 0 && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
+        // One leg (a straight piece): ds = de exactly, a nonzero vector, which
+        // its enclosure alone cannot show (x·y − y·x is not a point).
+        const bool same = s == e && f != EdgeFamily::kWholeCone;
+        const int span = same ? 0 : sign_of(fcross(ds, de));
+        if (span < 0 || (span == 0 && !same && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
         forces.push_back(ds);
         forces.push_back(de);
         FGens& gens = cones.emplace_back();  // filled in place: no small_vector move
