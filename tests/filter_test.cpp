@@ -84,6 +84,22 @@ GTEST_TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
   EXPECT_EQ(force_exact(), before);
 }
 
+GTEST_TEST(Filter, StraightEdgesWithNonDyadicEndsPassTheRegionPreTestWithoutTheExactPath) {
+  // example2_rounded's four straight edges end at tenths: one leg per piece,
+  // whose push directions at both ends are the same vector. Before that was
+  // recognised, 36 of its 82 region tests fell back; now only the few whose
+  // target tests need the exact LP do.
+  const Scene scene = test::scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 1024);
+  reset_filter_stats();
+  const Region r = run(false, [&] { return compute_region(scene, S, opt); });
+  const FilterCounts c = filter_stats().at(FilterSite::kRegionTest);
+  EXPECT_EQ(c.certified + c.fallbacks, r.stats.cone_tests);
+  EXPECT_LE(c.fallbacks, 8) << c.certified << " certified";
+}
+
 GTEST_TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
   for (const char* name : {"example2_rounded", "blob", "polygon", "blob32", "nonunique_part"}) {
     const Scene scene = test::scene_file(name);
