@@ -14,10 +14,35 @@ Vec2 lerp(const Vec2& a, const Vec2& b, const Rational& t) { return {a.x + t * (
 bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 std::string text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
 
-Vec2 de_casteljau(std::vector<Vec2> pts, const Rational& s) {
-  for (std::size_t level = 1; level < pts.size(); ++level)
-    for (std::size_t i = 0; i + level < pts.size(); ++i) pts[i] = lerp(pts[i], pts[i + 1], s);
-  return pts.front();
+// One coordinate of de Casteljau at s, on storage reused per thread: each
+// step a += s·(b − a) with GMP's in-place operations, so no temporary
+// Rational is allocated (the region evaluates many points).
+void casteljau_coordinate(const std::vector<Vec2>& pts, bool y, const Rational& s, Rational& out) {
+  thread_local std::vector<Rational> c;
+  thread_local Rational step;
+  const std::size_t n = pts.size();
+  if (c.size() < n) c.resize(n);
+  for (std::size_t i = 0; i < n; ++i) mpq_set(c[i].backend().data(), (y ? pts[i].y : pts[i].x).backend().data());
+  mpq_ptr t = step.backend().data();
+  mpq_srcptr u = s.backend().data();
+  for (std::size_t level = 1; level < n; ++level)
+    for (std::size_t i = 0; i + level < n; ++i) {
+      mpq_ptr a = c[i].backend().data();
+      mpq_sub(t, c[i + 1].backend().data(), a);
+      mpq_mul(t, t, u);
+      mpq_add(a, a, t);
+    }
+  mpq_set(out.backend().data(), c[0].backend().data());
+}
+
+Vec2 de_casteljau(const std::vector<Vec2>& pts, const Rational& s) {
+  if (pts.empty()) throw InternalError("de Casteljau on no control points");
+  if (s == 0) return pts.front();  // the ends are control points
+  if (s == 1) return pts.back();
+  Vec2 out;
+  casteljau_coordinate(pts, false, s, out.x);
+  casteljau_coordinate(pts, true, s, out.y);
+  return out;
 }
 
 // Control points of the derivative (hodograph) of a Bézier curve.
@@ -124,6 +149,7 @@ Vec2 blossom(const std::vector<Rational>& U, const std::vector<Vec2>& P, int p, 
 Vec2 BezierPiece::point(const Rational& s) const { return de_casteljau(control, s); }
 
 Vec2 BezierPiece::derivative(const Rational& s, int k) const {
+  if (k == 0) return de_casteljau(control, s);
   std::vector<Vec2> pts = control;
   for (int i = 0; i < k; ++i) {
     if (pts.size() <= 1) return {Rational(0), Rational(0)};

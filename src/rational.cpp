@@ -1,6 +1,9 @@
 #include "fixel/rational.h"
 
+#include <gmp.h>
+
 #include <cctype>
+#include <cfenv>
 
 #include "fixel/error.h"
 
@@ -106,7 +109,19 @@ std::string to_string(const Rational& value) {
   return num.str() + "/" + den.str();
 }
 
-double to_double(const Rational& value) { return value.convert_to<double>(); }
+double to_double(const Rational& value) {
+  // Numerator and denominator exact in double: IEEE division rounds the
+  // quotient correctly, as the general conversion does, in a tenth of the time.
+  const auto* q = value.backend().data();
+  const mpz_srcptr num = mpq_numref(q), den = mpq_denref(q);
+  if (mpz_size(num) <= 1 && mpz_size(den) == 1 && std::fegetround() == FE_TONEAREST) {
+    constexpr mp_limb_t kExact = mp_limb_t(1) << 53;
+    const mp_limb_t n = mpz_getlimbn(num, 0), d = mpz_getlimbn(den, 0);
+    if (n < kExact && d < kExact)
+      return (mpz_sgn(num) < 0 ? -static_cast<double>(n) : static_cast<double>(n)) / static_cast<double>(d);
+  }
+  return value.convert_to<double>();
+}
 
 int sign(const Rational& value) { return value.sign(); }
 

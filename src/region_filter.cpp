@@ -168,8 +168,9 @@ Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
   if (!segment) return Quick::kOut;
   for (std::size_t c = 0; c < cones.size(); ++c) {
     if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
-    if (target.certify_misses(cones[c].data(), cones[c].size())) return Quick::kOut;
-    throw Undecided{};  // the exact LP decides
+    const int missed = target.certify_out_test(cones[c].data(), cones[c].size());
+    if (missed == 1) return Quick::kOut;
+    if (missed == kUndecided) throw Undecided{};  // the exact LP decides
   }
   return Quick::kPartial;
 }

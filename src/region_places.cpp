@@ -141,7 +141,12 @@ void locate_intervals(const Scene& scene, Region& region) {
     IntervalPlace place;
     const BezierPiece* first = index.at(r.curve, r.u0);
     const BezierPiece* last = index.at(r.curve, r.u1);
-    if (first) place.start_A = first->point(first->local(r.u0));
+    // Intervals tile each curve: a start is usually the previous end.
+    const RegionInterval* prev = region.places.empty() ? nullptr : &region.intervals[region.places.size() - 1];
+    if (first && prev && prev->curve == r.curve && prev->u1 == r.u0)
+      place.start_A = region.places.back().end_A;
+    else if (first)
+      place.start_A = first->point(first->local(r.u0));
     if (last) place.end_A = last->point(last->local(r.u1));
     // The pieces overlapping (u0, u1), in parameter order.
     const std::size_t end = index.curve_range(r.curve).second;

@@ -194,6 +194,40 @@ struct FilteredHalfspaces {
     const FI t = FI(y[0]) * beta[0] + FI(y[1]) * beta[1] + FI(y[2]) * beta[2];
     return t.inf() > 0;
   }
+
+  // A witness that some μ >= 0 with Σμ > 0 puts b0 + Σ μ_j g_j in the set: a
+  // direction d = Σ w_j g_j (w >= 0 exact doubles, not all 0) whose ray is
+  // certified to hit it (then μ = τw for a τ > 0 of that ray). Candidates:
+  // the generators' sum, then each pair at weights (16 − m, m), m = 1..15.
+  bool certify_meets(const std::array<FI, 3>* gens, std::size_t n) const {
+    if (n == 0) return false;
+    std::array<FI, 3> d;
+    {
+      internal::Protect guard;
+      d = gens[0];
+      for (std::size_t j = 1; j < n; ++j)
+        for (int i = 0; i < 3; ++i) d[i] += gens[j][i];
+    }
+    if (ray_hits(d) == 1) return true;
+    for (std::size_t p = 0; p < n; ++p)
+      for (std::size_t q = p + 1; q < n; ++q)
+        for (int m = 1; m < 16; ++m) {
+          {
+            internal::Protect guard;
+            for (int i = 0; i < 3; ++i) d[i] = FI(16 - m) * gens[p][i] + FI(m) * gens[q][i];
+          }
+          if (ray_hits(d) == 1) return true;
+        }
+    return false;
+  }
+
+  // misses() of a cone none of whose generators' rays hits: 1 missed
+  // (Farkas certificate), 0 met (a combination's ray hits), kUndecided.
+  int out_test(const std::array<FI, 3>* gens, std::size_t n) const {
+    if (certify_infeasible(gens, n)) return 1;
+    if (certify_meets(gens, n)) return 0;
+    return kUndecided;
+  }
 };
 
 // The one-step seating set S (paper §4): convex, so a cone reaches it iff
@@ -237,10 +271,10 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
   bool interval_magnitudes(const internal::FGen& g, internal::FMagnitudes& T) const override {
     return filtered_.magnitudes(g, T);
   }
-  bool certify_misses(const internal::FGen* gens, std::size_t n) override {
-    if (!filtered_.certify_infeasible(gens, n)) return false;
-    if (stats) ++stats->lp_tests;
-    return true;
+  int certify_out_test(const internal::FGen* gens, std::size_t n) override {
+    const int missed = filtered_.out_test(gens, n);
+    if (missed != kUndecided && stats) ++stats->lp_tests;
+    return missed;
   }
   const char* name() const override { return "S"; }
 
@@ -295,9 +329,9 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
     if (!force_exact()) {
       std::vector<std::array<FI, 3>> fg;
       for (const auto& g : gens) fg.push_back(to_interval3(g));
-      const bool certified = filtered_.certify_infeasible(fg.data(), fg.size());
-      internal::record_filter(FilterSite::kOutTest, certified);
-      if (certified) return true;
+      const int missed = filtered_.out_test(fg.data(), fg.size());
+      internal::record_filter(FilterSite::kOutTest, missed != kUndecided);
+      if (missed != kUndecided) return missed == 1;
     }
     const int n = static_cast<int>(gens.size());
     std::vector<internal::LinearConstraint> rows;

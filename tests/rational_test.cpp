@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+
 #include "fixel/error.h"
 
 namespace fixel {
@@ -76,6 +82,47 @@ GTEST_TEST(ToString, PrintsIntegersWithoutDenominator) {
   EXPECT_EQ(to_string(Rational(-4)), "-4");
   EXPECT_EQ(to_string(Rational(0)), "0");
   EXPECT_EQ(to_string(Rational(-161, 202)), "-161/202");
+}
+
+
+// Exact check of round-to-nearest: no double is closer to q than x, and on
+// a tie x is the one with an even last bit.
+bool nearest(double x, const Rational& q) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const Rational err = abs(Rational(x) - q);
+  for (double y : {std::nextafter(x, -inf), std::nextafter(x, inf)}) {
+    const Rational other = abs(Rational(y) - q);
+    if (other < err) return false;
+    if (other == err) {
+      std::int64_t bits_x, bits_y;
+      std::memcpy(&bits_x, &x, 8);
+      std::memcpy(&bits_y, &y, 8);
+      if (bits_x & 1) return false;
+    }
+  }
+  return true;
+}
+
+GTEST_TEST(ToDouble, RoundsEveryRationalToTheNearestDoubleOnBothPaths) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 20000; ++trial) {
+    // Numerator and denominator from 1 to 70 bits: both sides of the 53-bit
+    // one-division path.
+    auto draw = [&](int bits) {
+      Integer v = 1;
+      for (int b = 1; b < bits; ++b) v = 2 * v + static_cast<int>(rng() & 1);
+      return v;
+    };
+    const int nb = 1 + static_cast<int>(rng() % 70), db = 1 + static_cast<int>(rng() % 70);
+    Rational q(draw(nb), draw(db));
+    if (rng() & 1) q = -q;
+    const double x = to_double(q);
+    ASSERT_TRUE(nearest(x, q)) << to_string(q) << " -> " << x;
+    ASSERT_EQ(x, q.convert_to<double>()) << to_string(q);
+  }
+  EXPECT_EQ(to_double(Rational(0)), 0.0);
+  EXPECT_FALSE(std::signbit(to_double(Rational(0))));
+  EXPECT_EQ(to_double(Rational(-1, 3)), -1.0 / 3.0);
 }
 
 }  // namespace

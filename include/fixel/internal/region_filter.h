@@ -41,9 +41,10 @@ class IntervalTarget {
   virtual ~IntervalTarget() = default;
   // Does the ray of g meet the target: 1 hit, 0 miss, kUndecided.
   virtual int interval_ray_hits(const FGen& g) const = 0;
-  // True only when certified that cone(gens[0..n)) misses the target; then the
-  // target counts the LP test it stands for (RegionStats::lp_tests).
-  virtual bool certify_misses(const FGen* gens, std::size_t n) = 0;
+  // The OUT test of cone(gens[0..n)) (the target's misses()) when certified:
+  // 1 the cone misses the target, 0 it meets it, kUndecided. A certified
+  // answer counts the LP test it stands for (RegionStats::lp_tests).
+  virtual int certify_out_test(const FGen* gens, std::size_t n) = 0;
   // T(g) enclosed; false when a sign is undecided or T(g) may be empty. The
   // owner's contains_cone reports common_magnitudes (region_targets.h) of
   // these T and half_line = no T has an upper end.
