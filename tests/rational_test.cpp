@@ -84,7 +84,6 @@ GTEST_TEST(ToString, PrintsIntegersWithoutDenominator) {
   EXPECT_EQ(to_string(Rational(-161, 202)), "-161/202");
 }
 
-
 // Exact check of round-to-nearest: no double is closer to q than x, and on
 // a tie x is the one with an even last bit.
 bool nearest(double x, const Rational& q) {
