@@ -1,7 +1,10 @@
 // The one-step target G of the pushing region: the guaranteed set
 // (docs/theory.md §9), a disjoint union of convex pieces, behind
 // RegionTarget.
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <memory>
 
 #include "fixel/error.h"
@@ -53,6 +56,59 @@ struct PieceEnclosure {
     };
     for (const auto& h : Q.closed) add(h);
     for (const auto& h : Q.strict) add(h);
+    complete = a.size() == Q.closed.size() + Q.strict.size();
+  }
+
+  bool complete = false;  // every row of the piece is here (none of another length)
+
+  // A witness that the cone meets the piece: a direction d = Σ w_j g_j
+  // (w ≥ 0 exact doubles) and a double τ > 0 with every row strictly
+  // satisfied at b0 + τd, checked in intervals (so closed and strict rows
+  // alike hold, and μ = τw is a point of the exact LP). Candidates: the
+  // generators' sum, then each pair at weights (16 − m, m), m = 1..15; τ the
+  // middle of the doubles' window. True only when certified.
+  bool certify_met(const std::vector<std::array<FI, 3>>& gens) const {
+    const std::size_t m = beta.size(), n = gens.size();
+    if (!complete || m == 0 || m > 64 || n == 0) return false;
+    auto strictly_inside = [&](const std::array<FI, 3>& d) {
+      internal::Protect guard;
+      std::array<FI, 64> alpha;
+      double lo = 0, hi = std::numeric_limits<double>::infinity();
+      for (std::size_t h = 0; h < m; ++h) {
+        alpha[h] = a[h][0] * d[0] + a[h][1] * d[1] + a[h][2] * d[2];
+        const double al = CGAL::to_double(alpha[h]), be = CGAL::to_double(beta[h]);
+        if (al > 0)
+          lo = std::max(lo, be / al);
+        else if (al < 0)
+          hi = std::min(hi, be / al);
+        else if (!(be < 0))
+          return false;
+      }
+      if (!(lo < hi)) return false;
+      const double tau = std::isfinite(hi) ? (lo + hi) / 2 : 2 * lo + 1;
+      if (!(tau > 0) || !std::isfinite(tau)) return false;
+      for (std::size_t h = 0; h < m; ++h)
+        if (!((alpha[h] * FI(tau) - beta[h]).inf() > 0)) return false;
+      return true;
+    };
+    std::array<FI, 3> d;
+    {
+      internal::Protect guard;
+      d = gens[0];
+      for (std::size_t j = 1; j < n; ++j)
+        for (int i = 0; i < 3; ++i) d[i] += gens[j][i];
+    }
+    if (strictly_inside(d)) return true;
+    for (std::size_t p = 0; p < n; ++p)
+      for (std::size_t q = p + 1; q < n; ++q)
+        for (int w = 1; w < 16; ++w) {
+          {
+            internal::Protect guard;
+            for (int i = 0; i < 3; ++i) d[i] = FI(16 - w) * gens[p][i] + FI(w) * gens[q][i];
+          }
+          if (strictly_inside(d)) return true;
+        }
+    return false;
   }
 
   // A Farkas certificate that no μ ≥ 0 puts b0 + Σ μ_j g_j in the piece's
@@ -106,7 +162,10 @@ struct PieceEnclosure {
 class GuaranteedTarget final : public RegionTarget {
  public:
   GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {
-    for (const auto& piece : G_.pieces) enclosures_.emplace_back(piece, b0_);
+    for (const auto& piece : G_.pieces) {
+      enclosures_.emplace_back(piece, b0_);
+      b0_inside_.push_back(piece.contains(b0_));
+    }
   }
   const char* push_model() const override { return "step"; }
   const char* name() const override { return "G"; }
@@ -167,11 +226,14 @@ class GuaranteedTarget final : public RegionTarget {
         fg.push_back({internal::to_interval(g[0]), internal::to_interval(g[1]), internal::to_interval(g[2])});
     for (std::size_t p = 0; p < G_.pieces.size(); ++p) {
       if (hits_known && piece_hit_[p]) return false;
+      if (b0_inside_[p]) return false;  // μ = 0 (cone_misses_piece's first test)
       if (!force_exact()) {
-        const bool certified = enclosures_[p].certify_missed(fg);
-        internal::record_filter(FilterSite::kOutTest, certified);
-        if (certified) {
+        const bool missed = enclosures_[p].certify_missed(fg);
+        const bool met = !missed && enclosures_[p].certify_met(fg);
+        internal::record_filter(FilterSite::kOutTest, missed || met);
+        if (missed || met) {
           if (stats) ++stats->lp_tests;  // as the LP it replaces would count
+          if (met) return false;
           continue;
         }
       }
@@ -213,6 +275,7 @@ class GuaranteedTarget final : public RegionTarget {
   const SeatingSet& S_;
   VectorQ b0_;
   std::vector<PieceEnclosure> enclosures_;
+  std::vector<bool> b0_inside_;    // b0 in piece p: the cone meets it at μ = 0
   std::vector<VectorQ> hit_gens_;  // the generators of the last contains_cone
   std::vector<bool> piece_hit_;    // per piece: some generator's ray hit it
 };

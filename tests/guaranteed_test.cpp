@@ -226,7 +226,7 @@ GTEST_TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
   std::cout << "[ info     ] " << split << " sampled rays meet G in more than one interval\n";
 }
 
-GTEST_TEST(GuaranteedRegion, ConeMissTestsAgreeWithTheExactLpAndConesMeetingGFallBackToIt) {
+GTEST_TEST(GuaranteedRegion, ConeMissTestsAgreeWithTheExactLpAndMostAreCertifiedEitherWay) {
   // Second method: the same target with the filters off (the exact LP per piece).
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
@@ -261,9 +261,10 @@ GTEST_TEST(GuaranteedRegion, ConeMissTestsAgreeWithTheExactLpAndConesMeetingGFal
   EXPECT_GT(missed, 0);
   EXPECT_GT(met, 0);
   EXPECT_GT(out.certified, 0);
-  // A cone that meets G has no Farkas certificate: at least the piece it
-  // meets went to the LP.
-  EXPECT_GE(out.fallbacks, met);
+  // A cone that meets G has no Farkas certificate; it is certified by a
+  // point strictly inside the piece it meets (without that witness every
+  // one of them went to the LP: fallbacks >= met).
+  EXPECT_LT(out.fallbacks, met / 4);
 }
 
 GTEST_TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {
