@@ -150,6 +150,21 @@ Vec2 BezierPiece::point(const Rational& s) const { return de_casteljau(control, 
 
 Vec2 BezierPiece::derivative(const Rational& s, int k) const {
   if (k == 0) return de_casteljau(control, s);
+  if (k == 1 && control.size() > 1) {  // the region's case: hodograph on reused storage
+    thread_local std::vector<Vec2> h;
+    thread_local Rational degree;
+    const std::size_t n = control.size() - 1;
+    if (h.size() < n) h.resize(n);
+    h.resize(n);
+    degree = static_cast<int>(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      mpq_sub(h[i].x.backend().data(), control[i + 1].x.backend().data(), control[i].x.backend().data());
+      mpq_mul(h[i].x.backend().data(), h[i].x.backend().data(), degree.backend().data());
+      mpq_sub(h[i].y.backend().data(), control[i + 1].y.backend().data(), control[i].y.backend().data());
+      mpq_mul(h[i].y.backend().data(), h[i].y.backend().data(), degree.backend().data());
+    }
+    return de_casteljau(h, s);
+  }
   std::vector<Vec2> pts = control;
   for (int i = 0; i < k; ++i) {
     if (pts.size() <= 1) return {Rational(0), Rational(0)};
@@ -165,6 +180,15 @@ void halfway(Rational& out, const Rational& a, const Rational& b) {
   mpq_add(out.backend().data(), a.backend().data(), b.backend().data());
   mpq_div_2exp(out.backend().data(), out.backend().data(), 1);
 }
+
+// a += s·(b − a) in place (lerp without temporaries).
+void toward(Rational& a, const Rational& b, const Rational& s) {
+  thread_local Rational step;
+  mpq_ptr t = step.backend().data();
+  mpq_sub(t, b.backend().data(), a.backend().data());
+  mpq_mul(t, t, s.backend().data());
+  mpq_add(a.backend().data(), a.backend().data(), t);
+}
 }  // namespace
 
 std::pair<BezierPiece, BezierPiece> BezierPiece::split(const Rational& s) const {
@@ -176,7 +200,8 @@ std::pair<BezierPiece, BezierPiece> BezierPiece::split(const Rational& s) const 
     right[n - 1 - level] = pts[n - 1 - level];
     for (std::size_t i = 0; i + 1 < n - level; ++i) {
       if (!half) {
-        pts[i] = lerp(pts[i], pts[i + 1], s);
+        toward(pts[i].x, pts[i + 1].x, s);
+        toward(pts[i].y, pts[i + 1].y, s);
         continue;
       }
       halfway(pts[i].x, pts[i].x, pts[i + 1].x);

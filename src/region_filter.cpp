@@ -262,7 +262,7 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const R
         const int span = same ? 0 : sign_of(fcross(ds, de));
         if (span < 0 || (span == 0 && !same && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
         forces.push_back(ds);
-        forces.push_back(de);
+        if (!same) forces.push_back(de);     // equal vectors: no undecidable cross product below
         FGens& gens = cones.emplace_back();  // filled in place: no small_vector move
         for (const FVec2& d : {ds, de}) {
           FI lo, hi;
