@@ -103,6 +103,46 @@ GTEST_TEST(Filter, StraightEdgesWithNonDyadicEndsPassTheRegionPreTestWithoutTheE
   EXPECT_EQ(c.fallbacks, 0) << c.certified << " certified";
 }
 
+GTEST_TEST(Filter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePreTest) {
+  // A straight piece gives each edge family one push direction, so its
+  // first and last directions are one vector; as two enclosures their cross
+  // product is not a point, and no IN answer had bounds (the exact path
+  // then ran for every such segment). Now only a segment whose magnitude
+  // window is certainly empty has none (there the exact path decides).
+  const Scene scene = test::scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  const auto target = seating_target(S, scene.background_impulse);
+  internal::IntervalTarget* it = target->interval_target();
+  ASSERT_NE(it, nullptr);
+  int in = 0, bounded = 0;
+  for (const std::vector<EdgeFamily>& families :
+       {std::vector<EdgeFamily>{EdgeFamily::kNormal}, std::vector<EdgeFamily>{EdgeFamily::kMinus, EdgeFamily::kPlus}})
+    for (const BezierPiece& piece : scene.body.boundary->pieces) {
+      if (piece.control.size() != 2) continue;
+      std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
+      for (int level = 0; level < 10; ++level) {
+        std::vector<internal::LazyPiece> next;
+        for (const auto& p : parts) {
+          auto h = p.halves();
+          next.push_back(h.first);
+          next.push_back(h.second);
+        }
+        parts = next;
+      }
+      const Rational mu = families.size() == 1 ? Rational(0) : Rational(1, 10);
+      for (const auto& p : parts) {
+        std::optional<internal::MagnitudeBounds> bounds;
+        const internal::Quick q =
+            internal::quick_segment(p.enclosures(), scene.body.p_AoCm_A, mu, families, *it, &bounds);
+        if (q != internal::Quick::kIn) continue;
+        ++in;
+        if (bounds) ++bounded;
+      }
+    }
+  EXPECT_GE(in, 8);
+  EXPECT_GE(bounded, in - 1) << bounded << " of " << in << " IN segments bounded";
+}
+
 GTEST_TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
   for (const char* name : {"example2_rounded", "blob", "polygon", "blob32", "nonunique_part"}) {
     const Scene scene = test::scene_file(name);
