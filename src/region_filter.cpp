@@ -153,21 +153,31 @@ bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, con
 }
 
 // The ray tests of every generator; kIn when all hit, else the OUT tests of
-// each cone in order (as classify asks target.misses), else partial.
+// each cone in order (as classify asks target.misses), else partial. A ray
+// test left undecided matters only where its answer could change the
+// outcome: when no generator certainly misses (IN is possible), and in a
+// cone with no certain hit (the exact path's OUT test, and its LP count,
+// depend on it).
 Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
   boost::container::small_vector<boost::container::small_vector<int, 8>, 2> hits(cones.size());
-  bool all = true;
+  bool some_miss = false, some_undecided = false;
   for (std::size_t c = 0; c < cones.size(); ++c)
     for (const auto& g : cones[c]) {
       const int h = target.interval_ray_hits(g);
-      if (h == kUndecided) throw Undecided{};
       hits[c].push_back(h);
-      all = all && h == 1;
+      some_miss = some_miss || h == 0;
+      some_undecided = some_undecided || h == kUndecided;
     }
-  if (all) return Quick::kIn;
+  if (!some_miss) {
+    if (some_undecided) throw Undecided{};
+    return Quick::kIn;
+  }
   if (!segment) return Quick::kOut;
   for (std::size_t c = 0; c < cones.size(); ++c) {
     if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
+    // An undecided ray could be a hit, which would spare the LP a certified
+    // answer counts (RegionStats::lp_tests): the exact tests decide.
+    if (std::find(hits[c].begin(), hits[c].end(), kUndecided) != hits[c].end()) throw Undecided{};
     const int missed = target.certify_out_test(cones[c].data(), cones[c].size());
     if (missed == 1) return Quick::kOut;
     if (missed == kUndecided) throw Undecided{};  // the exact LP decides
