@@ -67,8 +67,10 @@ struct RegionInterval {
 /// Counters of a region computation.
 struct RegionStats {
   long cone_tests = 0;  ///< Segment classifications (one per segment visited).
-  long lp_tests =
-      0;  ///< OUT tests past the ray shortcut, per piece of G (exact LP, or an interval-certified Farkas test).
+  /// OUT tests past the ray shortcut, per piece of G (the exact LP, or an
+  /// interval-checked certificate standing for it: Farkas for "missed", a
+  /// hitting combination of generators for "met").
+  long lp_tests = 0;
   long point_tests = 0;     ///< Point tests (corners, samples).
   int depth = 0;            ///< Deepest subdivision level (0 = whole Bézier piece).
   Rational partial_length;  ///< Total parameter length left PARTIAL.
