@@ -64,9 +64,8 @@ struct PieceEnclosure {
   // A witness that the cone meets the piece: a direction d = Σ w_j g_j
   // (w ≥ 0 exact doubles) and a double τ > 0 with every row strictly
   // satisfied at b0 + τd, checked in intervals (so closed and strict rows
-  // alike hold, and μ = τw is a point of the exact LP). Candidates: the
-  // generators' sum, then each pair at weights (16 − m, m), m = 1..15; τ the
-  // middle of the doubles' window. True only when certified.
+  // alike hold, and μ = τw is a point of the exact LP); d from
+  // some_combination, τ the middle of the doubles' window.
   bool certify_met(const std::vector<std::array<FI, 3>>& gens) const {
     const std::size_t m = beta.size(), n = gens.size();
     if (!complete || m == 0 || m > 64 || n == 0) return false;
@@ -91,24 +90,7 @@ struct PieceEnclosure {
         if (!((alpha[h] * FI(tau) - beta[h]).inf() > 0)) return false;
       return true;
     };
-    std::array<FI, 3> d;
-    {
-      internal::Protect guard;
-      d = gens[0];
-      for (std::size_t j = 1; j < n; ++j)
-        for (int i = 0; i < 3; ++i) d[i] += gens[j][i];
-    }
-    if (strictly_inside(d)) return true;
-    for (std::size_t p = 0; p < n; ++p)
-      for (std::size_t q = p + 1; q < n; ++q)
-        for (int w = 1; w < 16; ++w) {
-          {
-            internal::Protect guard;
-            for (int i = 0; i < 3; ++i) d[i] = FI(16 - w) * gens[p][i] + FI(w) * gens[q][i];
-          }
-          if (strictly_inside(d)) return true;
-        }
-    return false;
+    return internal::some_combination(gens.data(), n, strictly_inside);
   }
 
   // A Farkas certificate that no μ ≥ 0 puts b0 + Σ μ_j g_j in the piece's

@@ -196,29 +196,10 @@ struct FilteredHalfspaces {
   }
 
   // A witness that some μ >= 0 with Σμ > 0 puts b0 + Σ μ_j g_j in the set: a
-  // direction d = Σ w_j g_j (w >= 0 exact doubles, not all 0) whose ray is
-  // certified to hit it (then μ = τw for a τ > 0 of that ray). Candidates:
-  // the generators' sum, then each pair at weights (16 − m, m), m = 1..15.
+  // combination d = Σ w_j g_j whose ray is certified to hit it (then
+  // μ = τw for a τ > 0 of that ray).
   bool certify_meets(const std::array<FI, 3>* gens, std::size_t n) const {
-    if (n == 0) return false;
-    std::array<FI, 3> d;
-    {
-      internal::Protect guard;
-      d = gens[0];
-      for (std::size_t j = 1; j < n; ++j)
-        for (int i = 0; i < 3; ++i) d[i] += gens[j][i];
-    }
-    if (ray_hits(d) == 1) return true;
-    for (std::size_t p = 0; p < n; ++p)
-      for (std::size_t q = p + 1; q < n; ++q)
-        for (int m = 1; m < 16; ++m) {
-          {
-            internal::Protect guard;
-            for (int i = 0; i < 3; ++i) d[i] = FI(16 - m) * gens[p][i] + FI(m) * gens[q][i];
-          }
-          if (ray_hits(d) == 1) return true;
-        }
-    return false;
+    return internal::some_combination(gens, n, [this](const std::array<FI, 3>& d) { return ray_hits(d) == 1; });
   }
 
   // misses() of a cone none of whose generators' rays hits: 1 missed
