@@ -154,7 +154,6 @@ Vec2 BezierPiece::derivative(const Rational& s, int k) const {
     thread_local std::vector<Vec2> h;
     thread_local Rational degree;
     const std::size_t n = control.size() - 1;
-    if (h.size() < n) h.resize(n);
     h.resize(n);
     degree = static_cast<int>(n);
     for (std::size_t i = 0; i < n; ++i) {
