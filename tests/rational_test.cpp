@@ -93,9 +93,8 @@ bool nearest(double x, const Rational& q) {
     const Rational other = abs(Rational(y) - q);
     if (other < err) return false;
     if (other == err) {
-      std::int64_t bits_x, bits_y;
+      std::int64_t bits_x;
       std::memcpy(&bits_x, &x, 8);
-      std::memcpy(&bits_y, &y, 8);
       if (bits_x & 1) return false;
     }
   }
