@@ -103,8 +103,9 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
   if (ctx.method == ConeMethod::kTight && !force_exact())
     if (internal::IntervalTarget* it = ctx.target.interval_target()) {
       std::optional<internal::MagnitudeBounds> bounds;
-      const internal::Quick q = internal::quick_segment(seg.enclosures(), ctx.scene.body.p_AoCm_A, ctx.mu,
-                                                        families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
+      const internal::Quick q =
+          internal::quick_segment(seg.enclosures(), seg.leg_enclosures(), ctx.scene.body.p_AoCm_A, ctx.mu,
+                                  families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
       internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
       if (q == internal::Quick::kPartial) return out;
       if (q == internal::Quick::kOut) {

@@ -197,9 +197,25 @@ void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const 
 
 }  // namespace
 
+namespace {
+
+// Enclosures of the control points and of the legs, from exact points.
+void enclose_exact(const std::vector<Vec2>& control, LazyPiece::Enclosures& ctrl, LazyPiece::Enclosures& legs) {
+  for (std::size_t k = 0; k < control.size(); ++k) {
+    ctrl.push_back(to_interval(control[k]));
+    if (k > 0) legs.push_back(to_interval(sub(control[k], control[k - 1])));
+  }
+}
+
+}  // namespace
+
 LazyPiece::LazyPiece(const BezierPiece& root, bool enclose) : root_(&root), u0_(root.u0), u1_(root.u1) {
-  if (enclose)
-    for (const auto& p : root.control) ctrl_.push_back(to_interval(p));
+  if (!enclose) return;
+  for (const auto& p : root.control) ctrl_.push_back(to_interval(p));
+  // A whole piece is long, so the difference of enclosures is tight enough
+  // and spares an exact subtraction per leg (polylines have many pieces).
+  Protect guard;
+  for (std::size_t k = 1; k < ctrl_.size(); ++k) legs_.push_back(fsub(ctrl_[k], ctrl_[k - 1]));
 }
 
 const BezierPiece& LazyPiece::exact() const {
@@ -218,8 +234,7 @@ std::pair<LazyPiece, LazyPiece> LazyPiece::halves() const {
     out.first.exact_ = std::move(h.first);
     out.second.exact_ = std::move(h.second);
     for (LazyPiece* c : {&out.first, &out.second})
-      if (!ctrl_.empty())
-        for (const auto& p : c->exact_->control) c->ctrl_.push_back(to_interval(p));
+      if (!ctrl_.empty()) enclose_exact(c->exact_->control, c->ctrl_, c->legs_);
     return out;
   }
   const Rational um = (u0_ + u1_) / 2;
@@ -237,11 +252,23 @@ std::pair<LazyPiece, LazyPiece> LazyPiece::halves() const {
     for (std::size_t i = 0; i + 1 < n - level; ++i)
       pts[i] = {(pts[i].x + pts[i + 1].x) / 2, (pts[i].y + pts[i + 1].y) / 2};
   }
+  // The legs by de Casteljau on the legs (the hodograph): with D⁰ the m
+  // legs and Dʲ their level-j averages, the left half's leg j is Dʲ_0/2
+  // and the right half's is D^{m−1−j}_j/2 (docs/theory.md §8).
+  const std::size_t m = legs_.size();
+  Enclosures d = legs_;
+  out.first.legs_.resize(m);
+  out.second.legs_.resize(m);
+  for (std::size_t level = 0; level < m; ++level) {
+    out.first.legs_[level] = {d.front().x / 2, d.front().y / 2};
+    out.second.legs_[m - 1 - level] = {d[m - 1 - level].x / 2, d[m - 1 - level].y / 2};
+    for (std::size_t i = 0; i + 1 < m - level; ++i) d[i] = {(d[i].x + d[i + 1].x) / 2, (d[i].y + d[i + 1].y) / 2};
+  }
   return out;
 }
 
-Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const Rational& mu,
-                    const std::vector<EdgeFamily>& families, IntervalTarget& target,
+Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclosures& leg_enclosures, const Vec2& c,
+                    const Rational& mu, const std::vector<EdgeFamily>& families, IntervalTarget& target,
                     std::optional<MagnitudeBounds>* bounds) {
   Cones cones;
   FVecs forces;
@@ -256,10 +283,9 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const R
         P.push_back(p);
         r.push_back(fsub(P.back(), fc));
       }
-      for (std::size_t k = 0; k + 1 < P.size(); ++k) {
-        const FVec2 leg = fsub(P[k + 1], P[k]);
+      if (leg_enclosures.size() + 1 != control.size()) throw Undecided{};
+      for (const FVec2& leg : leg_enclosures)
         if (!is_zero_f(leg)) legs.push_back(leg);
-      }
       if (legs.empty()) throw Undecided{};  // the exact path reports the degenerate segment
       std::size_t s = 0, e = 0;
       if (!extremes(legs, s, e)) return Quick::kPartial;  // not pointed: split

@@ -10,11 +10,10 @@
 #include <cmath>
 #include <iostream>
 #include <random>
-#include <regex>
 
+#include "filter_test_util.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/filtered.h"
-#include "fixel/internal/region_filter.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
@@ -29,21 +28,9 @@
 namespace fixel {
 namespace {
 
-// Wall-clock time is the one field allowed to differ.
-std::string masked(const std::string& json) {
-  return std::regex_replace(json, std::regex("\"seconds\": [0-9.e+-]+"), "\"seconds\": X");
-}
-
-template <typename F>
-auto run(bool exact, F f) {
-  ForceExactScope scope(exact);
-  return f();
-}
-
-std::string region_json_of(const Scene& scene, const SeatingSet& S, const RegionOptions& opt) {
-  const Region r = compute_region(scene, S, opt);
-  return masked(region_json(scene, r));
-}
+using test::masked;
+using test::region_json_of;
+using test::run;
 
 GTEST_TEST(Filter, ToIntervalHoldsEveryRationalInEveryRoundingModeAndDyadicsArePoints) {
   // Checked exactly: the interval's ends, as rationals, bracket q.
@@ -83,80 +70,6 @@ GTEST_TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
     EXPECT_TRUE(force_exact());
   }
   EXPECT_EQ(force_exact(), before);
-}
-
-GTEST_TEST(Filter, StraightEdgesWithNonDyadicEndsPassTheRegionPreTestWithoutTheExactPath) {
-  // example2_rounded's four straight edges end at tenths: one leg per piece,
-  // whose push directions at both ends are the same vector. Before that was
-  // recognised, 36 of its 82 region tests fell back; now only the few whose
-  // target tests need the exact LP do.
-  const Scene scene = test::scene_file("example2_rounded");
-  const SeatingSet S = seating_set(scene);
-  RegionOptions opt;
-  opt.resolution = Rational(1, 1024);
-  reset_filter_stats();
-  const Region r = run(false, [&] { return compute_region(scene, S, opt); });
-  const FilterCounts c = filter_stats().at(FilterSite::kRegionTest);
-  EXPECT_EQ(c.certified + c.fallbacks, r.stats.cone_tests);
-  // The last four were OUT tests of cones meeting S between generators,
-  // certified since by a combination's ray.
-  EXPECT_EQ(c.fallbacks, 0) << c.certified << " certified";
-}
-
-GTEST_TEST(Filter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePreTest) {
-  // A straight piece gives each edge family one push direction, so its
-  // first and last directions are one vector; as two enclosures their cross
-  // product is not a point, and no IN answer had bounds (the exact path
-  // then ran for every such segment). Now only a segment whose magnitude
-  // window is certainly empty has none (there the exact path decides).
-  const Scene scene = test::scene_file("example2_rounded");
-  const SeatingSet S = seating_set(scene);
-  const auto target = seating_target(S, scene.background_impulse);
-  internal::IntervalTarget* it = target->interval_target();
-  ASSERT_NE(it, nullptr);
-  int in = 0, bounded = 0;
-  for (const std::vector<EdgeFamily>& families :
-       {std::vector<EdgeFamily>{EdgeFamily::kNormal}, std::vector<EdgeFamily>{EdgeFamily::kMinus, EdgeFamily::kPlus}})
-    for (const BezierPiece& piece : scene.body.boundary->pieces) {
-      if (piece.control.size() != 2) continue;
-      std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
-      for (int level = 0; level < 10; ++level) {
-        std::vector<internal::LazyPiece> next;
-        for (const auto& p : parts) {
-          auto h = p.halves();
-          next.push_back(h.first);
-          next.push_back(h.second);
-        }
-        parts = next;
-      }
-      const Rational mu = families.size() == 1 ? Rational(0) : Rational(1, 10);
-      for (const auto& p : parts) {
-        std::optional<internal::MagnitudeBounds> bounds;
-        const internal::Quick q =
-            internal::quick_segment(p.enclosures(), scene.body.p_AoCm_A, mu, families, *it, &bounds);
-        if (q != internal::Quick::kIn) continue;
-        ++in;
-        if (bounds) ++bounded;
-      }
-    }
-  EXPECT_GE(in, 8);
-  EXPECT_GE(bounded, in - 1) << bounded << " of " << in << " IN segments bounded";
-}
-
-GTEST_TEST(Filter, AnUndecidedRayBesideACertainMissAndACertainHitStillLeavesTheSegmentPartial) {
-  // At 2^-20 the pieces beside a region end have generators whose rays
-  // graze S. Where another generator certainly misses and each cone has a
-  // certain hit, the segment is partial whatever those rays do: 59 region
-  // tests fall back instead of 67, with the same JSON (and LP count).
-  const Scene scene = test::scene_file("blob32");
-  const SeatingSet S = seating_set(scene);
-  RegionOptions opt;
-  opt.resolution = Rational(1, 1048576);
-  reset_filter_stats();
-  const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
-  const FilterCounts c = filter_stats().at(FilterSite::kRegionTest);
-  EXPECT_LT(c.fallbacks, 67) << c.certified << " certified";
-  EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); }));
 }
 
 GTEST_TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
@@ -378,37 +291,6 @@ GTEST_TEST(Filter, SustainedMembershipAgreesWithTheExactJamAndEscapeTests) {
   EXPECT_GT(filter_stats().at(FilterSite::kJam).certified, 0);
 }
 
-// The region's interval pre-test (FilterSite::kRegionTest) decides OUT and
-// partial segments and corners from enclosures; a piece that is exactly
-// straight with coordinates in fifths and thirds (not doubles) has legs
-// whose orientations the enclosures cannot certify, so its pre-test falls
-// back to the exact path, and the answers stay identical.
-GTEST_TEST(Filter, AStraightPieceInThirdsFallsBackFromTheRegionPreTest) {
-  const std::string scene_json = R"({"name": "flat bottom", "time_step": "1",
-    "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"], "boundary": [{"type": "bspline", "degree": 3,
-      "knots": ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13", "14", "15", "16", "17", "18"],
-      "control_points": [["-2", "1"], ["-11/5", "0"], ["-2", "-1"], ["-1", "-9/5"], ["-1/3", "-9/5"], ["1/3", "-9/5"],
-        ["1", "-9/5"], ["2", "-1"], ["11/5", "0"], ["2", "1"], ["1", "9/5"], ["-1", "9/5"], ["-2", "1"], ["-11/5", "0"],
-        ["-2", "-1"]]}]},
-    "fixels": [{"point": ["-32/15", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},
-      {"point": ["0", "-2"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},
-      {"point": ["5/6", "-5/3"], "normal": ["-7/25", "24/25"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],
-    "pusher": {"mu": "0"}})";
-  const Scene scene = parse_scene(scene_json, "flat bottom");
-  const SeatingSet S = seating_set(scene);
-  for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
-    RegionOptions opt;
-    opt.resolution = Rational(1, 64);
-    opt.pusher_mu = mu;
-    reset_filter_stats();
-    const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
-    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
-    EXPECT_GT(pre.certified, 10) << "mu " << to_string(mu);
-    EXPECT_GE(pre.fallbacks, 1) << "mu " << to_string(mu);
-    EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); })) << "mu " << to_string(mu);
-  }
-}
-
 // IN answers certified on enclosures keep their exact magnitudes waiting
 // until the merge, which computes only those that can decide a run's ends:
 // a polyline ellipse (long IN runs of straight pieces and corners) gives
@@ -446,36 +328,6 @@ GTEST_TEST(Filter, DeferredMagnitudesOfLongInRunsGiveIdenticalJson) {
                         [](const RegionInterval& i) { return i.status == RegionStatus::kIn && !i.magnitudes.empty; }),
           0);
     }
-}
-
-// The subdivision's lazy pieces: halving enclosures keeps them around the
-// exact control points, and the exact points made from the boundary piece
-// at depth 12 equal those of twelve exact halvings.
-GTEST_TEST(Filter, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
-  const BezierPiece root{0, Rational(1, 3), Rational(2), {{0, 0}, {Rational(1, 3), 2}, {3, Rational(5, 7)}, {4, 0}}};
-  ForceExactScope filtered(false);
-  internal::LazyPiece lazy(root, true);
-  BezierPiece exact = root;
-  for (int depth = 0; depth < 12; ++depth) {
-    const bool left = depth % 3 == 1;
-    const auto h = lazy.halves();
-    lazy = left ? h.first : h.second;
-    const auto e = exact.split(Rational(1, 2));
-    exact = left ? e.first : e.second;
-  }
-  ASSERT_EQ(lazy.enclosures().size(), exact.control.size());
-  for (std::size_t k = 0; k < exact.control.size(); ++k) {
-    const double x = to_double(exact.control[k].x), y = to_double(exact.control[k].y);
-    EXPECT_TRUE(lazy.enclosures()[k].x.inf() <= x && x <= lazy.enclosures()[k].x.sup()) << k;
-    EXPECT_TRUE(lazy.enclosures()[k].y.inf() <= y && y <= lazy.enclosures()[k].y.sup()) << k;
-  }
-  EXPECT_EQ(lazy.u0(), exact.u0);
-  EXPECT_EQ(lazy.u1(), exact.u1);
-  const BezierPiece& made = lazy.exact();
-  for (std::size_t k = 0; k < exact.control.size(); ++k) {
-    EXPECT_EQ(made.control[k].x, exact.control[k].x) << k;
-    EXPECT_EQ(made.control[k].y, exact.control[k].y) << k;
-  }
 }
 
 GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {

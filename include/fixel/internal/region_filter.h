@@ -70,7 +70,8 @@ enum class Quick {
 };
 
 // A piece of the subdivision: a parameter range [u0, u1] of a boundary
-// piece, enclosures of its control points (halved in intervals), and its
+// piece, enclosures of its control points and of its control polygon's legs
+// (both halved in intervals), and its
 // exact control points only when asked for (the exact path), then made from
 // the boundary piece (the control points of a sub-curve are unique, so they
 // equal those of repeated halving). Children of a piece whose exact points
@@ -85,6 +86,9 @@ class LazyPiece {
   const Rational& u1() const { return u1_; }
   // Empty when made without enclosures.
   const Enclosures& enclosures() const { return ctrl_; }
+  // Legs P_{k+1} − P_k, enclosed on their own: a difference of two point
+  // enclosures loses all relative precision once the piece is short.
+  const Enclosures& leg_enclosures() const { return legs_; }
   const BezierPiece& exact() const;
   // The halves at local parameter 1/2.
   std::pair<LazyPiece, LazyPiece> halves() const;
@@ -93,18 +97,18 @@ class LazyPiece {
   LazyPiece(const BezierPiece* root, Rational u0, Rational u1) : root_(root), u0_(std::move(u0)), u1_(std::move(u1)) {}
   const BezierPiece* root_;
   Rational u0_, u1_;
-  Enclosures ctrl_;
+  Enclosures ctrl_, legs_;
   mutable std::optional<BezierPiece> exact_;
   mutable bool asked_ = false;
 };
 
 // The tight-cone segment test of classify (region.cpp) for `families` of
 // push directions with pusher friction mu, centre of mass c, from the
-// enclosures of the segment's control points. On kIn,
+// enclosures of the segment's control points and legs. On kIn,
 // `bounds` (if given) gets the enclosure of the answer's magnitudes when it
 // can be certified.
-Quick quick_segment(const LazyPiece::Enclosures& control, const Vec2& c, const Rational& mu,
-                    const std::vector<EdgeFamily>& families, IntervalTarget& target,
+Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclosures& legs, const Vec2& c,
+                    const Rational& mu, const std::vector<EdgeFamily>& families, IntervalTarget& target,
                     std::optional<MagnitudeBounds>* bounds = nullptr);
 
 // The point test of status_at: tangents t_in, t_out (enclosures of the exact

@@ -1,0 +1,215 @@
+// The region's interval pre-test (fixel/internal/region_filter.h): lazy
+// pieces halved in intervals, their leg enclosures, and the segment test on
+// them; each answer it certifies equals the exact path's, and the counters
+// show where it falls back.
+#include "fixel/internal/region_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "filter_test_util.h"
+#include "fixel/curve.h"
+#include "fixel/filter.h"
+#include "fixel/region.h"
+#include "fixel/region_target.h"
+#include "fixel/scene_json.h"
+#include "fixel/seating.h"
+#include "fixel/wrench_cone.h"
+#include "test_util.h"
+
+namespace fixel {
+namespace {
+
+using test::region_json_of;
+using test::run;
+
+GTEST_TEST(RegionFilter, StraightEdgesWithNonDyadicEndsPassTheRegionPreTestWithoutTheExactPath) {
+  // example2_rounded's four straight edges end at tenths: one leg per piece,
+  // whose push directions at both ends are the same vector. Before that was
+  // recognised, 36 of its 82 region tests fell back; now only the few whose
+  // target tests need the exact LP do.
+  const Scene scene = test::scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 1024);
+  reset_filter_stats();
+  const Region r = run(false, [&] { return compute_region(scene, S, opt); });
+  const FilterCounts c = filter_stats().at(FilterSite::kRegionTest);
+  EXPECT_EQ(c.certified + c.fallbacks, r.stats.cone_tests);
+  // The last four were OUT tests of cones meeting S between generators,
+  // certified since by a combination's ray.
+  EXPECT_EQ(c.fallbacks, 0) << c.certified << " certified";
+}
+
+GTEST_TEST(RegionFilter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePreTest) {
+  // A straight piece gives each edge family one push direction, so its
+  // first and last directions are one vector; as two enclosures their cross
+  // product is not a point, and no IN answer had bounds (the exact path
+  // then ran for every such segment). Now only a segment whose magnitude
+  // window is certainly empty has none (there the exact path decides).
+  const Scene scene = test::scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  const auto target = seating_target(S, scene.background_impulse);
+  internal::IntervalTarget* it = target->interval_target();
+  ASSERT_NE(it, nullptr);
+  int in = 0, bounded = 0;
+  for (const std::vector<EdgeFamily>& families :
+       {std::vector<EdgeFamily>{EdgeFamily::kNormal}, std::vector<EdgeFamily>{EdgeFamily::kMinus, EdgeFamily::kPlus}})
+    for (const BezierPiece& piece : scene.body.boundary->pieces) {
+      if (piece.control.size() != 2) continue;
+      std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
+      for (int level = 0; level < 10; ++level) {
+        std::vector<internal::LazyPiece> next;
+        for (const auto& p : parts) {
+          auto h = p.halves();
+          next.push_back(h.first);
+          next.push_back(h.second);
+        }
+        parts = next;
+      }
+      const Rational mu = families.size() == 1 ? Rational(0) : Rational(1, 10);
+      for (const auto& p : parts) {
+        std::optional<internal::MagnitudeBounds> bounds;
+        const internal::Quick q = internal::quick_segment(p.enclosures(), p.leg_enclosures(), scene.body.p_AoCm_A, mu,
+                                                          families, *it, &bounds);
+        if (q != internal::Quick::kIn) continue;
+        ++in;
+        if (bounds) ++bounded;
+      }
+    }
+  EXPECT_GE(in, 8);
+  EXPECT_GE(bounded, in - 1) << bounded << " of " << in << " IN segments bounded";
+}
+
+GTEST_TEST(RegionFilter, AnUndecidedRayBesideACertainMissAndACertainHitStillLeavesTheSegmentPartial) {
+  // At 2^-20 the pieces beside a region end have generators whose rays
+  // graze S. Where another generator certainly misses and each cone has a
+  // certain hit, the segment is partial whatever those rays do: 59 region
+  // tests fall back instead of 67, with the same JSON (and LP count).
+  const Scene scene = test::scene_file("blob32");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 1048576);
+  reset_filter_stats();
+  const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+  const FilterCounts c = filter_stats().at(FilterSite::kRegionTest);
+  EXPECT_LE(c.fallbacks, 3) << c.certified << " certified";
+  EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); }));
+}
+
+// The region's interval pre-test (FilterSite::kRegionTest) decides OUT and
+// partial segments and corners from enclosures; a piece that is exactly
+// straight with coordinates in fifths and thirds (not doubles) has legs
+// whose orientations the enclosures cannot certify, so its pre-test falls
+// back to the exact path, and the answers stay identical.
+GTEST_TEST(RegionFilter, AStraightPieceInThirdsFallsBackFromTheRegionPreTest) {
+  const std::string scene_json = R"({"name": "flat bottom", "time_step": "1",
+    "body": {"dof": 3, "mass": "1", "velocity": ["0", "0", "0"], "boundary": [{"type": "bspline", "degree": 3,
+      "knots": ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13", "14", "15", "16", "17", "18"],
+      "control_points": [["-2", "1"], ["-11/5", "0"], ["-2", "-1"], ["-1", "-9/5"], ["-1/3", "-9/5"], ["1/3", "-9/5"],
+        ["1", "-9/5"], ["2", "-1"], ["11/5", "0"], ["2", "1"], ["1", "9/5"], ["-1", "9/5"], ["-2", "1"], ["-11/5", "0"],
+        ["-2", "-1"]]}]},
+    "fixels": [{"point": ["-32/15", "0"], "normal": ["1", "0"], "mu": "1/10", "gap": "1/10", "off_boundary": true},
+      {"point": ["0", "-2"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20", "off_boundary": true},
+      {"point": ["5/6", "-5/3"], "normal": ["-7/25", "24/25"], "mu": "1/10", "gap": "3/20", "off_boundary": true}],
+    "pusher": {"mu": "0"}})";
+  const Scene scene = parse_scene(scene_json, "flat bottom");
+  const SeatingSet S = seating_set(scene);
+  for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+    RegionOptions opt;
+    opt.resolution = Rational(1, 64);
+    opt.pusher_mu = mu;
+    reset_filter_stats();
+    const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+    EXPECT_GT(pre.certified, 10) << "mu " << to_string(mu);
+    EXPECT_GE(pre.fallbacks, 1) << "mu " << to_string(mu);
+    EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); })) << "mu " << to_string(mu);
+  }
+}
+
+// The subdivision's lazy pieces: halving enclosures keeps them around the
+// exact control points, and the exact points made from the boundary piece
+// at depth 12 equal those of twelve exact halvings.
+GTEST_TEST(RegionFilter, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
+  const BezierPiece root{0, Rational(1, 3), Rational(2), {{0, 0}, {Rational(1, 3), 2}, {3, Rational(5, 7)}, {4, 0}}};
+  ForceExactScope filtered(false);
+  internal::LazyPiece lazy(root, true);
+  BezierPiece exact = root;
+  for (int depth = 0; depth < 12; ++depth) {
+    const bool left = depth % 3 == 1;
+    const auto h = lazy.halves();
+    lazy = left ? h.first : h.second;
+    const auto e = exact.split(Rational(1, 2));
+    exact = left ? e.first : e.second;
+  }
+  ASSERT_EQ(lazy.enclosures().size(), exact.control.size());
+  for (std::size_t k = 0; k < exact.control.size(); ++k) {
+    const double x = to_double(exact.control[k].x), y = to_double(exact.control[k].y);
+    EXPECT_TRUE(lazy.enclosures()[k].x.inf() <= x && x <= lazy.enclosures()[k].x.sup()) << k;
+    EXPECT_TRUE(lazy.enclosures()[k].y.inf() <= y && y <= lazy.enclosures()[k].y.sup()) << k;
+  }
+  EXPECT_EQ(lazy.u0(), exact.u0);
+  EXPECT_EQ(lazy.u1(), exact.u1);
+  const BezierPiece& made = lazy.exact();
+  for (std::size_t k = 0; k < exact.control.size(); ++k) {
+    EXPECT_EQ(made.control[k].x, exact.control[k].x) << k;
+    EXPECT_EQ(made.control[k].y, exact.control[k].y) << k;
+  }
+}
+
+// Rational containment of a double interval: no tolerance.
+bool holds(const internal::FI& x, const Rational& q) { return Rational(x.inf()) <= q && q <= Rational(x.sup()); }
+
+// The legs of a lazy piece are halved on their own (de Casteljau on the
+// hodograph). At depth 20 of a cubic with non-dyadic control points each
+// leg enclosure holds the exact leg of the sub-curve (made in one exact
+// restriction, not by halving) and is tight relative to the leg: a
+// difference of the point enclosures is about 10^-7 wide relative to a leg
+// that short, which left blob32's rays grazing S undecided.
+GTEST_TEST(RegionFilter, LegEnclosuresHoldTheExactLegsAndStayTightAtDepthTwenty) {
+  const BezierPiece root{
+      0,
+      Rational(0),
+      Rational(1),
+      {{0, 0}, {Rational(1, 3), Rational(7, 5)}, {Rational(19, 7), Rational(2, 3)}, {4, Rational(1, 9)}}};
+  ForceExactScope filtered(false);
+  std::mt19937_64 rng(20);
+  for (int path = 0; path < 8; ++path) {
+    internal::LazyPiece lazy(root, true);
+    for (int depth = 0; depth < 20; ++depth) {
+      const auto h = lazy.halves();
+      lazy = rng() % 2 ? h.first : h.second;
+    }
+    const BezierPiece exact = root.restrict_to(lazy.u0(), lazy.u1());
+    ASSERT_EQ(lazy.leg_enclosures().size() + 1, exact.control.size());
+    for (std::size_t k = 0; k + 1 < exact.control.size(); ++k) {
+      const Vec2 leg = sub(exact.control[k + 1], exact.control[k]);
+      const internal::FVec2& f = lazy.leg_enclosures()[k];
+      EXPECT_TRUE(holds(f.x, leg.x) && holds(f.y, leg.y)) << "path " << path << " leg " << k;
+      // Relative width below 2^-40 (the old difference of points: about 2^-23).
+      const Rational rel = 1099511627776;
+      EXPECT_LT(Rational(f.x.sup()) - Rational(f.x.inf()), abs(leg.x) / rel) << "path " << path << " leg " << k;
+      EXPECT_LT(Rational(f.y.sup()) - Rational(f.y.inf()), abs(leg.y) / rel) << "path " << path << " leg " << k;
+    }
+  }
+}
+
+// After the exact path halved a piece, its children's legs come from exact
+// differences: they hold the exact legs as well.
+GTEST_TEST(RegionFilter, LegsOfExactlyHalvedPiecesHoldTheExactLegs) {
+  const BezierPiece root{0, Rational(0), Rational(1), {{0, 0}, {Rational(1, 3), 2}, {3, Rational(5, 7)}, {4, 0}}};
+  ForceExactScope filtered(false);
+  internal::LazyPiece lazy(root, true);
+  (void)lazy.exact();  // as the exact path does: later halvings are exact
+  const auto h = lazy.halves();
+  const BezierPiece exact = root.restrict_to(h.second.u0(), h.second.u1());
+  for (std::size_t k = 0; k + 1 < exact.control.size(); ++k) {
+    const Vec2 leg = sub(exact.control[k + 1], exact.control[k]);
+    EXPECT_TRUE(holds(h.second.leg_enclosures()[k].x, leg.x) && holds(h.second.leg_enclosures()[k].y, leg.y)) << k;
+  }
+}
+
+}  // namespace
+}  // namespace fixel
