@@ -1,5 +1,6 @@
 #include "fixel/internal/lemke_filtered.h"
 
+#include <boost/container/small_vector.hpp>
 #include <vector>
 
 #include "fixel/error.h"
@@ -384,14 +385,6 @@ class FilteredRun {
     return true;
   }
 
-  // Sign of tableau entry (i, col).
-  int entry_sign(int i, int col) {
-    const int s = certain_sign(T_.at(i, col));
-    if (s != kUndecided) return ++certified_, s;
-    ++exact_;
-    return exact().entry_sign(i, col);
-  }
-
   // Sign of T(i, col)·T(j, s) − T(j, col)·T(i, s): the ratio T(i, col)/T(i, s)
   // against T(j, col)/T(j, s) when both T(·, s) > 0.
   int compare_ratio(int i, int j, int col, int s) {
@@ -402,24 +395,58 @@ class FilteredRun {
   }
 
   // The lexicographic minimum ratio test of Tableau::ratio_test in
-  // src/lemke.cpp, decision by decision.
+  // src/lemke.cpp, decision by decision. Its answer is the minimum of a
+  // total order on the candidate rows (ratio, then the z0 row, then the
+  // lexicographic columns), so the rows may be visited in any order: rows
+  // whose entry sign the intervals leave open go last, and one that
+  // certainly loses to the best so far, whatever that sign is, needs no
+  // exact sign (docs/theory.md §6).
   int ratio_test(int s) {
     int best = -1;
+    boost::container::small_vector<int, 16> open;
     for (int i = 0; i < n_; ++i) {
-      if (entry_sign(i, s) <= 0) continue;
-      if (best < 0) {
-        best = i;
+      const int sign = certain_sign(T_.at(i, s));
+      if (sign == kUndecided) {
+        open.push_back(i);
         continue;
       }
-      int c = compare_ratio(i, best, T_.rhs(), s);
-      if (c == 0 && (T_.basic(i) == T_.z0() || T_.basic(best) == T_.z0())) {
-        if (T_.basic(i) == T_.z0()) best = i;
+      ++certified_;
+      if (sign > 0) consider(i, best, s);
+    }
+    for (const int i : open) {
+      if (best >= 0 && certainly_loses(i, best, s)) {
+        ++certified_;
         continue;
       }
-      for (int col = 0; c == 0 && col < n_; ++col) c = compare_ratio(i, best, col, s);
-      if (c < 0) best = i;
+      ++exact_;
+      if (exact().entry_sign(i, s) > 0) consider(i, best, s);
     }
     return best;
+  }
+
+  // Row i (entry T(i, s) > 0) against the best row so far.
+  void consider(int i, int& best, int s) {
+    if (best < 0) {
+      best = i;
+      return;
+    }
+    int c = compare_ratio(i, best, T_.rhs(), s);
+    if (c == 0 && (T_.basic(i) == T_.z0() || T_.basic(best) == T_.z0())) {
+      if (T_.basic(i) == T_.z0()) best = i;
+      return;
+    }
+    for (int col = 0; c == 0 && col < n_; ++col) c = compare_ratio(i, best, col, s);
+    if (c < 0) best = i;
+  }
+
+  // Whether row i, were T(i, s) positive, would have a ratio strictly above
+  // the best row's: T(i, rhs)·T(best, s) − T(best, rhs)·t > 0 for every t in
+  // (0, sup T(i, s)]. Then row i cannot win, nor tie, whatever its sign.
+  bool certainly_loses(int i, int best, int s) const {
+    const double hi = T_.at(i, s).sup();
+    if (!(hi > 0)) return false;
+    const FI d = T_.at(i, T_.rhs()) * T_.at(best, s) - T_.at(best, T_.rhs()) * FI(0, hi);
+    return d.inf() > 0;
   }
 
   const MatrixQ& B_;

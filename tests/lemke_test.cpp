@@ -241,6 +241,27 @@ GTEST_TEST(FilteredLemke, DecidesATieTheIntervalsCannotCertifyOnExactTableauColu
   EXPECT_GT(filter_stats().at(FilterSite::kLemke).certified, 0);
 }
 
+// A zero entry of the entering column that the intervals cannot certify
+// (1/3 − 1/3 after the first pivot), in a row that would lose the ratio
+// test whatever its sign (rhs 6 against the winner's 1 at entry 1/3): no
+// exact decision is needed. By hand: z0 leaves at the second pivot, with
+// z = (3, 0, 0) and w = Bz + b = (0, 6, 10).
+GTEST_TEST(FilteredLemke, AZeroEntryInARowThatCertainlyLosesNeedsNoExactSign) {
+  ForceExactScope filtered(false);
+  MatrixQ B = mat({{0, 0, 0}, {0, 1, 0}, {1, 0, 1}});
+  B(0, 0) = Rational(1, 3);
+  B(1, 0) = Rational(1, 3);
+  const VectorQ b = vec({-1, 5, 7});
+  reset_filter_stats();
+  const auto r = solve_lcp_lemke(B, b);
+  EXPECT_EQ(filter_stats().at(FilterSite::kLemke).fallbacks, 0);
+  ASSERT_EQ(r.status, LemkeStatus::kSolved);
+  EXPECT_EQ(r.pivots, 2);
+  EXPECT_EQ(r.z, vec({3, 0, 0}));
+  EXPECT_EQ(r.w, vec({0, 6, 10}));
+  expect_same(r, solve_forced_exact(B, b), 0);
+}
+
 // Degenerate problems whose ties come late in the path (several z's basic):
 // the exact columns then need the LU of a larger block, with row swaps.
 GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenTiesNeedALargerExactBlock) {
