@@ -106,25 +106,6 @@ void moment_range(const FVecs& r, const FVec2& d, FI& lo, FI& hi) {
 FI fmax(const FI& a, const FI& b) { return FI(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
 FI fmin(const FI& a, const FI& b) { return FI(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup())); }
 
-// cos_half_angle_lower(a, b) (wrench_cone.cpp) enclosed. With C = cos(Δ/2)
-// exact: its answer c passed the exact test c <= C; it starts at the
-// double estimate floored to 2^-20 (within 10^-6 + 2^-20 below C: the
-// estimate's error is far below 10^-6 once a, b are normalised), and each
-// step down from a c' > C lands at c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20.
-// Certified only when that lower end is positive (then c > 0).
-bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
-  const FI Q = fdot(a, a) * fdot(b, b);
-  if (!(Q.inf() > 0)) return false;
-  const FI h = (1 + fdot(a, b) / CGAL::sqrt(Q)) / 2;
-  if (!(h.sup() > 0)) return false;
-  const FI C = CGAL::sqrt(FI(std::max(0.0, h.inf()), h.sup()));
-  const FI step(1.0 / 1048576);
-  const double low = std::min((C - FI(1e-6) - step).inf(), (C * FI(1 - 1.0 / 1024) - step).inf());
-  if (!(low > 0) || !(C.sup() >= low)) return false;
-  out = FI(low, C.sup());
-  return true;
-}
-
 // common_magnitudes (region_targets.cpp) enclosed: lo = max_j T_j.lo ·
 // sqrt_upper(|f_j|²), hi = min_j T_j.hi · sqrt_lower(|f_j|²) · c, where
 // sqrt_upper(x) ∈ [√x, √x + 2^-20] and sqrt_lower(x) ∈ [√x − 2^-20, √x].
@@ -196,6 +177,25 @@ void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const 
 }
 
 }  // namespace
+
+// With C = cos(Δ/2) exact: cos_half_angle_lower's answer c passed the
+// exact test c <= C; it starts at the double estimate floored to 2^-20
+// (within 10^-6 + 2^-20 below C: the estimate's error is far below 10^-6
+// once a, b are normalised), and each step down from a c' > C lands at
+// c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20. Certified only when that
+// lower end is positive (then c > 0).
+bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
+  const FI Q = fdot(a, a) * fdot(b, b);
+  if (!(Q.inf() > 0)) return false;
+  const FI h = (1 + fdot(a, b) / CGAL::sqrt(Q)) / 2;
+  if (!(h.sup() > 0)) return false;
+  const FI C = CGAL::sqrt(FI(std::max(0.0, h.inf()), h.sup()));
+  const FI step(1.0 / 1048576);
+  const double low = std::min((C - FI(1e-6) - step).inf(), (C * FI(1 - 1.0 / 1024) - step).inf());
+  if (!(low > 0) || !(C.sup() >= low)) return false;
+  out = FI(low, C.sup());
+  return true;
+}
 
 namespace {
 

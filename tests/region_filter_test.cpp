@@ -11,6 +11,7 @@
 #include "filter_test_util.h"
 #include "fixel/curve.h"
 #include "fixel/filter.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
@@ -209,6 +210,47 @@ GTEST_TEST(RegionFilter, LegsOfExactlyHalvedPiecesHoldTheExactLegs) {
     const Vec2 leg = sub(exact.control[k + 1], exact.control[k]);
     EXPECT_TRUE(holds(h.second.leg_enclosures()[k].x, leg.x) && holds(h.second.leg_enclosures()[k].y, leg.y)) << k;
   }
+}
+
+// The enclosure of cos_half_angle_lower rests on a static error bound
+// (beside cos_half_bounds). Each certified enclosure, from the directions'
+// enclosures, holds the exact answer for the exact directions: random
+// pairs at every angle, nearly equal and nearly opposite pairs, and lengths
+// from 2^-30 to 2^30. Compared as rationals.
+GTEST_TEST(RegionFilter, CosHalfBoundsHoldTheExactLowerCosineOfTheHalfAngle) {
+  std::mt19937_64 rng(31);
+  std::uniform_int_distribution<int> coord(-1000, 1000), den(1, 997), scale(-30, 30), kind(0, 3);
+  auto pow2 = [](int e) { return e >= 0 ? Rational(Integer(1) << e) : Rational(1, Integer(1) << -e); };
+  int certified = 0, near_opposite = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const Vec2 a{Rational(coord(rng), den(rng)) * pow2(scale(rng)), Rational(coord(rng), den(rng)) * pow2(scale(rng))};
+    if (is_zero(a)) continue;
+    const Rational s = pow2(scale(rng));
+    const Rational eps = Rational(coord(rng), den(rng)) / pow(Integer(10), 1 + trial % 9);
+    Vec2 b;
+    switch (kind(rng)) {
+      case 0:
+        b = {Rational(coord(rng), den(rng)), Rational(coord(rng), den(rng))};
+        break;
+      case 1:  // nearly the same direction
+        b = {s * (a.x + eps * a.y), s * (a.y - eps * a.x)};
+        break;
+      default:  // nearly opposite
+        b = {-s * (a.x + eps * a.y), -s * (a.y - eps * a.x)};
+        break;
+    }
+    if (is_zero(b)) continue;
+    const Rational c = internal::cos_half_angle_lower(a, b);
+    internal::Protect guard;
+    internal::FI out;
+    if (!internal::cos_half_bounds(internal::to_interval(a), internal::to_interval(b), out)) continue;
+    ++certified;
+    if (dot(a, b) < 0) ++near_opposite;
+    EXPECT_TRUE(holds(out, c)) << "trial " << trial << ": c = " << to_string(c) << " not in [" << out.inf() << ", "
+                               << out.sup() << "]";
+  }
+  EXPECT_GT(certified, 1200) << near_opposite;
+  EXPECT_GT(near_opposite, 300) << certified;
 }
 
 }  // namespace

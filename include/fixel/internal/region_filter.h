@@ -111,6 +111,11 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclo
                     const Rational& mu, const std::vector<EdgeFamily>& families, IntervalTarget& target,
                     std::optional<MagnitudeBounds>* bounds = nullptr);
 
+// cos_half_angle_lower(a, b) (internal/wrench_cone_detail.h) of the exact
+// directions enclosed by a and b, enclosed; false when not certified (then
+// nothing is claimed). Needs a Protect scope.
+bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out);
+
 // The point test of status_at: tangents t_in, t_out (enclosures of the exact
 // ones) at `point`.
 Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, const Vec2& c, const Rational& mu,
