@@ -13,6 +13,7 @@
 
 #include "bench_util.h"
 #include "fixel/filter.h"
+#include "fixel/guaranteed.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/lcp.h"
 #include "fixel/region.h"
@@ -282,6 +283,22 @@ void BM_Float64EigenSampling2PowMinus10(benchmark::State& state) {
   state.SetLabel(names[state.range(0)]);
 }
 BENCHMARK(BM_Float64EigenSampling2PowMinus10)->Arg(3)->Arg(0)->Unit(benchmark::kMillisecond);
+
+// The region against G (--guaranteed) on blob32 at 2^-20, filtered and
+// exact-only: G's own interval pre-test (OUT and partial from enclosures).
+void BM_GuaranteedBlob32At2PowMinus20(benchmark::State& state) {
+  const Loaded& l = scene(3);
+  static const fixel::GuaranteedSet G = fixel::guaranteed_set(l.scene, l.S);
+  fixel::RegionOptions opt;
+  opt.resolution = Rational(1, 1 << 20);
+  opt.guaranteed = &G;
+  fixel::ForceExactScope exact(state.range(0) != 0);
+  fixel::Region r;
+  for (auto _ : state) r = fixel::compute_region(l.scene, l.S, opt);
+  state.counters["cone_tests"] = static_cast<double>(r.stats.cone_tests);
+  state.SetLabel(state.range(0) ? "G exact-only" : "G filtered");
+}
+BENCHMARK(BM_GuaranteedBlob32At2PowMinus20)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Filter decisions and exact fallbacks of one filtered run per scene.
 void report_filter_counts() {

@@ -10,6 +10,7 @@
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/internal/region_targets.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/region_target.h"
@@ -40,7 +41,9 @@ bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<
   return is_empty(lifted);
 }
 
+using internal::certain_sign;
 using internal::FI;
+using internal::kUndecided;
 
 // One piece's rows a_h·x ≥ c_h (closed and strict alike: the closure) as
 // seen from b0: enclosures of a_h and of β_h = c_h − a_h·b0.
@@ -49,17 +52,57 @@ struct PieceEnclosure {
   std::vector<FI> beta;
 
   PieceEnclosure(const Polyhedron& Q, const VectorQ& b0) {
-    auto add = [&](const Halfspace& h) {
+    auto add = [&](const Halfspace& h, bool is_strict) {
       if (h.a.size() != 3) return;
       a.push_back({internal::to_interval(h.a[0]), internal::to_interval(h.a[1]), internal::to_interval(h.a[2])});
       beta.push_back(internal::to_interval(h.c - h.a.dot(b0)));
+      strict.push_back(is_strict);
     };
-    for (const auto& h : Q.closed) add(h);
-    for (const auto& h : Q.strict) add(h);
+    for (const auto& h : Q.closed) add(h, false);
+    for (const auto& h : Q.strict) add(h, true);
     complete = a.size() == Q.closed.size() + Q.strict.size();
   }
 
-  bool complete = false;  // every row of the piece is here (none of another length)
+  bool complete = false;     // every row of the piece is here (none of another length)
+  std::vector<bool> strict;  // row h is a strict row (a·x > c)
+
+  // Does the ray b0 + τ g (τ > 0) meet the piece: 1 certainly (every row
+  // holds strictly on an open τ-interval, so closed and strict rows alike),
+  // 0 certainly not (its closure misses, with τ > 0), kUndecided. An exact
+  // zero on a strict row is left to the exact test.
+  int ray_hits(const std::array<FI, 3>& g) const {
+    const std::size_t m = beta.size();
+    if (m > 64) return kUndecided;
+    internal::Protect guard;
+    std::array<FI, 64> al;
+    bool hit = complete;
+    for (std::size_t h = 0; h < m; ++h) {
+      al[h] = a[h][0] * g[0] + a[h][1] * g[1] + a[h][2] * g[2];
+      const int sa = certain_sign(al[h]), sb = certain_sign(beta[h]);
+      if (sa == kUndecided) {
+        hit = false;
+        continue;
+      }
+      if (sa == 0) {  // τ·0 ≥ β (or >) for all τ, or for none
+        if (sb == 1) return 0;
+        hit = hit && sb == -1;
+      } else if (sa < 0) {  // τ ≤ v = β/α, and τ > 0: needs β < 0
+        if (sb == 0 || sb == 1) return 0;
+        hit = hit && sb == -1;
+      }
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+      if (!(al[i].inf() > 0)) continue;
+      for (std::size_t j = 0; j < m; ++j) {
+        if (!(al[j].sup() < 0)) continue;
+        // v_i < v_j  ⇔  β_i α_j − β_j α_i > 0 (α_i > 0 > α_j).
+        const FI d = beta[i] * al[j] - beta[j] * al[i];
+        if (d.sup() < 0) return 0;
+        hit = hit && d.inf() > 0;
+      }
+    }
+    return hit ? 1 : kUndecided;
+  }
 
   // A witness that the cone meets the piece: a direction d = Σ w_j g_j
   // (w ≥ 0 exact doubles) and a double τ > 0 with every row strictly
@@ -141,7 +184,7 @@ struct PieceEnclosure {
 };
 
 // The guaranteed set G: a disjoint union of convex pieces.
-class GuaranteedTarget final : public RegionTarget {
+class GuaranteedTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
   GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {
     for (const auto& piece : G_.pieces) {
@@ -151,6 +194,69 @@ class GuaranteedTarget final : public RegionTarget {
   }
   const char* push_model() const override { return "step"; }
   const char* name() const override { return "G"; }
+
+  // The region's interval pre-test: OUT and partial segments from
+  // enclosures; IN segments (their magnitudes come from the piece that
+  // holds the cone) and points (which can be partial) take the exact path.
+  internal::IntervalTarget* interval_target() override { return this; }
+  bool answers_points() const override { return false; }
+  bool interval_magnitudes(const internal::FGen&, internal::FMagnitudes&) const override { return false; }
+
+  // Hits G: hits some piece (1), misses every piece (0).
+  int interval_ray_hits(const internal::FGen& g) const override {
+    bool undecided = false;
+    for (const auto& e : enclosures_) {
+      const int h = e.ray_hits(g);
+      if (h == 1) return 1;
+      undecided = undecided || h == kUndecided;
+    }
+    return undecided ? kUndecided : 0;
+  }
+
+  // contains_cone: one piece that every generator's ray hits.
+  int interval_contains(const internal::FGen* gens, const int*, std::size_t n) const override {
+    bool undecided = false;
+    for (const auto& e : enclosures_) {
+      bool all = true, some_miss = false;
+      for (std::size_t k = 0; k < n && !some_miss; ++k) {
+        const int h = e.ray_hits(gens[k]);
+        all = all && h == 1;
+        some_miss = h == 0;
+      }
+      if (all) return 1;
+      undecided = undecided || !some_miss;
+    }
+    return undecided ? kUndecided : 0;
+  }
+
+  // misses() of any cone that is not IN, decision by decision in its order:
+  // per piece, a generator's ray that hits it, b0 inside it, then the
+  // certificates that stand for its LP (counted as the LP would be). Nothing
+  // is counted unless the whole answer is certified.
+  bool out_test_sees_hits() const override { return true; }
+  int certify_out_test(const internal::FGen* gens, std::size_t n) override {
+    const std::vector<internal::FGen> fg(gens, gens + n);
+    long tests = 0;
+    int answer = 1;
+    for (std::size_t p = 0; p < G_.pieces.size() && answer == 1; ++p) {
+      bool hit = false;
+      for (std::size_t k = 0; k < n && !hit; ++k) {
+        const int h = enclosures_[p].ray_hits(gens[k]);
+        if (h == kUndecided) return kUndecided;
+        hit = h == 1;
+      }
+      if (hit || b0_inside_[p]) {
+        answer = 0;
+        break;
+      }
+      ++tests;
+      if (enclosures_[p].certify_missed(fg)) continue;
+      if (!enclosures_[p].certify_met(fg)) return kUndecided;
+      answer = 0;
+    }
+    if (stats) stats->lp_tests += tests;
+    return answer;
+  }
 
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)

@@ -177,7 +177,7 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
       t_out = j ? internal::start_tangent(b.pieces[j->next]) : t;
     };
     if (!force_exact())
-      if (internal::IntervalTarget* it = ctx.target.interval_target()) {
+      if (internal::IntervalTarget* it = ctx.target.interval_target(); it && it->answers_points()) {
         std::optional<internal::MagnitudeBounds> bounds;
         const internal::FVec2 ft = j ? internal::FVec2{} : internal::to_interval(t);
         const internal::Quick q =

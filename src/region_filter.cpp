@@ -141,24 +141,25 @@ bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, con
 // depend on it).
 Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
   boost::container::small_vector<boost::container::small_vector<int, 8>, 2> hits(cones.size());
-  bool some_miss = false, some_undecided = false;
+  FGens all;
+  boost::container::small_vector<int, 16> all_hits;
   for (std::size_t c = 0; c < cones.size(); ++c)
     for (const auto& g : cones[c]) {
-      const int h = target.interval_ray_hits(g);
-      hits[c].push_back(h);
-      some_miss = some_miss || h == 0;
-      some_undecided = some_undecided || h == kUndecided;
+      hits[c].push_back(target.interval_ray_hits(g));
+      all.push_back(g);
+      all_hits.push_back(hits[c].back());
     }
-  if (!some_miss) {
-    if (some_undecided) throw Undecided{};
-    return Quick::kIn;
-  }
+  const int in = target.interval_contains(all.data(), all_hits.data(), all.size());
+  if (in == kUndecided) throw Undecided{};
+  if (in == 1) return Quick::kIn;
   if (!segment) return Quick::kOut;
   for (std::size_t c = 0; c < cones.size(); ++c) {
-    if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
-    // An undecided ray could be a hit, which would spare the LP a certified
-    // answer counts (RegionStats::lp_tests): the exact tests decide.
-    if (std::find(hits[c].begin(), hits[c].end(), kUndecided) != hits[c].end()) throw Undecided{};
+    if (!target.out_test_sees_hits()) {
+      if (std::find(hits[c].begin(), hits[c].end(), 1) != hits[c].end()) continue;  // does not miss
+      // An undecided ray could be a hit, which would spare the LP a certified
+      // answer counts (RegionStats::lp_tests): the exact tests decide.
+      if (std::find(hits[c].begin(), hits[c].end(), kUndecided) != hits[c].end()) throw Undecided{};
+    }
     const int missed = target.certify_out_test(cones[c].data(), cones[c].size());
     if (missed == 1) return Quick::kOut;
     if (missed == kUndecided) throw Undecided{};  // the exact LP decides
@@ -184,6 +185,15 @@ void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const 
 // once a, b are normalised), and each step down from a c' > C lands at
 // c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20. Certified only when that
 // lower end is positive (then c > 0).
+int IntervalTarget::interval_contains(const FGen*, const int* hits, std::size_t n) const {
+  bool undecided = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (hits[k] == 0) return 0;
+    undecided = undecided || hits[k] == kUndecided;
+  }
+  return undecided ? kUndecided : 1;
+}
+
 bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
   const FI Q = fdot(a, a) * fdot(b, b);
   if (!(Q.inf() > 0)) return false;

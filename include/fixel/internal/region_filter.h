@@ -33,9 +33,10 @@ struct FMagnitudes {
 };
 
 // What a target answers on enclosures. Its owner promises: contains_cone is
-// true iff every generator's ray hits, test_point is contains_cone (IN or
-// OUT), and misses is true iff no generator's ray hits and the LP proves the
-// cone misses (the Farkas certificate below is one such proof).
+// interval_contains, test_point is contains_cone (IN or OUT) when
+// answers_points(), and misses is true iff no generator's ray hits and the
+// LP proves the cone misses (the Farkas certificate below is one such
+// proof).
 class IntervalTarget {
  public:
   virtual ~IntervalTarget() = default;
@@ -43,12 +44,24 @@ class IntervalTarget {
   virtual int interval_ray_hits(const FGen& g) const = 0;
   // The OUT test of cone(gens[0..n)) (the target's misses()) when certified:
   // 1 the cone misses the target, 0 it meets it, kUndecided. A certified
-  // answer counts the LP test it stands for (RegionStats::lp_tests).
+  // answer counts the LP test it stands for (RegionStats::lp_tests). Asked
+  // only of cones with no ray hit, unless out_test_sees_hits().
   virtual int certify_out_test(const FGen* gens, std::size_t n) = 0;
+  // Whether certify_out_test is asked of every cone that is not IN: a
+  // target whose misses() counts LP tests before it notices a hit.
+  virtual bool out_test_sees_hits() const { return false; }
   // T(g) enclosed; false when a sign is undecided or T(g) may be empty. The
   // owner's contains_cone reports common_magnitudes (region_targets.h) of
   // these T and half_line = no T has an upper end.
   virtual bool interval_magnitudes(const FGen& g, FMagnitudes& out) const = 0;
+  // contains_cone on enclosures: 1 IN, 0 not IN, kUndecided, given each
+  // generator's interval_ray_hits. A convex target holds the cone iff every
+  // generator's ray hits it (the default); a union of convex pieces (G)
+  // needs one piece that all of them hit.
+  virtual int interval_contains(const FGen* gens, const int* hits, std::size_t n) const;
+  // Whether test_point is contains_cone (IN or OUT), so that the point
+  // pre-test applies; false for a target whose points can be partial.
+  virtual bool answers_points() const { return true; }
 };
 
 // Enclosure of the magnitudes an IN answer reports (certified non-empty).
