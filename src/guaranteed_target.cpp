@@ -52,24 +52,23 @@ struct PieceEnclosure {
   std::vector<FI> beta;
 
   PieceEnclosure(const Polyhedron& Q, const VectorQ& b0) {
-    auto add = [&](const Halfspace& h, bool is_strict) {
+    auto add = [&](const Halfspace& h) {
       if (h.a.size() != 3) return;
       a.push_back({internal::to_interval(h.a[0]), internal::to_interval(h.a[1]), internal::to_interval(h.a[2])});
       beta.push_back(internal::to_interval(h.c - h.a.dot(b0)));
-      strict.push_back(is_strict);
     };
-    for (const auto& h : Q.closed) add(h, false);
-    for (const auto& h : Q.strict) add(h, true);
+    for (const auto& h : Q.closed) add(h);
+    for (const auto& h : Q.strict) add(h);
     complete = a.size() == Q.closed.size() + Q.strict.size();
   }
 
-  bool complete = false;     // every row of the piece is here (none of another length)
-  std::vector<bool> strict;  // row h is a strict row (a·x > c)
+  bool complete = false;  // every row of the piece is here (none of another length)
 
   // Does the ray b0 + τ g (τ > 0) meet the piece: 1 certainly (every row
   // holds strictly on an open τ-interval, so closed and strict rows alike),
-  // 0 certainly not (its closure misses, with τ > 0), kUndecided. An exact
-  // zero on a strict row is left to the exact test.
+  // 0 certainly not (its closure misses, with τ > 0), kUndecided. Exact
+  // zeros (α_h = β_h = 0, or two ends that meet) are left to the exact test,
+  // where strict and closed rows differ.
   int ray_hits(const std::array<FI, 3>& g) const {
     const std::size_t m = beta.size();
     if (m > 64) return kUndecided;

@@ -179,12 +179,7 @@ void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const 
 
 }  // namespace
 
-// With C = cos(Δ/2) exact: cos_half_angle_lower's answer c passed the
-// exact test c <= C; it starts at the double estimate floored to 2^-20
-// (within 10^-6 + 2^-20 below C: the estimate's error is far below 10^-6
-// once a, b are normalised), and each step down from a c' > C lands at
-// c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20. Certified only when that
-// lower end is positive (then c > 0).
+// The convex target's rule: every generator's ray hits.
 int IntervalTarget::interval_contains(const FGen*, const int* hits, std::size_t n) const {
   bool undecided = false;
   for (std::size_t k = 0; k < n; ++k) {
@@ -194,6 +189,12 @@ int IntervalTarget::interval_contains(const FGen*, const int* hits, std::size_t 
   return undecided ? kUndecided : 1;
 }
 
+// With C = cos(Δ/2) exact: cos_half_angle_lower's answer c passed the
+// exact test c <= C; it starts at the double estimate floored to 2^-20
+// (within 10^-6 + 2^-20 below C: the estimate's error is far below 10^-6
+// once a, b are normalised), and each step down from a c' > C lands at
+// c'(1 − 1/1024) − 2^-20 > C(1 − 1/1024) − 2^-20. Certified only when that
+// lower end is positive (then c > 0).
 bool cos_half_bounds(const FVec2& a, const FVec2& b, FI& out) {
   const FI Q = fdot(a, a) * fdot(b, b);
   if (!(Q.inf() > 0)) return false;

@@ -83,12 +83,12 @@ enum class Quick {
 };
 
 // A piece of the subdivision: a parameter range [u0, u1] of a boundary
-// piece, enclosures of its control points and of its control polygon's legs
-// (both halved in intervals), and its
-// exact control points only when asked for (the exact path), then made from
-// the boundary piece (the control points of a sub-curve are unique, so they
-// equal those of repeated halving). Children of a piece whose exact points
-// were asked for are halved exactly.
+// piece, enclosures of its control points and of its control polygon's
+// legs (both halved in intervals), and its exact control points only when
+// asked for (the exact path), then made from the boundary piece (the
+// control points of a sub-curve are unique, so they equal those of
+// repeated halving). Children of a piece whose exact points were asked for
+// are halved exactly.
 class LazyPiece {
  public:
   using Enclosures = boost::container::small_vector<FVec2, 4>;
