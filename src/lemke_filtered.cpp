@@ -63,6 +63,54 @@ class ScaledProblem {
   std::vector<Integer> scale_;
 };
 
+// Exact basic values at a basis β: row t holds num_t/den, or
+// num_t/(den·L_i) when its basic variable is w_i; den > 0.
+struct BasicValues {
+  std::vector<Integer> num;
+  Integer den;
+
+  void normalize_sign() {
+    if (mpz_sgn(mp(den)) >= 0) return;
+    mpz_neg(mp(den), mp(den));
+    for (auto& x : num) mpz_neg(mp(x), mp(x));
+  }
+};
+
+// Whether `values` solve the LCP at the complementary basis β: z0 is not
+// basic, no variable is basic with its complement, every value is ≥ 0 and
+// every equation of the scaled problem holds exactly. With den·x the
+// integers of BasicValues, equation i reads
+//   [w_i basic] num + Σ_{z_j basic} A(i, z_j)·num = den·b_i.
+// This checks the elimination that produced the values, row by row, with
+// one product per basic z and no gcd.
+bool solves_lcp_at_basis(const ScaledProblem& P, const std::vector<int>& basis, const BasicValues& values) {
+  const int n = P.n();
+  std::vector<int> row_of(2 * n + 1, -1);
+  for (int t = 0; t < n; ++t) {
+    const int v = basis[t];
+    if (v < 0 || v >= 2 * n || row_of[v] >= 0) return false;  // z0 basic, or not a basis
+    row_of[v] = t;
+  }
+  for (int i = 0; i < n; ++i)
+    if (row_of[i] >= 0 && row_of[n + i] >= 0) return false;  // w_i and z_i both basic
+  for (int t = 0; t < n; ++t)
+    if (mpz_sgn(mp(values.num[t])) < 0) return false;
+  Integer sum, rhs;
+  for (int i = 0; i < n; ++i) {
+    if (row_of[i] >= 0)
+      mpz_set(mp(sum), mp(values.num[row_of[i]]));
+    else
+      mpz_set_ui(mp(sum), 0);
+    for (int j = 0; j < n; ++j) {
+      const int t = row_of[n + j];
+      if (t >= 0) mpz_addmul(mp(sum), mp(P.entry(i, n + j)), mp(values.num[t]));
+    }
+    mpz_mul(mp(rhs), mp(values.den), mp(P.entry(i, 2 * n + 1)));
+    if (mpz_cmp(mp(sum), mp(rhs)) != 0) return false;
+  }
+  return true;
+}
+
 // The exact tableau A_β⁻¹ [A | b] at one basis β, A = [I, −B, −e], column by
 // column on demand, in integers. Rows whose basic variable is some w_i solve
 // trivially, so only the k×k block C of the basic z's (and z0) on the other
@@ -155,36 +203,37 @@ class ExactTableau {
 
   bool has_column(int col) const { return have_[col]; }
 
-  // The right-hand side at the basis that pivoting on (r, col) reaches, from
-  // this basis's columns `rhs` and `col` (both computed already): row r
-  // becomes N_r/S_r and row t ≠ r (N_t·S_r − N_r·S_t)/(σ_t·S_r). False if
-  // S_r = 0. This spares factoring the next basis for the final values.
-  bool values_after_pivot(int r, int col, int rhs, std::vector<Rational>& values) {
+  // The basic values at this basis: row t holds num_t/den, or
+  // num_t/(den·L_i) for the row of w_i (rhs's column computed or not).
+  void basic_values(int rhs, BasicValues& out) {
+    const Integer* N = column(rhs);
+    out.num.resize(n_);
+    for (int t = 0; t < n_; ++t) mpz_set(mp(out.num[t]), mp(N[t]));
+    mpz_set(mp(out.den), mp(D_));
+    out.normalize_sign();
+  }
+
+  // The basic values at the basis that pivoting on (r, col) reaches, in the
+  // form of basic_values, from this basis's columns `rhs` and `col` (both
+  // computed already): with S = column(col), row r becomes N_r/S_r and row
+  // t ≠ r (N_t·S_r − N_r·S_t)/(σ_t·S_r), so den = D·S_r. False if S_r = 0.
+  // This spares factoring the next basis for the final values.
+  bool basic_values_after_pivot(int r, int col, int rhs, BasicValues& out) {
     const Integer* N = column(rhs);
     const Integer* S = column(col);
     if (mpz_sgn(mp(S[r])) == 0) return false;
-    values.resize(n_);
+    out.num.resize(n_);
     for (int t = 0; t < n_; ++t) {
-      auto* q = values[t].backend().data();
-      if (t == r) {
-        mpz_set(mpq_numref(q), mp(N[r]));
-        mpz_set(mpq_denref(q), mp(S[r]));
-      } else {
-        mpz_mul(mpq_numref(q), mp(N[t]), mp(S[r]));
-        mpz_submul(mpq_numref(q), mp(N[r]), mp(S[t]));
-        mpz_mul(mpq_denref(q), mp(D_), mp(S[r]));
-        if (basis_[t] < n_) mpz_mul(mpq_denref(q), mpq_denref(q), mp(P_->scale(basis_[t])));
-      }
-      mpq_canonicalize(q);
+      if (t == r) continue;
+      mpz_mul(mp(out.num[t]), mp(N[t]), mp(S[r]));
+      mpz_submul(mp(out.num[t]), mp(N[r]), mp(S[t]));
     }
+    // Row r: N_r/S_r = num_r/den with den = D·S_r (times L_i when col is w_i).
+    mpz_mul(mp(out.num[r]), mp(N[r]), mp(D_));
+    if (col < n_) mpz_mul(mp(out.num[r]), mp(out.num[r]), mp(P_->scale(col)));
+    mpz_mul(mp(out.den), mp(D_), mp(S[r]));
+    out.normalize_sign();
     return true;
-  }
-
-  // The exact value of entry (t, col).
-  Rational value(int t, int col) {
-    Integer sigma = D_;
-    if (basis_[t] < n_) mpz_mul(mp(sigma), mp(sigma), mp(P_->scale(basis_[t])));
-    return Rational(column(col)[t], sigma);
   }
 
  private:
@@ -236,6 +285,7 @@ class ExactTableau {
 struct ExactWorkspace {
   ScaledProblem problem;
   ExactTableau tableau;
+  BasicValues final_values;
 };
 
 ExactWorkspace& exact_workspace() {
@@ -338,7 +388,7 @@ class FilteredRun {
       if (leaving == T_.z0() && tableau_current_) {
         ExactTableau& E = exact_workspace().tableau;
         if (E.has_column(T_.rhs()) && E.has_column(entering))
-          final_ready_ = E.values_after_pivot(r, entering, T_.rhs(), final_values_);
+          final_ready_ = E.basic_values_after_pivot(r, entering, T_.rhs(), final_);
       }
       if (!pivot(r, entering)) return false;
       ++pivots;
@@ -349,16 +399,19 @@ class FilteredRun {
     result.status = status;
     result.pivots = pivots;
     if (status == LemkeStatus::kSolved) {
+      if (!final_ready_) exact().basic_values(T_.rhs(), final_);
+      // Never report a wrong "solved" (the exact path uses is_solution).
+      if (!solves_lcp_at_basis(exact_workspace().problem, T_.basis(), final_))
+        throw InternalError("solve_lcp_lemke: the filtered run's final values fail the exact check of the equations");
       result.w = VectorQ::Zero(n_);
       result.z = VectorQ::Zero(n_);
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
-        if (v >= 2 * n_) continue;
-        Rational& out = v < n_ ? result.w[v] : result.z[v - n_];
-        if (final_ready_)
-          std::swap(out, final_values_[t]);
-        else
-          out = exact().value(t, T_.rhs());
+        auto* q = (v < n_ ? result.w[v] : result.z[v - n_]).backend().data();
+        mpz_set(mpq_numref(q), mp(final_.num[t]));
+        mpz_set(mpq_denref(q), mp(final_.den));
+        if (v < n_) mpz_mul(mpq_denref(q), mpq_denref(q), mp(exact_workspace().problem.scale(v)));
+        mpq_canonicalize(q);
       }
     }
     return true;
@@ -454,8 +507,8 @@ class FilteredRun {
   int n_;
   IntervalTableau T_;
   bool scaled_ = false, tableau_current_ = false;
-  bool final_ready_ = false;            // final_values_ hold the final basis's rows
-  std::vector<Rational> final_values_;  // by tableau row
+  bool final_ready_ = false;  // final_ holds the final basis's values
+  BasicValues& final_ = exact_workspace().final_values;
   long certified_ = 0, exact_ = 0;
 };
 
@@ -464,6 +517,16 @@ class FilteredRun {
 bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result) {
   FilteredRun run(B, b);
   return run.run(max_pivots, result);
+}
+
+bool solves_lcp_at_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis,
+                         const std::vector<Integer>& num, const Integer& den) {
+  const auto n = static_cast<std::size_t>(b.size());
+  if (basis.size() != n || num.size() != n || mpz_sgn(mp(den)) <= 0) return false;
+  ScaledProblem P;
+  P.assign(B, b);
+  BasicValues values{num, den};
+  return solves_lcp_at_basis(P, basis, values);
 }
 
 }  // namespace fixel::internal

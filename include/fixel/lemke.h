@@ -11,7 +11,7 @@ namespace fixel {
 
 /// How a Lemke run ended. Only kSolved carries a solution.
 enum class LemkeStatus {
-  kSolved,          ///< w, z solve the LCP (checked exactly by is_solution).
+  kSolved,          ///< w, z solve the LCP (checked exactly before they are returned).
   kRayTermination,  ///< The path left on an unbounded ray: no solution was found on it.
   kPivotLimit,      ///< Stopped after max_pivots pivots.
 };
@@ -34,7 +34,9 @@ struct LemkeResult {
 /// interval tableau, with each decision the intervals cannot certify taken
 /// on exact columns of the tableau (docs/theory.md §6); status, pivots, w
 /// and z are the same either way.
-/// A kSolved result has been verified by is_solution. max_pivots <= 0 means
+/// A kSolved result has been verified exactly: by is_solution on the exact
+/// path, and on the filtered path by a residual check of every equation in
+/// integers (docs/theory.md §6). max_pivots <= 0 means
 /// 100·(n + 1). Throws InputError if B is not square or b has the wrong size.
 LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots = 0);
 
