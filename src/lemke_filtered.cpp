@@ -296,18 +296,23 @@ ExactWorkspace& exact_workspace() {
 // The same tableau in intervals (Gauss–Jordan on [I, −B, −e | b]): every
 // entry encloses the exact tableau's. It is the integer tableau of
 // src/lemke.cpp up to positive row and column scalings, which change no
-// ratio-test decision.
+// ratio-test decision. Only the n + 1 nonbasic columns and b are stored: a
+// basic variable's column is a unit vector, and the leaving variable's
+// column takes over the entering one's storage. Needs a Protect scope.
 class IntervalTableau {
  public:
-  IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())), w_(2 * n_ + 2) {
-    T_.assign(static_cast<std::size_t>(n_) * w_, FI(0));
+  IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())), width_(n_ + 2) {
+    T_.assign(static_cast<std::size_t>(n_) * width_, FI(0));
     basis_.resize(n_);
+    slot_.assign(2 * n_ + 2, -1);
+    // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
+    for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
+    slot_[rhs()] = n_ + 1;
     for (int i = 0; i < n_; ++i) {
-      at(i, i) = FI(1);
       for (int j = 0; j < n_; ++j)
-        if (B(i, j) != 0) at(i, n_ + j) = -to_interval(B(i, j));
-      at(i, z0()) = FI(-1);
-      at(i, rhs()) = to_interval(b[i]);
+        if (B(i, j) != 0) at_slot(i, j) = -enclosure(B(i, j));
+      at_slot(i, n_) = FI(-1);
+      at_slot(i, n_ + 1) = enclosure(b[i]);
       basis_[i] = i;
     }
   }
@@ -317,32 +322,62 @@ class IntervalTableau {
   int basic(int row) const { return basis_[row]; }
   const std::vector<int>& basis() const { return basis_; }
   int complement(int var) const { return var < n_ ? var + n_ : var - n_; }
-  FI& at(int i, int j) { return T_[static_cast<std::size_t>(i) * w_ + j]; }
-  const FI& at(int i, int j) const { return T_[static_cast<std::size_t>(i) * w_ + j]; }
 
-  // Needs a Protect scope and a pivot interval that excludes zero.
+  // Entry (i, var): a unit-vector entry for a basic variable.
+  FI at(int i, int var) const {
+    const int k = slot_[var];
+    if (k >= 0) return T_[static_cast<std::size_t>(i) * width_ + k];
+    return FI(basis_[i] == var ? 1 : 0);
+  }
+
+  // Pivot on (r, s), s nonbasic; needs a pivot interval that excludes zero.
+  // The leaving variable's column, e_r before, becomes (−T(i, s)/p)_i with
+  // 1/p in row r, and is stored in s's slot.
   void pivot(int r, int s) {
-    const FI p = at(r, s);
-    for (int j = 0; j < w_; ++j) at(r, j) /= p;
-    at(r, s) = FI(1);
+    const int ks = slot_[s];
+    const int leaving = basis_[r];
+    const FI p = at_slot(r, ks);
+    for (int k = 0; k < width_; ++k)
+      if (k != ks) at_slot(r, k) /= p;
+    at_slot(r, ks) = FI(1) / p;
     for (int i = 0; i < n_; ++i) {
       if (i == r) continue;
-      const FI f = at(i, s);
+      const FI f = at_slot(i, ks);
       if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
-      for (int j = 0; j < w_; ++j) {
-        const FI& x = at(r, j);
+      for (int k = 0; k < width_; ++k) {
+        if (k == ks) continue;
+        const FI& x = at_slot(r, k);
         if (x.inf() == 0 && x.sup() == 0) continue;
-        at(i, j) -= f * x;
+        at_slot(i, k) -= f * x;
       }
-      at(i, s) = FI(0);
+      at_slot(i, ks) = -f * at_slot(r, ks);
     }
     basis_[r] = s;
+    slot_[leaving] = ks;
+    slot_[s] = -1;
   }
 
  private:
-  int n_, w_;
-  std::vector<FI> T_;
-  std::vector<int> basis_;
+  FI& at_slot(int i, int k) { return T_[static_cast<std::size_t>(i) * width_ + k]; }
+
+  // q in an interval: when numerator and denominator are exact doubles, one
+  // interval division (outward rounded), else the shared conversion.
+  static FI enclosure(const Rational& q) {
+    const auto* m = q.backend().data();
+    const mpz_srcptr num = mpq_numref(m), den = mpq_denref(m);
+    constexpr mp_limb_t kExact = mp_limb_t(1) << 53;
+    if (mpz_size(num) <= 1 && mpz_size(den) == 1 && mpz_getlimbn(num, 0) < kExact && mpz_getlimbn(den, 0) < kExact) {
+      const double n = static_cast<double>(mpz_getlimbn(num, 0));
+      const FI quotient = FI(n) / FI(static_cast<double>(mpz_getlimbn(den, 0)));
+      return mpz_sgn(num) < 0 ? -quotient : quotient;
+    }
+    return to_interval(q);
+  }
+
+  int n_, width_;
+  std::vector<FI> T_;       // row-major, width_ slots per row
+  std::vector<int> basis_;  // basic variable of each row
+  std::vector<int> slot_;   // storage slot of each nonbasic variable (and b), else −1
 };
 
 // One filtered run: each decision of the exact run (src/lemke.cpp) is taken
@@ -355,7 +390,6 @@ class FilteredRun {
   ~FilteredRun() { record_filter(FilterSite::kLemke, certified_, exact_); }
 
   bool run(int max_pivots, LemkeResult& result) {
-    Protect guard;
     // z0 enters; the row with the most negative b leaves, ties to the larger index.
     int r = 0;
     for (int i = 1; i < n_; ++i) {
@@ -505,6 +539,7 @@ class FilteredRun {
   const MatrixQ& B_;
   const VectorQ& b_;
   int n_;
+  Protect guard_;  // the interval tableau's whole life
   IntervalTableau T_;
   bool scaled_ = false, tableau_current_ = false;
   bool final_ready_ = false;  // final_ holds the final basis's values
