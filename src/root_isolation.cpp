@@ -17,6 +17,7 @@
 #include <algorithm>
 
 #include "fixel/error.h"
+#include "fixel/internal/polynomial.h"
 
 namespace fixel::internal {
 
@@ -70,23 +71,7 @@ Rational from_arf(const arf_t x) {
   return r;
 }
 
-int sign_at(const std::vector<Integer>& p, const Rational& q) {
-  // Exact: homogenised integer evaluation.
-  const Integer n = numerator(q), d = denominator(q);
-  Integer v = 0, dpow = 1;
-  for (std::size_t i = p.size(); i-- > 0;) {
-    v = v * n + p[i] * dpow;
-    dpow *= d;
-  }
-  return v > 0 ? 1 : (v < 0 ? -1 : 0);
-}
-
-void bisect(AlgebraicReal& x) {
-  const Rational m = (x.lo + x.hi) / 2;
-  const int s_lo = sign_at(x.poly, x.lo), s_m = sign_at(x.poly, m);
-  if (s_lo == 0 || s_m == 0) throw InternalError("root isolation: an irreducible factor has a rational root");
-  (s_m == s_lo ? x.lo : x.hi) = m;
-}
+void bisect(AlgebraicReal& x) { split_at(x, (x.lo + x.hi) / 2); }
 
 // Descartes' rule on (0, 1): the sign variations of the coefficients of
 // (1 + t)^n f(1/(1 + t)) bound the number of roots of f in (0, 1) from

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fixel/algebraic.h"
+#include "fixel/error.h"
 #include "fixel/geometry.h"
 
 namespace fixel::internal {
@@ -88,6 +89,28 @@ inline Polynomial derivative(const Polynomial& p) {
   for (std::size_t i = 1; i < p.size(); ++i) r.push_back(p[i] * static_cast<long>(i));
   trim(r);
   return r;
+}
+
+// Sign of p(q) for integer coefficients: the homogenised value
+// Σ c_i n^i d^(deg−i) (d > 0) has the sign of p(n/d).
+inline int sign_at(const std::vector<Integer>& p, const Rational& q) {
+  const Integer n = numerator(q), d = denominator(q);
+  Integer v = 0, dpow = 1;
+  // Horner in n with the powers of d accumulated from the top.
+  for (std::size_t i = p.size(); i-- > 0;) {
+    v = v * n + p[i] * dpow;
+    dpow *= d;
+  }
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+// One bisection step of an irrational x's isolating interval at
+// m ∈ (lo, hi). m is never a root (x.poly is irreducible of degree >= 2).
+inline void split_at(AlgebraicReal& x, const Rational& m) {
+  const int s_lo = sign_at(x.poly, x.lo), s_m = sign_at(x.poly, m);
+  if (s_lo == 0 || s_m == 0)
+    throw InternalError("algebraic number: a rational root of an irreducible polynomial of degree >= 2");
+  (s_m == s_lo ? x.lo : x.hi) = m;
 }
 
 }  // namespace fixel::internal
