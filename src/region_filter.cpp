@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <boost/container/small_vector.hpp>
 
+#include "fixel/internal/wrench_cone_detail.h"
+
 namespace fixel::internal {
 
 namespace {
@@ -42,17 +44,8 @@ bool is_zero_f(const FVec2& v) {
 
 // push_direction (wrench_cone.cpp) on enclosures, the same formula.
 FVec2 fpush(const FVec2& tangent, EdgeFamily family, const FI& mu) {
-  const FVec2 n = frot90(tangent), t = frot90(n);
-  switch (family) {
-    case EdgeFamily::kNormal:
-      return n;
-    case EdgeFamily::kPlus:
-      return {n.x + mu * t.x, n.y + mu * t.y};
-    case EdgeFamily::kMinus:
-    case EdgeFamily::kWholeCone:
-      return {n.x - mu * t.x, n.y - mu * t.y};
-  }
-  return n;
+  const FVec2 n = frot90(tangent);
+  return push_direction_from(n, frot90(n), family, mu);
 }
 
 // direction_extremes (wrench_cone.cpp) on enclosures: the same decisions in

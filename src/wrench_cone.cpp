@@ -268,17 +268,8 @@ std::string to_string(EdgeFamily family) {
 }
 
 Vec2 push_direction(const Vec2& tangent, EdgeFamily family, const Rational& mu) {
-  const Vec2 n = rot90(tangent), t = rot90(n);
-  switch (family) {
-    case EdgeFamily::kNormal:
-      return n;
-    case EdgeFamily::kPlus:
-      return {n.x + mu * t.x, n.y + mu * t.y};
-    case EdgeFamily::kMinus:
-    case EdgeFamily::kWholeCone:
-      return {n.x - mu * t.x, n.y - mu * t.y};
-  }
-  return n;
+  const Vec2 n = rot90(tangent);
+  return internal::push_direction_from(n, rot90(n), family, mu);
 }
 
 bool WrenchCone::contains(const VectorQ& w) const {

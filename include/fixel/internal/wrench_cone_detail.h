@@ -7,6 +7,23 @@
 
 namespace fixel::internal {
 
+// push_direction's formula for any number type (Rational, or intervals in
+// the region's pre-test): from the inward normal n = rot90(tangent) and
+// t = rot90(n), the direction n, n + μt or n − μt of `family`.
+template <class V, class S>
+V push_direction_from(const V& n, const V& t, EdgeFamily family, const S& mu) {
+  switch (family) {
+    case EdgeFamily::kNormal:
+      return n;
+    case EdgeFamily::kPlus:
+      return {n.x + mu * t.x, n.y + mu * t.y};
+    case EdgeFamily::kMinus:
+    case EdgeFamily::kWholeCone:
+      return {n.x - mu * t.x, n.y - mu * t.y};
+  }
+  return n;
+}
+
 // The exact wrench cone of a corner point r (lever arm) whose push
 // directions fan from d_in to d_out (the angle between them < π):
 // generators (d_in, r ⊗ d_in) and (d_out, r ⊗ d_out).
