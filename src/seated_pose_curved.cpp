@@ -95,19 +95,24 @@ std::pair<int, double> locate(const Boundary& b, const P2<double>& p, double& be
   return {best_k, best_s};
 }
 
+// A contact's data in arithmetic T: the double or the interval copy.
+template <class T, class D, class I>
+const auto& in(const D& as_double, const I& as_interval) {
+  if constexpr (std::is_same_v<T, double>)
+    return as_double;
+  else
+    return as_interval;
+}
+
 // F(z) and its Jacobian on any arithmetic (double or interval).
 template <class T>
 void residual(const std::vector<Contact>& cs, const P2<T>& cm, const std::array<T, kUnknowns>& z,
               std::array<T, kUnknowns>* F, std::array<std::array<T, kUnknowns>, kUnknowns>* J) {
   const T &tx = z[0], &ty = z[1], &c = z[2], &s = z[3];
   for (int i = 0; i < 3; ++i) {
-    std::vector<P2<T>> ctrl, deriv;
-    P2<T> f;
-    if constexpr (std::is_same_v<T, double>) {
-      ctrl = cs[i].ctrl, deriv = cs[i].deriv, f = cs[i].f;
-    } else {
-      ctrl = cs[i].ctrl_iv, deriv = cs[i].deriv_iv, f = cs[i].f_iv;
-    }
+    const auto& ctrl = in<T>(cs[i].ctrl, cs[i].ctrl_iv);
+    const auto& deriv = in<T>(cs[i].deriv, cs[i].deriv_iv);
+    const P2<T>& f = in<T>(cs[i].f, cs[i].f_iv);
     const P2<T> B = de_casteljau(ctrl, z[4 + i]), dB = de_casteljau(deriv, z[4 + i]);
     const T rx = B.x - cm.x, ry = B.y - cm.y;
     if (F) {
