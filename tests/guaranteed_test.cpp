@@ -72,8 +72,9 @@ GTEST_TEST(GuaranteedSet, Example2GuaranteedSetEqualsS) {
 // pieces represent the same set, disjointly.
 GTEST_TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
   std::mt19937_64 rng(83);
+  const int wanted = test::sanitizer_scaled(24);
   int scenes = 0, nonunique = 0, points = 0, lost_points = 0;
-  for (int attempt = 0; attempt < 200 && scenes < 24; ++attempt) {
+  for (int attempt = 0; attempt < 200 && scenes < wanted; ++attempt) {
     Scene scene = test::random_scene(rng, 3, 20);
     for (auto& f : scene.fixels) f.mu = Rational(1, 20) + test::random_rational(rng, 0, 2, 20) * Rational(39, 40);
     SeatingSet S;
@@ -97,7 +98,7 @@ GTEST_TEST(GuaranteedSet, AgreesWithEnumerationOnRandomScenes) {
       lost_points += S.contains(p) && !in_g;
     }
   }
-  EXPECT_EQ(scenes, 24);
+  EXPECT_EQ(scenes, wanted);
   EXPECT_GT(nonunique, 0);
   EXPECT_GT(lost_points, 0);
   std::cout << "[ info     ] " << nonunique << " of " << scenes << " random scenes have non-seating outcomes inside S; "

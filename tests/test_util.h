@@ -11,6 +11,19 @@
 
 namespace fixel::test {
 
+// How many repetitions a long randomized test makes: all n normally, a
+// quarter in the sanitizer tree (scripts/sanitize.sh defines
+// FIXEL_SANITIZED_BUILD), where the same code runs 5–8× slower and the run
+// is there for memory errors and undefined behaviour; the Release suite
+// keeps the full count.
+inline int sanitizer_scaled(int n) {
+#ifdef FIXEL_SANITIZED_BUILD
+  return n / 4 > 0 ? n / 4 : 1;
+#else
+  return n;
+#endif
+}
+
 // An exact vector or matrix from literals.
 inline VectorQ vec(std::initializer_list<Rational> xs) {
   VectorQ v(static_cast<int>(xs.size()));
