@@ -557,7 +557,9 @@ bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeRes
 bool solves_lcp_at_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis,
                          const std::vector<Integer>& num, const Integer& den) {
   const auto n = static_cast<std::size_t>(b.size());
-  if (basis.size() != n || num.size() != n || mpz_sgn(mp(den)) <= 0) return false;
+  if (static_cast<std::size_t>(B.rows()) != n || static_cast<std::size_t>(B.cols()) != n || basis.size() != n ||
+      num.size() != n || mpz_sgn(mp(den)) <= 0)
+    return false;
   ScaledProblem P;
   P.assign(B, b);
   BasicValues values{num, den};

@@ -343,6 +343,7 @@ GTEST_TEST(FilteredLemke, FinalCheckAcceptsTheBasisSolutionAndNothingElse) {
   EXPECT_FALSE(check({2, 4}, {2, 0}, 1));   // z0 still basic
   EXPECT_FALSE(check({0, 1}, {-2, 1}, 1));  // w = b solves the rows, but w_1 = −1 < 0
   EXPECT_FALSE(check(z1_w2, {2, 7}, 0));
+  EXPECT_FALSE(internal::solves_lcp_at_basis(MatrixQ(2, 3), b, z1_w2, {2, 7}, 1));  // B not 2×2: no read past it
   // The filtered run ends at that basis and returns those values.
   ForceExactScope filtered(false);
   const auto r = solve_lcp_lemke(B, b);
