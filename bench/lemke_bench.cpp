@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -229,6 +230,46 @@ void report_filtered_agreement() {
             << ", exact fallback " << c.fallbacks << "\n";
 }
 
+// Per-problem times: each problem solved `reps` times by each solver in
+// turn (so machine noise hits all alike), the mean per solve kept; then the
+// median over the 64 problems, and each problem's ratio filtered / Siconos.
+void report_per_problem_times() {
+  constexpr int reps = 100;
+  using clock = std::chrono::steady_clock;
+  std::vector<double> filtered, doubles, siconos, ratios;
+  Eigen::VectorXd z;
+  for (const auto& pr : problems()) {
+    fixel::ForceExactScope filter(false);
+    auto time = [&](auto&& solve) {
+      const auto t0 = clock::now();
+      for (int r = 0; r < reps; ++r) solve();
+      return std::chrono::duration<double, std::micro>(clock::now() - t0).count() / reps;
+    };
+    filtered.push_back(time([&] { benchmark::DoNotOptimize(fixel::solve_lcp_lemke(pr.B, pr.b)); }));
+    doubles.push_back(time([&] { benchmark::DoNotOptimize(double_lemke(pr.Bd, pr.bd, z)); }));
+#ifdef FIXEL_HAVE_SICONOS
+    siconos.push_back(time([&] { benchmark::DoNotOptimize(siconos_lemke(pr.Bd, pr.bd, z)); }));
+    ratios.push_back(filtered.back() / siconos.back());
+#endif
+  }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : (v[(v.size() - 1) / 2] + v[v.size() / 2]) / 2;
+  };
+  auto range = [](const std::vector<double>& v) {
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return "[" + std::to_string(*lo) + ", " + std::to_string(*hi) + "]";
+  };
+  std::cout << "per problem (mean of " << reps << " solves each), median over the 64 problems [min, max]:\n"
+            << "  filtered exact Lemke  " << median(filtered) << " us " << range(filtered) << "\n"
+            << "  double Lemke          " << median(doubles) << " us " << range(doubles) << "\n";
+#ifdef FIXEL_HAVE_SICONOS
+  std::cout << "  Siconos lexicolemke   " << median(siconos) << " us " << range(siconos) << "\n"
+            << "  filtered / Siconos: median of the ratios " << median(ratios) << ", range " << range(ratios)
+            << "; ratio of the medians " << median(filtered) / median(siconos) << "\n";
+#endif
+}
+
 void BM_DoubleLemke(benchmark::State& state) {
   const auto& all = problems();
   std::size_t k = 0;
@@ -260,6 +301,7 @@ int main(int argc, char** argv) {
   std::cout << "Seating LCPs of " << problems().size()
             << " random 3-fixel scenes (size 12); one solve per iteration.\n";
   report_filtered_agreement();
+  report_per_problem_times();
   report_disagreements("double Lemke", double_lemke);
 #ifdef FIXEL_HAVE_SICONOS
   report_disagreements("Siconos lcp_lexicolemke", siconos_lemke);
