@@ -26,6 +26,8 @@ std::string to_string(FilterSite site) {
   switch (site) {
     case FilterSite::kLemke:
       return "lemke";
+    case FilterSite::kLemkeTie:
+      return "lemke tie";
     case FilterSite::kRayTest:
       return "ray test";
     case FilterSite::kOutTest:

@@ -5,63 +5,12 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/lemke_scaled.h"
+#include "fixel/internal/lemke_tie.h"
 
 namespace fixel::internal {
 
 namespace {
-
-// In-place GMP on Integer storage: the loops below reuse each value's limbs
-// instead of allocating a temporary per operation (Integer has no
-// expression templates), which was most of their cost.
-mpz_ptr mp(Integer& x) { return x.backend().data(); }
-mpz_srcptr mp(const Integer& x) { return x.backend().data(); }
-
-// [A | b] = [I, −B, −e | b] with equation i scaled by L_i > 0, the lcm of
-// the denominators of B's row i and b_i: every entry an integer. Scaling an
-// equation changes no solution of the systems below.
-class ScaledProblem {
- public:
-  void assign(const MatrixQ& B, const VectorQ& b) {
-    n_ = static_cast<int>(b.size());
-    width_ = 2 * n_ + 2;
-    A_.resize(static_cast<std::size_t>(n_) * width_);
-    scale_.resize(n_);
-    Integer factor;
-    for (int i = 0; i < n_; ++i) {
-      Integer& L = scale_[i];
-      mpz_set(mp(L), mpq_denref(b[i].backend().data()));
-      for (int j = 0; j < n_; ++j) {
-        mpz_srcptr q = mpq_denref(B(i, j).backend().data());
-        if (!mpz_divisible_p(mp(L), q)) mpz_lcm(mp(L), mp(L), q);  // denominators repeat
-      }
-      for (int var = 0; var < n_; ++var) mpz_set_ui(mp(at(i, var)), 0);
-      mpz_set(mp(at(i, i)), mp(L));
-      for (int j = 0; j < n_; ++j) {
-        scaled(at(i, n_ + j), B(i, j), L, factor);
-        mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
-      }
-      mpz_neg(mp(at(i, 2 * n_)), mp(L));
-      scaled(at(i, 2 * n_ + 1), b[i], L, factor);
-    }
-  }
-
-  int n() const { return n_; }
-  const Integer& scale(int i) const { return scale_[i]; }
-  // L_i · (i, var) of [A | b]; var 0..n−1 w, n..2n−1 z, 2n z0, 2n+1 b.
-  const Integer& entry(int i, int var) const { return A_[static_cast<std::size_t>(i) * width_ + var]; }
-
- private:
-  Integer& at(int i, int var) { return A_[static_cast<std::size_t>(i) * width_ + var]; }
-  static void scaled(Integer& out, const Rational& x, const Integer& L, Integer& factor) {
-    const auto* q = x.backend().data();
-    mpz_divexact(mp(factor), mp(L), mpq_denref(q));
-    mpz_mul(mp(out), mpq_numref(q), mp(factor));
-  }
-
-  int n_ = 0, width_ = 0;
-  std::vector<Integer> A_;
-  std::vector<Integer> scale_;
-};
 
 // Exact basic values at a basis β: row t holds num_t/den, or
 // num_t/(den·L_i) when its basic variable is w_i; den > 0.
@@ -286,6 +235,8 @@ struct ExactWorkspace {
   ScaledProblem problem;
   ExactTableau tableau;
   BasicValues final_values;
+  TieCertifier ties;
+  std::vector<int> tie_basis;
 };
 
 ExactWorkspace& exact_workspace() {
@@ -315,7 +266,12 @@ class IntervalTableau {
       at_slot(i, n_ + 1) = enclosure(b[i]);
       basis_[i] = i;
     }
+    initial_.resize(T_.size());
+    for (std::size_t k = 0; k < T_.size(); ++k) initial_[k] = T_[k].inf();  // width_ = n + 2: ApproxProblem's layout
   }
+
+  // Doubles near the first tableau's entries, for guesses only.
+  ApproxProblem approx() const { return {initial_.data(), n_}; }
 
   int z0() const { return 2 * n_; }
   int rhs() const { return 2 * n_ + 1; }
@@ -375,9 +331,10 @@ class IntervalTableau {
   }
 
   int n_, width_;
-  std::vector<FI> T_;       // row-major, width_ slots per row
-  std::vector<int> basis_;  // basic variable of each row
-  std::vector<int> slot_;   // storage slot of each nonbasic variable (and b), else −1
+  std::vector<FI> T_;            // row-major, width_ slots per row
+  std::vector<double> initial_;  // the first tableau's slots, approximately
+  std::vector<int> basis_;       // basic variable of each row
+  std::vector<int> slot_;        // storage slot of each nonbasic variable (and b), else −1
 };
 
 // One filtered run: each decision of the exact run (src/lemke.cpp) is taken
@@ -387,7 +344,10 @@ class IntervalTableau {
 class FilteredRun {
  public:
   FilteredRun(const MatrixQ& B, const VectorQ& b) : B_(B), b_(b), n_(static_cast<int>(b.size())), T_(B, b) {}
-  ~FilteredRun() { record_filter(FilterSite::kLemke, certified_, exact_); }
+  ~FilteredRun() {
+    record_filter(FilterSite::kLemke, certified_, exact_);
+    record_filter(FilterSite::kLemkeTie, ties_proved_, ties_unproved_);
+  }
 
   bool run(int max_pivots, LemkeResult& result) {
     // z0 enters; the row with the most negative b leaves, ties to the larger index.
@@ -454,12 +414,8 @@ class FilteredRun {
  private:
   ExactTableau& exact() {
     ExactWorkspace& ws = exact_workspace();
-    if (!scaled_) {
-      ws.problem.assign(B_, b_);
-      scaled_ = true;
-    }
     if (!tableau_current_) {
-      ws.tableau.assign(ws.problem, T_.basis());
+      ws.tableau.assign(problem(), T_.basis());
       tableau_current_ = true;
     }
     return ws.tableau;
@@ -477,8 +433,32 @@ class FilteredRun {
   int compare_ratio(int i, int j, int col, int s) {
     const int c = certain_sign(T_.at(i, col) * T_.at(j, s) - T_.at(j, col) * T_.at(i, s));
     if (c != kUndecided) return ++certified_, c;
+    if (certified_tie(i, j, col, s)) return ++certified_, 0;  // no fallback ran
     ++exact_;
     return exact().cross_sign(i, j, col, s);
+  }
+
+  const ScaledProblem& problem() {
+    ExactWorkspace& ws = exact_workspace();
+    if (!scaled_) {
+      ws.problem.assign(B_, b_);
+      scaled_ = true;
+    }
+    return ws.problem;
+  }
+
+  // Whether T(i, col)·T(j, s) − T(j, col)·T(i, s) = 0, proved exactly
+  // (internal/lemke_tie.h): that 2×2 minor of the tableau is
+  // det A_β' / det A_β, β' being β with row i's basic variable replaced by
+  // col and row j's by s.
+  bool certified_tie(int i, int j, int col, int s) {
+    ExactWorkspace& ws = exact_workspace();
+    ws.tie_basis = T_.basis();
+    ws.tie_basis[i] = col;
+    ws.tie_basis[j] = s;
+    const bool proved = ws.ties.singular(ws.tie_basis, T_.approx(), problem());
+    ++(proved ? ties_proved_ : ties_unproved_);
+    return proved;
   }
 
   // The lexicographic minimum ratio test of Tableau::ratio_test in
@@ -545,6 +525,7 @@ class FilteredRun {
   bool final_ready_ = false;  // final_ holds the final basis's values
   BasicValues& final_ = exact_workspace().final_values;
   long certified_ = 0, exact_ = 0;
+  long ties_proved_ = 0, ties_unproved_ = 0;
 };
 
 }  // namespace

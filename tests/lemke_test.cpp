@@ -196,12 +196,16 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) 
     expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
     ++problems;
   }
-  // Both kinds of decision happened: most are certified by the intervals;
-  // the ties of the friction-cone rows (b = 0, equal after the first pivot)
-  // are decided on exact tableau columns.
+  // Most decisions are certified by the intervals. The exact ratio ties of
+  // the friction-cone rows, which no interval can certify, are proved by
+  // integer null vectors (kLemkeTie); the few left over are decided on exact
+  // tableau columns. Here: 129 ties proved and 2 not, so 2 exact fallbacks
+  // where there were 131.
   const FilterCounts c = filter_stats().at(FilterSite::kLemke);
+  const FilterCounts ties = filter_stats().at(FilterSite::kLemkeTie);
   EXPECT_GT(c.certified, c.fallbacks);
-  EXPECT_GT(c.fallbacks, 0);
+  EXPECT_GT(ties.certified, 10 * ties.fallbacks);
+  EXPECT_GE(c.fallbacks, ties.fallbacks);  // an unproved tie is decided exactly
 }
 
 GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {
