@@ -225,9 +225,11 @@ void report_filtered_agreement() {
     differ += f.status != e.status || f.pivots != e.pivots || f.w != e.w || f.z != e.z;
   }
   const auto c = fixel::filter_stats().at(fixel::FilterSite::kLemke);
+  const auto ties = fixel::filter_stats().at(fixel::FilterSite::kLemkeTie);
   std::cout << "filtered Lemke: " << differ << " of " << problems().size()
-            << " problems differ from forced exact Lemke; interval path certified " << c.certified
-            << ", exact fallback " << c.fallbacks << "\n";
+            << " problems differ from forced exact Lemke; decisions certified " << c.certified << ", exact fallback "
+            << c.fallbacks << "; exact ties proved by a null vector " << ties.certified << ", not proved "
+            << ties.fallbacks << "\n";
 }
 
 // Per-problem times: each problem solved `reps` times by each solver in

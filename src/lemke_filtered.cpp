@@ -261,7 +261,7 @@ class IntervalTableau {
     slot_[rhs()] = n_ + 1;
     for (int i = 0; i < n_; ++i) {
       for (int j = 0; j < n_; ++j)
-        if (B(i, j) != 0) at_slot(i, j) = -enclosure(B(i, j));
+        if (mpq_sgn(B(i, j).backend().data()) != 0) at_slot(i, j) = -enclosure(B(i, j));  // no Rational(0) temporary
       at_slot(i, n_) = FI(-1);
       at_slot(i, n_ + 1) = enclosure(b[i]);
       basis_[i] = i;
@@ -397,8 +397,8 @@ class FilteredRun {
       // Never report a wrong "solved" (the exact path uses is_solution).
       if (!solves_lcp_at_basis(exact_workspace().problem, T_.basis(), final_))
         throw InternalError("solve_lcp_lemke: the filtered run's final values fail the exact check of the equations");
-      result.w = VectorQ::Zero(n_);
-      result.z = VectorQ::Zero(n_);
+      result.w.resize(n_);
+      result.z.resize(n_);
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
         auto* q = (v < n_ ? result.w[v] : result.z[v - n_]).backend().data();
