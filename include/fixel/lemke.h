@@ -31,9 +31,10 @@ struct LemkeResult {
 /// degenerate problems. The tableau holds integers and one common
 /// denominator; every ratio comparison is the exact sign of a·d − b·c.
 /// Unless force_exact(), the same pivot path is first followed on an
-/// interval tableau, with each decision the intervals cannot certify taken
-/// on exact columns of the tableau (docs/theory.md §6); status, pivots, w
-/// and z are the same either way.
+/// interval tableau: an exact ratio tie the intervals cannot certify is
+/// proved by an integer null vector, and any other decision they leave open
+/// is taken on exact columns of the tableau (docs/theory.md §6); status,
+/// pivots, w and z are the same either way.
 /// A kSolved result has been verified exactly: by is_solution on the exact
 /// path, and on the filtered path by a residual check of every equation in
 /// integers (docs/theory.md §6). max_pivots <= 0 means
