@@ -28,8 +28,8 @@ struct BasicValues {
 // Whether `values` solve the LCP at the complementary basis β: z0 is not
 // basic, no variable is basic with its complement, every value is ≥ 0 and
 // every equation of the scaled problem holds exactly. With den·x the
-// integers of BasicValues, equation i reads
-//   [w_i basic] num + Σ_{z_j basic} A(i, z_j)·num = den·b_i.
+// integers of BasicValues and b's column scaled by δ, equation i reads
+//   δ·([w_i basic] num + Σ_{z_j basic} A(i, z_j)·num) = den·b_i.
 // This checks the elimination that produced the values, row by row, with
 // one product per basic z and no gcd.
 bool solves_lcp_at_basis(const ScaledProblem& P, const std::vector<int>& basis, const BasicValues& values) {
@@ -54,6 +54,7 @@ bool solves_lcp_at_basis(const ScaledProblem& P, const std::vector<int>& basis, 
       const int t = row_of[n + j];
       if (t >= 0) mpz_addmul(mp(sum), mp(P.entry(i, n + j)), mp(values.num[t]));
     }
+    mpz_mul(mp(sum), mp(sum), mp(P.rhs_factor()));
     mpz_mul(mp(rhs), mp(values.den), mp(P.entry(i, 2 * n + 1)));
     if (mpz_cmp(mp(sum), mp(rhs)) != 0) return false;
   }
@@ -113,9 +114,8 @@ class ExactTableau {
     for (int c = 0; c < k; ++c) {
       if (swaps_[c] != c) mpz_swap(mp(y_[c]), mp(y_[swaps_[c]]));
       for (int r = c + 1; r < k; ++r) {
-        mpz_mul(mp(t_), mp(u(c, c)), mp(y_[r]));
-        mpz_submul(mp(t_), mp(multiplier(r, c)), mp(y_[c]));
-        mpz_divexact(mp(y_[r]), mp(t_), mp(previous_[c]));
+        const bool eliminates = mpz_sgn(mp(multiplier(r, c))) != 0;
+        bareiss_step(y_[r], u(c, c), eliminates ? &multiplier(r, c) : nullptr, y_[c], previous_[c]);
       }
     }
     for (int r = k; r-- > 0;) {
@@ -153,19 +153,20 @@ class ExactTableau {
   bool has_column(int col) const { return have_[col]; }
 
   // The basic values at this basis: row t holds num_t/den, or
-  // num_t/(den·L_i) for the row of w_i (rhs's column computed or not).
+  // num_t/(den·L_i) for the row of w_i (rhs's column computed or not);
+  // den = D·δ, b's column being scaled by δ.
   void basic_values(int rhs, BasicValues& out) {
     const Integer* N = column(rhs);
     out.num.resize(n_);
     for (int t = 0; t < n_; ++t) mpz_set(mp(out.num[t]), mp(N[t]));
-    mpz_set(mp(out.den), mp(D_));
+    mpz_mul(mp(out.den), mp(D_), mp(P_->rhs_factor()));
     out.normalize_sign();
   }
 
   // The basic values at the basis that pivoting on (r, col) reaches, in the
   // form of basic_values, from this basis's columns `rhs` and `col` (both
   // computed already): with S = column(col), row r becomes N_r/S_r and row
-  // t ≠ r (N_t·S_r − N_r·S_t)/(σ_t·S_r), so den = D·S_r. False if S_r = 0.
+  // t ≠ r (N_t·S_r − N_r·S_t)/(σ_t·S_r), so den = D·S_r·δ. False if S_r = 0.
   // This spares factoring the next basis for the final values.
   bool basic_values_after_pivot(int r, int col, int rhs, BasicValues& out) {
     const Integer* N = column(rhs);
@@ -177,10 +178,11 @@ class ExactTableau {
       mpz_mul(mp(out.num[t]), mp(N[t]), mp(S[r]));
       mpz_submul(mp(out.num[t]), mp(N[r]), mp(S[t]));
     }
-    // Row r: N_r/S_r = num_r/den with den = D·S_r (times L_i when col is w_i).
+    // Row r: N_r/S_r = num_r/den with den = D·S_r·δ (times L_i when col is w_i).
     mpz_mul(mp(out.num[r]), mp(N[r]), mp(D_));
     if (col < n_) mpz_mul(mp(out.num[r]), mp(out.num[r]), mp(P_->scale(col)));
     mpz_mul(mp(out.den), mp(D_), mp(S[r]));
+    mpz_mul(mp(out.den), mp(out.den), mp(P_->rhs_factor()));
     out.normalize_sign();
     return true;
   }
@@ -191,6 +193,25 @@ class ExactTableau {
   }
   Integer& u(int a, int c) { return U_[static_cast<std::size_t>(a) * n_ + c]; }
   Integer& multiplier(int a, int c) { return multipliers_[static_cast<std::size_t>(a) * n_ + c]; }
+
+  // x ← (p·x − m·y)/D, exact (Bareiss), with m = nullptr meaning m = 0;
+  // the sparse seating blocks make many of these products zero, so they
+  // are skipped, and D = 1 (the first step) divides nothing.
+  void bareiss_step(Integer& x, const Integer& p, const Integer* m, const Integer& y, const Integer& D) {
+    const bool x_zero = mpz_sgn(mp(x)) == 0, my_zero = m == nullptr || mpz_sgn(mp(y)) == 0;
+    if (x_zero && my_zero) return;  // stays 0
+    if (x_zero) {
+      mpz_mul(mp(t_), mp(*m), mp(y));
+      mpz_neg(mp(t_), mp(t_));
+    } else {
+      mpz_mul(mp(t_), mp(p), mp(x));
+      if (!my_zero) mpz_submul(mp(t_), mp(*m), mp(y));
+    }
+    if (mpz_cmp_ui(mp(D), 1) == 0)
+      mpz_swap(mp(x), mp(t_));
+    else
+      mpz_divexact(mp(x), mp(t_), mp(D));
+  }
 
   void eliminate() {
     const int k = static_cast<int>(K_.size());
@@ -206,11 +227,8 @@ class ExactTableau {
       mpz_set(mp(previous_[c]), mp(D_));
       for (int r = c + 1; r < k; ++r) {
         mpz_set(mp(multiplier(r, c)), mp(u(r, c)));
-        for (int j = c + 1; j < k; ++j) {
-          mpz_mul(mp(t_), mp(u(c, c)), mp(u(r, j)));
-          mpz_submul(mp(t_), mp(u(r, c)), mp(u(c, j)));
-          mpz_divexact(mp(u(r, j)), mp(t_), mp(D_));
-        }
+        const bool eliminates = mpz_sgn(mp(u(r, c))) != 0;
+        for (int j = c + 1; j < k; ++j) bareiss_step(u(r, j), u(c, c), eliminates ? &u(r, c) : nullptr, u(c, j), D_);
         mpz_set_ui(mp(u(r, c)), 0);
       }
       mpz_set(mp(D_), mp(u(c, c)));

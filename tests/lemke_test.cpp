@@ -339,15 +339,18 @@ GTEST_TEST(FilteredLemke, FinalCheckAcceptsTheBasisSolutionAndNothingElse) {
   const auto check = [&](const std::vector<int>& basis, std::vector<Integer> num, Integer den) {
     return internal::solves_lcp_at_basis(B, b, basis, num, den);
   };
-  EXPECT_TRUE(check(z1_w2, {2, 7}, 1));
-  EXPECT_TRUE(check(z1_w2, {4, 14}, 2));
-  EXPECT_FALSE(check(z1_w2, {2, 8}, 1));    // w_2 = 8/3: row 2 fails
-  EXPECT_FALSE(check(z1_w2, {3, 7}, 1));    // z_1 = 3: both rows fail
-  EXPECT_FALSE(check({2, 0}, {2, 0}, 1));   // z_1 and its complement w_1 both basic
-  EXPECT_FALSE(check({2, 4}, {2, 0}, 1));   // z0 still basic
-  EXPECT_FALSE(check({0, 1}, {-2, 1}, 1));  // w = b solves the rows, but w_1 = −1 < 0
-  EXPECT_FALSE(check(z1_w2, {2, 7}, 0));
-  EXPECT_FALSE(internal::solves_lcp_at_basis(MatrixQ(2, 3), b, z1_w2, {2, 7}, 1));  // B not 2×2: no read past it
+  // By hand: z_1 = 2, w_2 = 1·2 + 1/3 = 7/3. B's row 2 has no denominator,
+  // so L_2 = 1 and w_2 = num/(den·1): z_1 = 6/3, w_2 = 7/3.
+  EXPECT_TRUE(check(z1_w2, {6, 7}, 3));
+  EXPECT_TRUE(check(z1_w2, {12, 14}, 6));
+  EXPECT_FALSE(check(z1_w2, {2, 7}, 1));    // w_2 = 7 (L_2 is not 3 = den b_2): row 2 fails
+  EXPECT_FALSE(check(z1_w2, {6, 8}, 3));    // w_2 = 8/3: row 2 fails
+  EXPECT_FALSE(check(z1_w2, {9, 7}, 3));    // z_1 = 3: both rows fail
+  EXPECT_FALSE(check({2, 0}, {6, 0}, 3));   // z_1 and its complement w_1 both basic
+  EXPECT_FALSE(check({2, 4}, {6, 0}, 3));   // z0 still basic
+  EXPECT_FALSE(check({0, 1}, {-6, 1}, 3));  // w = b solves the rows (L_1 = 2), but w_1 = −6/(3·2) < 0
+  EXPECT_FALSE(check(z1_w2, {6, 7}, 0));
+  EXPECT_FALSE(internal::solves_lcp_at_basis(MatrixQ(2, 3), b, z1_w2, {6, 7}, 3));  // B not 2×2: no read past it
   // The filtered run ends at that basis and returns those values.
   ForceExactScope filtered(false);
   const auto r = solve_lcp_lemke(B, b);

@@ -18,7 +18,7 @@ bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeRes
 
 // The filtered run's final check, exposed for tests: whether the basic
 // values x_t = num_t/den (num_t/(den·L_i) when basis[t] is w_i, with L_i the
-// lcm of the denominators of B's row i and b_i) solve LCP(B, b) at the
+// lcm of the denominators of B's row i) solve LCP(B, b) at the
 // complementary basis `basis` (0..n−1 w, n..2n−1 z, 2n z0), exactly.
 bool solves_lcp_at_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis,
                          const std::vector<Integer>& num, const Integer& den);

@@ -4,6 +4,7 @@
 #include <gmp.h>
 
 #include <cstddef>
+#include <numeric>
 #include <vector>
 
 #include "fixel/rational.h"
@@ -17,41 +18,86 @@ inline mpz_ptr mp(Integer& x) { return x.backend().data(); }
 inline mpz_srcptr mp(const Integer& x) { return x.backend().data(); }
 
 // [A | b] = [I, −B, −e | b] with equation i scaled by L_i > 0, the lcm of
-// the denominators of B's row i and b_i: every entry an integer. Scaling an
-// equation changes no solution of the systems the runs solve.
+// the denominators of B's row i, and the b column also by δ > 0, the lcm of
+// the denominators of the L_i·b_i: every entry an integer. Scaling an
+// equation changes no solution of the systems the runs solve, and scaling
+// the b column by δ scales every basic value by δ. b's denominators are
+// kept out of the L_i on purpose: on the seating LCPs they are 25–30 bits
+// larger than B's on the friction rows, and the same few bits for every
+// row, so one δ is much smaller than their share of every L_i.
 class ScaledProblem {
  public:
   void assign(const MatrixQ& B, const VectorQ& b) {
     n_ = static_cast<int>(b.size());
-    width_ = 2 * n_ + 2;
+    width_ = n_ + 2;  // the w columns (L_i e_i) are not stored
     A_.resize(static_cast<std::size_t>(n_) * width_);
     scale_.resize(n_);
     Integer factor;
+    mpz_set_ui(mp(delta_), 1);
     for (int i = 0; i < n_; ++i) {
       Integer& L = scale_[i];
-      mpz_set(mp(L), mpq_denref(b[i].backend().data()));
-      for (int j = 0; j < n_; ++j) {
-        mpz_srcptr q = mpq_denref(B(i, j).backend().data());
-        if (!mpz_divisible_p(mp(L), q)) mpz_lcm(mp(L), mp(L), q);  // denominators repeat
-      }
-      for (int var = 0; var < n_; ++var) mpz_set_ui(mp(at(i, var)), 0);
-      mpz_set(mp(at(i, i)), mp(L));
-      for (int j = 0; j < n_; ++j) {
-        scaled(at(i, n_ + j), B(i, j), L, factor);
-        mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
+      if (!scale_row_in_words(B, i)) {
+        mpz_set_ui(mp(L), 1);
+        for (int j = 0; j < n_; ++j) {
+          mpz_srcptr q = mpq_denref(B(i, j).backend().data());
+          if (!mpz_divisible_p(mp(L), q)) mpz_lcm(mp(L), mp(L), q);  // denominators repeat
+        }
+        for (int j = 0; j < n_; ++j) {
+          scaled(at(i, n_ + j), B(i, j), L, factor);
+          mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
+        }
       }
       mpz_neg(mp(at(i, 2 * n_)), mp(L));
-      scaled(at(i, 2 * n_ + 1), b[i], L, factor);
+      // δ: the denominator of L_i·b_i is den(b_i)/gcd(den(b_i), L_i).
+      mpz_srcptr d = mpq_denref(b[i].backend().data());
+      mpz_gcd(mp(factor), d, mp(L));
+      mpz_divexact(mp(factor), d, mp(factor));
+      if (!mpz_divisible_p(mp(delta_), mp(factor))) mpz_lcm(mp(delta_), mp(delta_), mp(factor));
+    }
+    for (int i = 0; i < n_; ++i) {
+      // L_i·δ·b_i = num(b_i)·(L_i·δ/den(b_i)), the division exact.
+      const auto* q = b[i].backend().data();
+      mpz_mul(mp(factor), mp(scale_[i]), mp(delta_));
+      mpz_divexact(mp(factor), mp(factor), mpq_denref(q));
+      mpz_mul(mp(at(i, 2 * n_ + 1)), mpq_numref(q), mp(factor));
     }
   }
 
   int n() const { return n_; }
+  // L_i.
   const Integer& scale(int i) const { return scale_[i]; }
-  // L_i · (i, var) of [A | b]; var 0..n−1 w, n..2n−1 z, 2n z0, 2n+1 b.
-  const Integer& entry(int i, int var) const { return A_[static_cast<std::size_t>(i) * width_ + var]; }
+  // δ, the b column's own factor.
+  const Integer& rhs_factor() const { return delta_; }
+  // L_i · (i, var) of [A | b], times δ for var = b; var 0..n−1 w, n..2n−1 z,
+  // 2n z0, 2n+1 b.
+  const Integer& entry(int i, int var) const {
+    if (var < n_) return var == i ? scale_[i] : zero_;
+    return A_[static_cast<std::size_t>(i) * width_ + (var - n_)];
+  }
 
  private:
-  Integer& at(int i, int var) { return A_[static_cast<std::size_t>(i) * width_ + var]; }
+  Integer& at(int i, int var) { return A_[static_cast<std::size_t>(i) * width_ + (var - n_)]; }  // var ≥ n
+  // The common case, B's row i with denominators whose lcm fits in 64 bits:
+  // L_i and each factor L_i/den in machine words, one mpz_mul_ui per entry.
+  // False (nothing written) when a denominator or the lcm does not fit.
+  bool scale_row_in_words(const MatrixQ& B, int i) {
+    unsigned long L = 1;
+    for (int j = 0; j < n_; ++j) {
+      mpz_srcptr q = mpq_denref(B(i, j).backend().data());
+      if (!mpz_fits_ulong_p(q)) return false;
+      const unsigned long d = mpz_get_ui(q);
+      if (L % d == 0) continue;  // denominators repeat
+      if (__builtin_mul_overflow(L / std::gcd(L, d), d, &L)) return false;
+    }
+    mpz_set_ui(mp(scale_[i]), L);
+    for (int j = 0; j < n_; ++j) {
+      const auto* q = B(i, j).backend().data();
+      mpz_mul_ui(mp(at(i, n_ + j)), mpq_numref(q), L / mpz_get_ui(mpq_denref(q)));
+      mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
+    }
+    return true;
+  }
+
   static void scaled(Integer& out, const Rational& x, const Integer& L, Integer& factor) {
     const auto* q = x.backend().data();
     mpz_divexact(mp(factor), mp(L), mpq_denref(q));
@@ -61,6 +107,8 @@ class ScaledProblem {
   int n_ = 0, width_ = 0;
   std::vector<Integer> A_;
   std::vector<Integer> scale_;
+  Integer delta_;
+  Integer zero_;
 };
 
 }  // namespace fixel::internal
