@@ -274,6 +274,7 @@ class IntervalTableau {
     T_.assign(static_cast<std::size_t>(n_) * width_, FI(0));
     basis_.resize(n_);
     slot_.assign(2 * n_ + 2, -1);
+    stamp_.assign(width_, 0);
     // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
     for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
     slot_[rhs()] = n_ + 1;
@@ -298,34 +299,34 @@ class IntervalTableau {
   int complement(int var) const { return var < n_ ? var + n_ : var - n_; }
 
   // Entry (i, var): a unit-vector entry for a basic variable.
-  FI at(int i, int var) const {
+  FI at(int i, int var) {
     const int k = slot_[var];
-    if (k >= 0) return T_[static_cast<std::size_t>(i) * width_ + k];
-    return FI(basis_[i] == var ? 1 : 0);
+    if (k < 0) return FI(basis_[i] == var ? 1 : 0);
+    bring_up_to_date(k);
+    return at_slot(i, k);
   }
 
   // Pivot on (r, s), s nonbasic; needs a pivot interval that excludes zero.
   // The leaving variable's column, e_r before, becomes (−T(i, s)/p)_i with
-  // 1/p in row r, and is stored in s's slot.
+  // 1/p in row r, and is stored in s's slot. The other columns are updated
+  // when they are next read (bring_up_to_date), most of them never: the
+  // path reads b's column and the entering one, and others only on a tie.
   void pivot(int r, int s) {
     const int ks = slot_[s];
+    bring_up_to_date(ks);
     const int leaving = basis_[r];
-    const FI p = at_slot(r, ks);
-    for (int k = 0; k < width_; ++k)
-      if (k != ks) at_slot(r, k) /= p;
-    at_slot(r, ks) = FI(1) / p;
+    eta_.resize(static_cast<std::size_t>(pivots_ + 1) * n_);
+    for (int i = 0; i < n_; ++i) eta_[static_cast<std::size_t>(pivots_) * n_ + i] = at_slot(i, ks);
+    eta_row_.push_back(r);
+    const FI inverse = FI(1) / at_slot(r, ks);
+    at_slot(r, ks) = inverse;
     for (int i = 0; i < n_; ++i) {
       if (i == r) continue;
       const FI f = at_slot(i, ks);
       if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
-      for (int k = 0; k < width_; ++k) {
-        if (k == ks) continue;
-        const FI& x = at_slot(r, k);
-        if (x.inf() == 0 && x.sup() == 0) continue;
-        at_slot(i, k) -= f * x;
-      }
-      at_slot(i, ks) = -f * at_slot(r, ks);
+      at_slot(i, ks) = -f * inverse;
     }
+    stamp_[ks] = ++pivots_;
     basis_[r] = s;
     slot_[leaving] = ks;
     slot_[s] = -1;
@@ -333,6 +334,25 @@ class IntervalTableau {
 
  private:
   FI& at_slot(int i, int k) { return T_[static_cast<std::size_t>(i) * width_ + k]; }
+
+  // Applies the pivots made since slot k was last read, in order, with the
+  // operations of a Gauss–Jordan step on that column (row r divided by p,
+  // then row i less T(i, s)·(new row r), exact zeros skipped), so its
+  // enclosures are bit for bit those of the eager update.
+  void bring_up_to_date(int k) {
+    for (int t = stamp_[k]; t < pivots_; ++t) {
+      const FI* f = &eta_[static_cast<std::size_t>(t) * n_];
+      const int r = eta_row_[t];
+      const FI x = at_slot(r, k) / f[r];
+      at_slot(r, k) = x;
+      if (x.inf() == 0 && x.sup() == 0) continue;
+      for (int i = 0; i < n_; ++i) {
+        if (i == r || (f[i].inf() == 0 && f[i].sup() == 0)) continue;
+        at_slot(i, k) -= f[i] * x;
+      }
+    }
+    stamp_[k] = pivots_;
+  }
 
   // q in an interval: when numerator and denominator are exact doubles, one
   // interval division (outward rounded), else the shared conversion.
@@ -353,6 +373,10 @@ class IntervalTableau {
   std::vector<double> initial_;  // the first tableau's slots, approximately
   std::vector<int> basis_;       // basic variable of each row
   std::vector<int> slot_;        // storage slot of each nonbasic variable (and b), else −1
+  std::vector<int> stamp_;       // per slot: how many pivots its column has seen
+  std::vector<FI> eta_;          // per pivot: the entering column before it (n entries)
+  std::vector<int> eta_row_;     // per pivot: its row
+  int pivots_ = 0;
 };
 
 // One filtered run: each decision of the exact run (src/lemke.cpp) is taken
@@ -527,7 +551,7 @@ class FilteredRun {
   // Whether row i, were T(i, s) positive, would have a ratio strictly above
   // the best row's: T(i, rhs)·T(best, s) − T(best, rhs)·t > 0 for every t in
   // (0, sup T(i, s)]. Then row i cannot win, nor tie, whatever its sign.
-  bool certainly_loses(int i, int best, int s) const {
+  bool certainly_loses(int i, int best, int s) {
     const double hi = T_.at(i, s).sup();
     if (!(hi > 0)) return false;
     const FI d = T_.at(i, T_.rhs()) * T_.at(best, s) - T_.at(best, T_.rhs()) * FI(0, hi);
