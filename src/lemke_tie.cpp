@@ -46,6 +46,16 @@ bool TieCertifier::singular(const std::vector<int>& beta, const ApproxProblem& a
   const int k = static_cast<int>(vars_.size());
   if (k == 0 || static_cast<int>(rows_.size()) != k) return false;
 
+  // Half of the seating LCPs' ties: an equation in R that is zero on every
+  // column of β (y a unit vector), found without the elimination below.
+  for (const int r : rows_) {
+    bool zero = true;
+    for (int c = 0; c < k && zero; ++c) zero = approx.at(r, vars_[c]) == 0.0;
+    if (!zero) continue;
+    for (int c = 0; c < k && zero; ++c) zero = mpz_sgn(mp(P.entry(r, vars_[c]))) == 0;
+    if (zero) return true;
+  }
+
   // The guess: Gaussian elimination with full pivoting on Mᵀ in doubles
   // (row c of Mᵀ is column vars[c]), stopping at the first pivot below
   // 1e-9 of the largest entry; y solves Mᵀ y = 0 with the first free

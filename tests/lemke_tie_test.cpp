@@ -98,6 +98,24 @@ GTEST_TEST(TieCertifier, ProvesAColumnSetWithTheRightHandSideAndTheCoveringColum
   EXPECT_FALSE(certifier.singular({w0, z0, cover}, P.approx(), P.scaled));
 }
 
+GTEST_TEST(TieCertifier, ProvesAnEquationThatIsZeroOnTheColumnsAndChecksItExactly) {
+  // B's row 1 is zero on z0, z1, so β = (w0, z0, z1) leaves equation 1
+  // zero on all of β's columns: y = e_1.
+  MatrixQ B = proportional_rows();
+  B(1, 0) = 0;
+  B(1, 1) = 0;
+  const VectorQ b = test::vec({-1, 2, 3});
+  TieCertifier certifier;
+  const Problem P(B, b);
+  EXPECT_TRUE(certifier.singular({w0, z0, z1}, P.approx(), P.scaled));
+  // Row 1 with 2^-1074 on z0, which the doubles are told is 0: the zero
+  // equation is not exact, and rows 1, 2 on (z0, z1) have det −2^-1074·6/5.
+  B(1, 0) = Rational(Integer(1), Integer(1) << 1074);  // its lcm needs more than 64 bits
+  Problem Q(B, b);
+  Q.slots[5] = 0.0;  // row 1 (n + 2 = 5 slots a row), slot z0
+  EXPECT_FALSE(certifier.singular({w0, z0, z1}, Q.approx(), Q.scaled));
+}
+
 GTEST_TEST(TieCertifier, NeverProvesANonsingularMatrixThatLooksSingularInDoubles) {
   // B = [[1, 1], [1, 1 + 2^-60]] has det 2^-60; in doubles both rows are (1, 1).
   MatrixQ B(2, 2);
