@@ -330,6 +330,7 @@ class IntervalTableau {
     basis_[r] = s;
     slot_[leaving] = ks;
     slot_[s] = -1;
+    if (pivots_ >= 2 * n_) flush();  // bounds the pivots kept, and the work, by the eager update's
   }
 
  private:
@@ -352,6 +353,15 @@ class IntervalTableau {
       }
     }
     stamp_[k] = pivots_;
+  }
+
+  // Brings every column up to date and forgets the pivots.
+  void flush() {
+    for (int k = 0; k < width_; ++k) bring_up_to_date(k);
+    eta_.clear();
+    eta_row_.clear();
+    pivots_ = 0;
+    stamp_.assign(width_, 0);
   }
 
   // q in an interval: when numerator and denominator are exact doubles, one
