@@ -309,8 +309,9 @@ class IntervalTableau {
   // Pivot on (r, s), s nonbasic; needs a pivot interval that excludes zero.
   // The leaving variable's column, e_r before, becomes (−T(i, s)/p)_i with
   // 1/p in row r, and is stored in s's slot. The other columns are updated
-  // when they are next read (bring_up_to_date), most of them never: the
-  // path reads b's column and the entering one, and others only on a tie.
+  // when they are next read (bring_up_to_date) or at the flush after 2n
+  // pivots: the path reads b's column and the entering one, and others only
+  // for a lexicographic tie-break.
   void pivot(int r, int s) {
     const int ks = slot_[s];
     bring_up_to_date(ks);

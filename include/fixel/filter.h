@@ -17,9 +17,9 @@ enum class FilterSite {
                  ///< tableau; a fallback is one decided on exact tableau columns, or one whole
                  ///< run on the integer tableau when a pivot's interval held zero). A ratio tie
                  ///< proved by kLemkeTie counts as certified: no exact fallback ran.
-  kLemkeTie,     ///< Lemke's exact ratio ties that the intervals cannot certify: proved by a
-                 ///< left null vector checked in integers (certified), or not (fallback: the
-                 ///< tie is then decided on exact tableau columns, one kLemke fallback).
+  kLemkeTie,     ///< Lemke's ratio comparisons the intervals leave open: proved to be exact
+                 ///< ties by a left null vector checked in integers (certified), or not
+                 ///< (fallback: then decided on exact tableau columns, one kLemke fallback).
   kRayTest,      ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
   kOutTest,      ///< Does a segment's wrench cone miss S, or one piece of G (before the exact LP).
   kOrientation,  ///< Signs of planar cross products (direction extremes).
