@@ -287,6 +287,32 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenTiesNeedALargerExactBlock
   EXPECT_GT(filter_stats().at(FilterSite::kLemke).fallbacks, 0);
 }
 
+// Denominators whose lcm per row needs more than 64 bits (products of the
+// primes 2^61 − 1 and 2^31 − 1), in B and in b: the exact side scales those
+// rows in GMP integers rather than machine words, and b's column by its own
+// large factor δ. Answers must still be the forced exact run's.
+GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWithDenominatorsBeyondSixtyFourBits) {
+  ForceExactScope filtered(false);
+  const Integer p61 = (Integer(1) << 61) - 1, p31 = (Integer(1) << 31) - 1;
+  const Integer dens[] = {p61, p31, p61 * p31, Integer(3) * p61};
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> small(-3, 3), pick(0, 3);
+  int solved = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 2 + trial % 4;
+    MatrixQ A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = Rational(Integer(small(rng)), dens[pick(rng)]);
+    const MatrixQ B = A.transpose() * A + MatrixQ::Identity(n, n) * Rational(Integer(1), dens[pick(rng)]);
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) b[i] = Rational(Integer(small(rng) - 1), dens[pick(rng)]);
+    const auto r = solve_lcp_lemke(B, b);
+    expect_same(r, solve_forced_exact(B, b), trial);
+    solved += r.status == LemkeStatus::kSolved;
+  }
+  EXPECT_EQ(solved, 60);  // B positive definite: every LCP has a solution, which Lemke finds
+}
+
 GTEST_TEST(FilteredLemke, ForcedExactRunsCountNoFilterDecision) {
   reset_filter_stats();
   solve_forced_exact(mat({{2, 1}, {1, 2}}), vec({-1, -1}));
