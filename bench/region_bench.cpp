@@ -314,8 +314,8 @@ void report_filter_counts() {
       const auto r = fixel::compute_region(l.scene, l.S, opt);
       const auto st = fixel::filter_stats();
       std::cout << "  " << names[k] << " at 1/" << fixel::to_string(1 / res) << ":";
-      for (auto site : {fixel::FilterSite::kRegionTest, fixel::FilterSite::kRayTest, fixel::FilterSite::kOutTest,
-                        fixel::FilterSite::kOrientation, fixel::FilterSite::kCone})
+      for (auto site : {fixel::FilterSite::kRegionTest, fixel::FilterSite::kInMagnitudes, fixel::FilterSite::kRayTest,
+                        fixel::FilterSite::kOutTest, fixel::FilterSite::kOrientation, fixel::FilterSite::kCone})
         std::cout << " " << fixel::to_string(site) << " " << st.at(site).certified << "/" << st.at(site).fallbacks;
       std::cout << " (cone tests " << r.stats.cone_tests << ", OUT tests past the ray shortcut " << r.stats.lp_tests
                 << ")\n";

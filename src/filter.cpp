@@ -42,6 +42,8 @@ std::string to_string(FilterSite site) {
       return "jam test";
     case FilterSite::kRegionTest:
       return "region test";
+    case FilterSite::kInMagnitudes:
+      return "in magnitudes";
     case FilterSite::kCount:
       break;
   }

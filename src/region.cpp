@@ -112,7 +112,14 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
         out.status = RegionStatus::kOut;
         return out;
       }
-      if (q == internal::Quick::kIn && bounds) {
+      if (q == internal::Quick::kIn && bounds && bounds->empty) {
+        // No common magnitude, as the exact path would find: nothing to wait for.
+        internal::record_filter(FilterSite::kInMagnitudes, true);
+        out.status = RegionStatus::kIn;
+        out.half_line = bounds->all_half;
+        return out;
+      }
+      if (q == internal::Quick::kIn && bounds) {  // settle() counts it
         out.status = RegionStatus::kIn;
         out.half_line = bounds->all_half;
         out.magnitudes = internal::neutral_magnitudes();
@@ -124,6 +131,7 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
                                  }});
         return out;
       }
+      if (q == internal::Quick::kIn && ctx.deferred) internal::record_filter(FilterSite::kInMagnitudes, false);
     }
   return classify_exact(ctx, seg.exact());
 }
@@ -190,8 +198,16 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
           if (mags) *mags = Magnitudes{};
           return RegionStatus::kOut;
         }
+        // IN magnitudes: certainly empty (certified), none bounded (the exact
+        // path below), or deferred (settle() counts them).
+        if (q == internal::Quick::kIn && ctx.deferred && mags && (!bounds || bounds->empty))
+          internal::record_filter(FilterSite::kInMagnitudes, bounds.has_value());
         if (q == internal::Quick::kIn && bounds && mags) {
           ++ctx.stats.point_tests;
+          if (bounds->empty) {
+            *mags = Magnitudes{};  // no common magnitude: nothing to wait for
+            return RegionStatus::kIn;
+          }
           *mags = internal::neutral_magnitudes();
           ctx.deferred->push_back(
               {kUnplaced, *bounds, [&ctx, tangents, point] {

@@ -102,6 +102,7 @@ FI fmin(const FI& a, const FI& b) { return FI(std::min(a.inf(), b.inf()), std::m
 // common_magnitudes (region_targets.cpp) enclosed: lo = max_j T_j.lo ·
 // sqrt_upper(|f_j|²), hi = min_j T_j.hi · sqrt_lower(|f_j|²) · c, where
 // sqrt_upper(x) ∈ [√x, √x + 2^-20] and sqrt_lower(x) ∈ [√x − 2^-20, √x].
+// False when a sign is open or the ends may touch.
 bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, const IntervalTarget& target,
                    MagnitudeBounds& m) {
   Protect guard;
@@ -123,7 +124,10 @@ bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, con
       m.has_hi = true;
     }
   }
-  return !m.has_hi || m.hi.inf() > m.lo.sup();  // certainly not crossing
+  // Ends that certainly cross make the exact answer empty (ends_cross),
+  // whatever the closedness; ends that may touch leave it to the exact path.
+  if (m.has_hi && m.hi.sup() < m.lo.inf()) m.empty = true;
+  return m.empty || !m.has_hi || m.hi.inf() > m.lo.sup();
 }
 
 // The ray tests of every generator; kIn when all hit, else the OUT tests of

@@ -112,8 +112,10 @@ Magnitudes neutral_magnitudes() { return Magnitudes::make(Rational(0), true, std
 void settle(std::vector<RegionInterval>& raw, const std::vector<Deferred>& deferred, bool merging) {
   if (!merging) {
     for (const auto& d : deferred) raw[d.index].magnitudes = d.exact();
+    record_filter(FilterSite::kInMagnitudes, 0, static_cast<long>(deferred.size()));
     return;
   }
+  long computed = 0;
   std::vector<const Deferred*> of(raw.size(), nullptr);
   for (const auto& d : deferred) of[d.index] = &d;
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -137,9 +139,12 @@ void settle(std::vector<RegionInterval>& raw, const std::vector<Deferred>& defer
       if (m.hi) min_hi = std::min(min_hi, to_interval(*m.hi).sup());
     }
     for (std::size_t k = i; k < j; ++k)
-      if (of[k] && (of[k]->bounds.lo.sup() >= max_lo || (of[k]->bounds.has_hi && of[k]->bounds.hi.inf() <= min_hi)))
+      if (of[k] && (of[k]->bounds.lo.sup() >= max_lo || (of[k]->bounds.has_hi && of[k]->bounds.hi.inf() <= min_hi))) {
         raw[k].magnitudes = of[k]->exact();
+        ++computed;
+      }
   }
+  record_filter(FilterSite::kInMagnitudes, static_cast<long>(deferred.size()) - computed, computed);
 }
 
 }  // namespace fixel::internal

@@ -48,8 +48,8 @@ GTEST_TEST(RegionFilter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePr
   // A straight piece gives each edge family one push direction, so its
   // first and last directions are one vector; as two enclosures their cross
   // product is not a point, and no IN answer had bounds (the exact path
-  // then ran for every such segment). Now only a segment whose magnitude
-  // window is certainly empty has none (there the exact path decides).
+  // then ran for every such segment). Now every one has: a segment whose
+  // magnitude window is certainly empty is bounded as empty.
   const Scene scene = test::scene_file("example2_rounded");
   const SeatingSet S = seating_set(scene);
   const auto target = seating_target(S, scene.background_impulse);
@@ -81,7 +81,41 @@ GTEST_TEST(RegionFilter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePr
       }
     }
   EXPECT_GE(in, 8);
-  EXPECT_GE(bounded, in - 1) << bounded << " of " << in << " IN segments bounded";
+  EXPECT_EQ(bounded, in) << bounded << " of " << in << " IN segments bounded";
+}
+
+GTEST_TEST(RegionFilter, InAnswersWithCertainlyNoCommonMagnitudeNeedNoExactMagnitudes) {
+  // On example2_rounded's right edge the IN segments have magnitude windows
+  // whose ends cross: no common magnitude. Their enclosures show it, so the
+  // exact path does not run for them. Counted against the forced-exact run
+  // without merging: each IN answer with empty exact magnitudes is certified
+  // (kInMagnitudes), every other one is computed exactly there.
+  const Scene scene = test::scene_file("example2_rounded");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 1024);
+  opt.merge = false;
+  const Region exact = run(true, [&] { return compute_region(scene, S, opt); });
+  long in = 0, empty = 0;
+  for (const RegionInterval& r : exact.intervals) {
+    if (r.status != RegionStatus::kIn) continue;
+    ++in;
+    if (r.magnitudes.empty) ++empty;
+  }
+  ASSERT_GT(empty, 0);
+  reset_filter_stats();
+  const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+  const FilterCounts c = filter_stats().at(FilterSite::kInMagnitudes);
+  EXPECT_EQ(c.certified, empty);
+  EXPECT_EQ(c.fallbacks, in - empty);
+  EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); }));
+  // Merged, the empty run needs no exact magnitudes at all, and the JSON
+  // is still the exact path's.
+  opt.merge = true;
+  reset_filter_stats();
+  const std::string merged = run(false, [&] { return region_json_of(scene, S, opt); });
+  EXPECT_GE(filter_stats().at(FilterSite::kInMagnitudes).certified, empty);
+  EXPECT_EQ(merged, run(true, [&] { return region_json_of(scene, S, opt); }));
 }
 
 GTEST_TEST(RegionFilter, AnUndecidedRayBesideACertainMissAndACertainHitStillLeavesTheSegmentPartial) {

@@ -13,26 +13,29 @@ namespace fixel {
 
 /// The filtered decisions, one counter pair each.
 enum class FilterSite {
-  kLemke,        ///< Lemke's pivot-path decisions (signs and ratio comparisons on an interval
-                 ///< tableau; a fallback is one decided on exact tableau columns, or one whole
-                 ///< run on the integer tableau when a pivot's interval held zero). A ratio tie
-                 ///< proved by kLemkeTie counts as certified: no exact fallback ran.
-  kLemkeTie,     ///< Lemke's ratio comparisons the intervals leave open: proved to be exact
-                 ///< ties by a left null vector checked in integers (certified), or not
-                 ///< (fallback: then decided on exact tableau columns, one kLemke fallback).
-  kRayTest,      ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
-  kOutTest,      ///< Does a segment's wrench cone miss S, or one piece of G (before the exact LP).
-  kOrientation,  ///< Signs of planar cross products (direction extremes).
-  kCone,         ///< The extreme moments of a segment's tight wrench cone.
-  kMembership,   ///< Side of a half-space a·p ≥ c or > c (S, G and polyhedron membership).
-  kJam,          ///< Signs of J's escape and jam rows at an exact seated pose (Q(√d)).
-  kRegionTest,   ///< A region segment or point test on enclosures of its cone (OUT and partial need
-                 ///< no exact value; IN then computes its exact magnitudes).
+  kLemke,         ///< Lemke's pivot-path decisions (signs and ratio comparisons on an interval
+                  ///< tableau; a fallback is one decided on exact tableau columns, or one whole
+                  ///< run on the integer tableau when a pivot's interval held zero). A ratio tie
+                  ///< proved by kLemkeTie counts as certified: no exact fallback ran.
+  kLemkeTie,      ///< Lemke's ratio comparisons the intervals leave open: proved to be exact
+                  ///< ties by a left null vector checked in integers (certified), or not
+                  ///< (fallback: then decided on exact tableau columns, one kLemke fallback).
+  kRayTest,       ///< Does the ray b0 + τ g (τ > 0) meet a convex target piece.
+  kOutTest,       ///< Does a segment's wrench cone miss S, or one piece of G (before the exact LP).
+  kOrientation,   ///< Signs of planar cross products (direction extremes).
+  kCone,          ///< The extreme moments of a segment's tight wrench cone.
+  kMembership,    ///< Side of a half-space a·p ≥ c or > c (S, G and polyhedron membership).
+  kJam,           ///< Signs of J's escape and jam rows at an exact seated pose (Q(√d)).
+  kRegionTest,    ///< A region segment or point test on enclosures of its cone (OUT and partial need
+                  ///< no exact value; an IN answer's magnitudes are counted by kInMagnitudes).
+  kInMagnitudes,  ///< The magnitudes of a region IN answer the pre-test certified: settled from their
+                  ///< enclosures (certainly empty, or unable to change their merged run's), or
+                  ///< computed on the exact path (fallback).
   kCount,
 };
 
 /// "lemke", "lemke tie", "ray test", "out test", "orientation", "cone", "membership", "jam test",
-/// "region test".
+/// "region test", "in magnitudes".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and

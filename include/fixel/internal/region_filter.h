@@ -64,7 +64,8 @@ class IntervalTarget {
   virtual bool answers_points() const { return true; }
 };
 
-// Enclosure of the magnitudes an IN answer reports (certified non-empty).
+// Enclosure of the magnitudes an IN answer reports: certified non-empty,
+// or (`empty`) certified empty, the upper end certainly below the lower.
 struct MagnitudeBounds {
   FI lo;
   bool lo_closed = true;
@@ -72,6 +73,7 @@ struct MagnitudeBounds {
   FI hi;
   bool hi_closed = true;
   bool all_half = true;  // no generator's T(g) has an upper end
+  bool empty = false;    // no common magnitude: the exact answer is Magnitudes{}
 };
 
 // The pre-test's answer.
