@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   const int max_edges = argc > 1 ? std::atoi(argv[1]) : 100000;
   const bool filtered_only = argc > 2 && std::string(argv[2]) == "--filtered-only";
   std::vector<double> ns, tf, te;
-  std::cout << "edges  filtered s  exact-only s  ratio  cone tests  filter certified/fallbacks"
+  std::cout << "edges  filtered s  exact-only s  ratio  cone tests  filter certified/fallbacks  (where)"
                "  (region at resolution 1/1024)\n";
   for (int edges : {1000, 2000, 4000, 8000, 16000, 32000, 64000, 100000}) {
     if (edges > max_edges) break;
@@ -78,7 +78,13 @@ int main(int argc, char** argv) {
     const double e = filtered_only ? 0 : run(scene, S, true, re);
     if (!filtered_only && rf.intervals.size() != re.intervals.size()) std::cout << "  REGIONS DIFFER\n";
     std::cout << edges << "  " << f << "  " << e << "  " << e / f << "  " << rf.stats.cone_tests << "  "
-              << st.total_certified() << "/" << st.total_fallbacks() << "\n";
+              << st.total_certified() << "/" << st.total_fallbacks();
+    // Where the fallbacks ran, site by site.
+    for (int k = 0; k < static_cast<int>(fixel::FilterSite::kCount); ++k) {
+      const auto site = static_cast<fixel::FilterSite>(k);
+      if (st.at(site).fallbacks > 0) std::cout << "  " << fixel::to_string(site) << " " << st.at(site).fallbacks;
+    }
+    std::cout << "\n";
     if (edges <= 64000) {
       ns.push_back(edges);
       tf.push_back(f);
