@@ -112,16 +112,14 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
         out.status = RegionStatus::kOut;
         return out;
       }
-      if (q == internal::Quick::kIn && bounds && bounds->empty) {
-        // No common magnitude, as the exact path would find: nothing to wait for.
-        internal::record_filter(FilterSite::kInMagnitudes, true);
+      if (q == internal::Quick::kIn && bounds) {
         out.status = RegionStatus::kIn;
         out.half_line = bounds->all_half;
-        return out;
-      }
-      if (q == internal::Quick::kIn && bounds) {  // settle() counts it
-        out.status = RegionStatus::kIn;
-        out.half_line = bounds->all_half;
+        if (bounds->empty) {  // no common magnitude, as the exact path would find: nothing to wait for
+          internal::record_filter(FilterSite::kInMagnitudes, true);
+          return out;  // out.magnitudes is Magnitudes{}
+        }
+        // Deferred: settle() computes and counts it.
         out.magnitudes = internal::neutral_magnitudes();
         ctx.deferred->push_back({kUnplaced, *bounds, [&ctx, seg] {
                                    const RegionInterval r = classify_exact(ctx, seg.exact());
