@@ -16,6 +16,7 @@
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/lemke_filtered.h"
 #include "fixel/lcp.h"
 #include "fixel/lemke.h"
 #include "fixel/seating.h"
@@ -212,6 +213,7 @@ BENCHMARK(BM_FilteredLemke)->Repetitions(5)->ReportAggregatesOnly(true);
 void report_filtered_agreement() {
   int differ = 0;
   fixel::reset_filter_stats();
+  fixel::internal::reset_final_value_counts();
   for (const auto& pr : problems()) {
     fixel::LemkeResult f, e;
     {
@@ -226,10 +228,12 @@ void report_filtered_agreement() {
   }
   const auto c = fixel::filter_stats().at(fixel::FilterSite::kLemke);
   const auto ties = fixel::filter_stats().at(fixel::FilterSite::kLemkeTie);
+  const auto values = fixel::internal::final_value_counts();
   std::cout << "filtered Lemke: " << differ << " of " << problems().size()
             << " problems differ from forced exact Lemke; decisions certified " << c.certified << ", exact fallback "
             << c.fallbacks << "; exact ties proved by a null vector " << ties.certified << ", not proved "
-            << ties.fallbacks << "\n";
+            << ties.fallbacks << "; final values by p-adic lifting " << values.dixon << ", from the factored block "
+            << values.factored << "\n";
 }
 
 // Per-problem times: each problem solved `reps` times by each solver in

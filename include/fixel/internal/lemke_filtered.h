@@ -16,6 +16,16 @@ namespace fixel::internal {
 // Records the decisions in FilterSite::kLemke.
 bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result);
 
+// How the solved filtered runs got their final values since the last
+// reset: by dixon_solve (internal/lemke_dixon.h), or from the factored
+// basis block when it declined. Runs that had the final basis's exact
+// columns at hand already count in neither. For tests and benchmarks.
+struct FinalValueCounts {
+  long dixon = 0, factored = 0;
+};
+FinalValueCounts final_value_counts();
+void reset_final_value_counts();
+
 // The filtered run's final check, exposed for tests: whether the basic
 // values x_t = num_t/den (num_t/(den·L_i) when basis[t] is w_i, with L_i the
 // lcm of the denominators of B's row i) solve LCP(B, b) at the

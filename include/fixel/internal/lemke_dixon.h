@@ -1,0 +1,28 @@
+#pragma once
+// The filtered Lemke run's final values (src/lemke_dixon.cpp): the basis
+// block solved by p-adic lifting (Dixon) and rational reconstruction, whose
+// work grows with the size of the answer rather than with det C. On the
+// seating LCPs the values' denominators are 50–95 bits while det C of the
+// row-scaled block is 200–300 bits (docs/theory.md §6).
+#include <cstdint>
+#include <vector>
+
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+
+// The primes p the lifting works modulo, in the order tried (the next one
+// when C is singular modulo the last); exposed for tests.
+const std::vector<std::uint64_t>& dixon_primes();
+
+// Solves C x = y for the k×k integer matrix C (c[a·k + j] = C(a, j)) and
+// the integer vector y, as x = u/d with one common denominator d > 0.
+// True only when C·u = d·y holds exactly (checked before returning). False
+// when C is singular, or singular modulo every prime tried, or no
+// reconstruction passed that check within the lifting steps that
+// Hadamard's bound says suffice: the caller then solves another way.
+// The pointers must stay valid during the call.
+bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                 std::vector<Integer>& u, Integer& d);
+
+}  // namespace fixel::internal

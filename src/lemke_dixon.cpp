@@ -1,0 +1,258 @@
+#include "fixel/internal/lemke_dixon.h"
+
+#include <flint/flint.h>
+#include <flint/fmpq.h>
+#include <flint/fmpz.h>
+#include <flint/nmod.h>
+#include <flint/ulong_extras.h>
+
+#include <cmath>
+#include <cstddef>
+
+#include "fixel/internal/lemke_scaled.h"
+
+namespace fixel::internal {
+
+const std::vector<std::uint64_t>& dixon_primes() {
+  static const std::vector<std::uint64_t> primes = [] {
+    std::vector<std::uint64_t> out;
+    ulong p = UWORD(1) << 62;
+    for (int i = 0; i < 3; ++i) out.push_back(p = n_nextprime(p, 1));
+    return out;
+  }();
+  return primes;
+}
+
+namespace {
+
+// FLINT's fmpz and fmpq as scoped values (they own memory when large).
+struct Fmpz {
+  fmpz_t v;
+  Fmpz() { fmpz_init(v); }
+  ~Fmpz() { fmpz_clear(v); }
+  Fmpz(const Fmpz&) = delete;
+  Fmpz& operator=(const Fmpz&) = delete;
+};
+struct Fmpq {
+  fmpq_t v;
+  Fmpq() { fmpq_init(v); }
+  ~Fmpq() { fmpq_clear(v); }
+  Fmpq(const Fmpq&) = delete;
+  Fmpq& operator=(const Fmpq&) = delete;
+};
+
+// Storage reused from call to call (one per thread).
+struct Workspace {
+  std::vector<mp_limb_t> lu, inverse_pivot, digit, rhs;
+  std::vector<int> swaps;
+  std::vector<Integer> residual, lifted, candidate;
+  Integer modulus, half, t, combination;
+};
+
+Workspace& workspace() {
+  thread_local Workspace ws;
+  return ws;
+}
+
+// x mod p in [0, p), limb by limb with FLINT's preinverted reduction
+// (no hardware division).
+mp_limb_t residue(const Integer& x, nmod_t mod) {
+  const mpz_srcptr z = mp(x);
+  mp_limb_t r = 0;
+  for (std::size_t i = mpz_size(z); i-- > 0;) NMOD_RED2(r, r, mpz_getlimbn(z, i), mod);
+  return mpz_sgn(z) < 0 ? nmod_neg(r, mod) : r;
+}
+
+// C modulo p reduced to upper triangular U by division-free elimination
+// (row r ← U_cc·row r − C_rc·row c, the multipliers C_rc kept below the
+// diagonal), with the pivots' inverses from one inversion (Montgomery's
+// batch trick): one n_invmod per factoring instead of k. False if C is
+// singular mod p.
+bool factor_mod(int k, const std::vector<const Integer*>& c, nmod_t mod, Workspace& ws) {
+  const auto at = [k](int a, int j) { return static_cast<std::size_t>(a) * k + j; };
+  ws.lu.resize(static_cast<std::size_t>(k) * k);
+  ws.inverse_pivot.resize(k);
+  ws.swaps.resize(k);
+  for (std::size_t e = 0; e < ws.lu.size(); ++e) ws.lu[e] = residue(*c[e], mod);
+  for (int col = 0; col < k; ++col) {
+    int p = col;
+    while (p < k && ws.lu[at(p, col)] == 0) ++p;
+    if (p == k) return false;
+    ws.swaps[col] = p;
+    if (p != col)
+      for (int j = 0; j < k; ++j) std::swap(ws.lu[at(p, j)], ws.lu[at(col, j)]);
+    const mp_limb_t pivot = ws.lu[at(col, col)];
+    for (int r = col + 1; r < k; ++r) {
+      const mp_limb_t f = ws.lu[at(r, col)];
+      if (f == 0) continue;  // row r already eliminated: left unscaled
+      for (int j = col + 1; j < k; ++j)
+        ws.lu[at(r, j)] = nmod_sub(nmod_mul(pivot, ws.lu[at(r, j)], mod), nmod_mul(f, ws.lu[at(col, j)], mod), mod);
+    }
+  }
+  // inverse_pivot[c] = 1/U_cc: prefix products, one inverse, then back.
+  mp_limb_t product = 1;
+  for (int col = 0; col < k; ++col) {
+    ws.inverse_pivot[col] = product;  // U_00 ⋯ U_(c−1)(c−1)
+    product = nmod_mul(product, ws.lu[at(col, col)], mod);
+  }
+  mp_limb_t inverse = n_invmod(product, mod.n);  // a product of nonzero residues mod a prime
+  for (int col = k; col-- > 0;) {
+    ws.inverse_pivot[col] = nmod_mul(ws.inverse_pivot[col], inverse, mod);
+    inverse = nmod_mul(inverse, ws.lu[at(col, col)], mod);
+  }
+  return true;
+}
+
+// digit = C⁻¹ rhs mod p, from factor_mod's factors (rhs is overwritten).
+void solve_mod(int k, nmod_t mod, Workspace& ws) {
+  const auto at = [k](int a, int j) { return static_cast<std::size_t>(a) * k + j; };
+  // The swaps first, then the eliminations: the stored multipliers moved
+  // with their rows at every later swap (as in LAPACK's getrs).
+  for (int col = 0; col < k; ++col)
+    if (ws.swaps[col] != col) std::swap(ws.rhs[col], ws.rhs[ws.swaps[col]]);
+  for (int col = 0; col < k; ++col) {
+    const mp_limb_t pivot = ws.lu[at(col, col)];
+    for (int r = col + 1; r < k; ++r) {
+      const mp_limb_t f = ws.lu[at(r, col)];
+      if (f != 0) ws.rhs[r] = nmod_sub(nmod_mul(pivot, ws.rhs[r], mod), nmod_mul(f, ws.rhs[col], mod), mod);
+    }
+  }
+  for (int r = k; r-- > 0;) {
+    mp_limb_t s = ws.rhs[r];
+    for (int j = r + 1; j < k; ++j)
+      if (ws.lu[at(r, j)] != 0) s = nmod_sub(s, nmod_mul(ws.lu[at(r, j)], ws.digit[j], mod), mod);
+    ws.digit[r] = nmod_mul(s, ws.inverse_pivot[r], mod);
+  }
+}
+
+// Whether C·u = d·y exactly.
+bool solves(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+            const std::vector<Integer>& u, const Integer& d, Workspace& ws) {
+  for (int a = 0; a < k; ++a) {
+    mpz_mul(mp(ws.t), mp(d), mp(*y[a]));
+    for (int j = 0; j < k; ++j) mpz_submul(mp(ws.t), mp(*c[static_cast<std::size_t>(a) * k + j]), mp(u[j]));
+    if (mpz_sgn(mp(ws.t)) != 0) return false;
+  }
+  return true;
+}
+
+// Rational reconstruction of a mod M (0 ≤ a < M): its denominator into
+// `den`, false if there is none.
+bool reconstruct_denominator(const Integer& a, const Workspace& ws, Integer& den) {
+  Fmpz residue, modulus;  // FLINT values stay local: none outlives FLINT's per-thread pools
+  Fmpq q;
+  fmpz_set_mpz(residue.v, mp(a));
+  fmpz_set_mpz(modulus.v, mp(ws.modulus));
+  if (!fmpq_reconstruct_fmpz(q.v, residue.v, modulus.v)) return false;
+  fmpz_get_mpz(mp(den), fmpq_denref(q.v));
+  return true;
+}
+
+// Whether d² < M/2, as for a denominator that rational reconstruction
+// may return: a larger d would let garbage pass the size test below.
+bool small_denominator(const Integer& d, Workspace& ws) {
+  mpz_mul(mp(ws.t), mp(d), mp(d));
+  return mpz_cmp(mp(ws.t), mp(ws.half)) < 0;
+}
+
+// With x ≡ lifted (mod M): d from the rational reconstruction of a fixed
+// combination of the x_j (usually the lcm of their denominators), then
+// each u_j = d·x_j as the symmetric residue mod M. A u_j with |u_j|·d ≥ M/2
+// means d lacks a factor of x_j's denominator: x_j·d is reconstructed and
+// d grows by its denominator (at most k times). Last, the exact check; the
+// size test before it only keeps garbage from reaching it.
+bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                 std::vector<Integer>& u, Integer& d, Workspace& ws) {
+  mpz_set_ui(mp(ws.combination), 0);
+  for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
+  mpz_mod(mp(ws.combination), mp(ws.combination), mp(ws.modulus));
+  mpz_fdiv_q_2exp(mp(ws.half), mp(ws.modulus), 1);
+  if (!reconstruct_denominator(ws.combination, ws, d) || !small_denominator(d, ws)) return false;
+  ws.candidate.resize(k);
+  for (int grown = 0, j = 0; j < k; ++j) {
+    Integer& v = ws.candidate[j];
+    mpz_mul(mp(v), mp(ws.lifted[j]), mp(d));
+    mpz_mod(mp(v), mp(v), mp(ws.modulus));
+    if (mpz_cmp(mp(v), mp(ws.half)) > 0) mpz_sub(mp(v), mp(v), mp(ws.modulus));
+    // |u_j|·max(d, 2⁶⁴) < M/2: the 64-bit floor keeps a random residue
+    // from passing when d is small (it then passes with odds below 2⁻⁶³).
+    if (mpz_sizeinbase(mp(d), 2) > 64)
+      mpz_mul(mp(ws.t), mp(v), mp(d));
+    else
+      mpz_mul_2exp(mp(ws.t), mp(v), 64);
+    mpz_abs(mp(ws.t), mp(ws.t));
+    if (mpz_cmp(mp(ws.t), mp(ws.half)) < 0) continue;
+    if (grown++ == k) return false;
+    if (mpz_sgn(mp(v)) < 0) mpz_add(mp(v), mp(v), mp(ws.modulus));
+    if (!reconstruct_denominator(v, ws, ws.t) || mpz_cmp_ui(mp(ws.t), 1) == 0) return false;
+    mpz_mul(mp(d), mp(d), mp(ws.t));
+    if (!small_denominator(d, ws)) return false;
+    j = -1;  // d changed: every u_j again
+  }
+  if (!solves(k, c, y, ws.candidate, d, ws)) return false;
+  u.resize(k);
+  for (int j = 0; j < k; ++j) mpz_swap(mp(u[j]), mp(ws.candidate[j]));
+  return true;
+}
+
+// Lifting steps after which reconstruction must have succeeded: by
+// Cramer's rule x_j = det C_j / det C, and Hadamard's bound gives
+// |det| ≤ ∏ rows' norms; p^steps > 2·|num|·|den| then suffices. Bits are
+// over-estimated from each row's largest entry, so the bound stays a bound.
+int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, double prime_bits) {
+  double det_bits = 0, num_bits = 0;
+  const double half_log_k = 0.5 * std::log2(static_cast<double>(k) + 1);
+  for (int a = 0; a < k; ++a) {
+    std::size_t row = 0;
+    for (int j = 0; j < k; ++j) row = std::max(row, mpz_sizeinbase(mp(*c[static_cast<std::size_t>(a) * k + j]), 2));
+    det_bits += static_cast<double>(row) + half_log_k;
+    num_bits += static_cast<double>(std::max(row, mpz_sizeinbase(mp(*y[a]), 2))) + half_log_k;
+  }
+  return static_cast<int>(std::ceil((det_bits + num_bits + 2) / prime_bits)) + 1;
+}
+
+}  // namespace
+
+bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                 std::vector<Integer>& u, Integer& d) {
+  if (k < 0 || c.size() != static_cast<std::size_t>(k) * k || y.size() != static_cast<std::size_t>(k)) return false;
+  Workspace& ws = workspace();
+  if (k == 0) {
+    u.clear();
+    mpz_set_ui(mp(d), 1);
+    return true;
+  }
+  for (const std::uint64_t prime : dixon_primes()) {
+    nmod_t mod;
+    nmod_init(&mod, prime);
+    if (!factor_mod(k, c, mod, ws)) continue;  // p divides det C (or C is singular)
+    const int limit = step_limit(k, c, y, std::log2(static_cast<double>(prime)));
+    ws.residual.resize(k);
+    ws.lifted.resize(k);
+    ws.digit.resize(k);
+    ws.rhs.resize(k);
+    for (int a = 0; a < k; ++a) {
+      mpz_set(mp(ws.residual[a]), mp(*y[a]));
+      mpz_set_ui(mp(ws.lifted[a]), 0);
+    }
+    mpz_set_ui(mp(ws.modulus), 1);
+    // Invariant: C·lifted + modulus·residual = y, lifted < modulus entrywise.
+    for (int step = 0; step < limit; ++step) {
+      for (int a = 0; a < k; ++a) ws.rhs[a] = residue(ws.residual[a], mod);
+      solve_mod(k, mod, ws);
+      for (int a = 0; a < k; ++a) {
+        mpz_addmul_ui(mp(ws.lifted[a]), mp(ws.modulus), ws.digit[a]);
+        for (int j = 0; j < k; ++j)
+          if (ws.digit[j] != 0)
+            mpz_submul_ui(mp(ws.residual[a]), mp(*c[static_cast<std::size_t>(a) * k + j]), ws.digit[j]);
+        mpz_divexact_ui(mp(ws.residual[a]), mp(ws.residual[a]), prime);
+      }
+      mpz_mul_ui(mp(ws.modulus), mp(ws.modulus), prime);
+      if (step >= 1 && reconstruct(k, c, y, u, d, ws)) return true;
+    }
+    return false;  // not within the bound: C was singular after all (p ∤ det C makes that impossible)
+  }
+  return false;
+}
+
+}  // namespace fixel::internal

@@ -1,0 +1,167 @@
+#include "fixel/internal/lemke_dixon.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "fixel/internal/exact_lu.h"
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+namespace {
+
+// A k×k integer system, its entries and right-hand side as the solver takes them.
+struct System {
+  int k = 0;
+  std::vector<Integer> c, y;
+
+  std::vector<const Integer*> c_pointers() const {
+    std::vector<const Integer*> out;
+    for (const Integer& x : c) out.push_back(&x);
+    return out;
+  }
+  std::vector<const Integer*> y_pointers() const {
+    std::vector<const Integer*> out;
+    for (const Integer& x : y) out.push_back(&x);
+    return out;
+  }
+  // The reference: Eigen's exact LU over the rationals (a second method).
+  bool reference(VectorQ& x) const {
+    MatrixQ A(k, k);
+    VectorQ b(k);
+    for (int a = 0; a < k; ++a) {
+      b[a] = Rational(y[a]);
+      for (int j = 0; j < k; ++j) A(a, j) = Rational(c[static_cast<std::size_t>(a) * k + j]);
+    }
+    const auto lu = exact_lu(A);
+    if (!lu.isInvertible()) return false;
+    x = lu.solve(b);
+    return true;
+  }
+};
+
+// A signed integer of up to `bits` bits; zero with probability `zeros`.
+Integer random_integer(std::mt19937_64& rng, int bits, double zeros) {
+  if (std::uniform_real_distribution<double>(0, 1)(rng) < zeros) return Integer(0);
+  Integer x = 0;
+  for (int left = bits; left > 0; left -= 32) {
+    const int chunk = left < 32 ? left : 32;
+    x = (x << chunk) + Integer(rng() & ((std::uint64_t{1} << chunk) - 1));
+  }
+  return (rng() & 1) ? Integer(-x) : x;
+}
+
+System random_system(std::mt19937_64& rng, int k, int bits, double zeros) {
+  System s;
+  s.k = k;
+  for (int e = 0; e < k * k; ++e) s.c.push_back(random_integer(rng, bits, zeros));
+  for (int a = 0; a < k; ++a) s.y.push_back(random_integer(rng, bits, 0.1));
+  return s;
+}
+
+// Solves s and compares u/d with the reference, value by value, exactly.
+void expect_reference_solution(const System& s) {
+  VectorQ expected;
+  ASSERT_TRUE(s.reference(expected));
+  std::vector<Integer> u;
+  Integer d;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d));
+  ASSERT_EQ(static_cast<int>(u.size()), s.k);
+  EXPECT_GT(d, 0);
+  for (int j = 0; j < s.k; ++j) EXPECT_EQ(Rational(u[j], d), expected[j]) << "x_" << j;
+}
+
+GTEST_TEST(DixonSolve, AgreesWithExactLuOnRandomSystemsOfEverySizeAndSparsity) {
+  std::mt19937_64 rng(7);
+  int solved = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int k = 1 + trial % 10;
+    const int bits = (trial % 3 == 0) ? 8 : (trial % 3 == 1) ? 60 : 95;  // the seating blocks: 30–91 bits
+    const double zeros = (trial % 4) * 0.2;                              // sparse blocks need row swaps
+    const System s = random_system(rng, k, bits, zeros);
+    VectorQ x;
+    if (!s.reference(x)) {
+      std::vector<Integer> u;
+      Integer d;
+      EXPECT_FALSE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d)) << "singular, trial " << trial;
+      continue;
+    }
+    SCOPED_TRACE(trial);
+    expect_reference_solution(s);
+    ++solved;
+  }
+  EXPECT_GT(solved, 250);  // most random systems are nonsingular
+}
+
+GTEST_TEST(DixonSolve, NeedsPivotsBelowTheDiagonalWhenTheDiagonalIsZero) {
+  // An anti-diagonal system: every column's pivot is found by a row swap.
+  System s;
+  s.k = 4;
+  s.c.assign(16, Integer(0));
+  for (int a = 0; a < 4; ++a) s.c[static_cast<std::size_t>(a) * 4 + (3 - a)] = Integer(2 * a + 3);
+  s.c[1] = Integer(5);  // one more entry in row 0, so that the swaps interact
+  s.y = {Integer(1), Integer(-2), Integer(3), Integer(7)};
+  expect_reference_solution(s);
+}
+
+GTEST_TEST(DixonSolve, RecoversDenominatorsFarLargerThanOnePrime) {
+  // 200-bit entries: the values' denominators are about 1,000 bits, some
+  // twenty lifting steps.
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 5; ++trial) expect_reference_solution(random_system(rng, 5, 200, 0.0));
+}
+
+GTEST_TEST(DixonSolve, MovesToTheNextPrimeWhenTheFirstDividesTheDeterminant) {
+  const std::vector<std::uint64_t>& primes = dixon_primes();
+  ASSERT_EQ(primes.size(), 3u);
+  System s;
+  s.k = 2;
+  s.c = {Integer(primes[0]), Integer(1), Integer(0), Integer(3)};  // det = 3·p₀
+  s.y = {Integer(1), Integer(1)};
+  expect_reference_solution(s);
+}
+
+GTEST_TEST(DixonSolve, DeclinesWhenEveryPrimeDividesTheDeterminant) {
+  const std::vector<std::uint64_t>& primes = dixon_primes();
+  System s;
+  s.k = 2;
+  Integer product = 1;
+  for (const std::uint64_t p : primes) product *= Integer(p);
+  s.c = {product, Integer(0), Integer(0), Integer(1)};
+  s.y = {Integer(1), Integer(1)};
+  std::vector<Integer> u;
+  Integer d;
+  EXPECT_FALSE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d));
+}
+
+GTEST_TEST(DixonSolve, DeclinesSingularSystemsAndWrongSizes) {
+  System s;
+  s.k = 2;
+  s.c = {Integer(1), Integer(2), Integer(2), Integer(4)};
+  s.y = {Integer(1), Integer(2)};  // consistent, but C is singular
+  std::vector<Integer> u;
+  Integer d;
+  EXPECT_FALSE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d));
+  EXPECT_FALSE(dixon_solve(3, s.c_pointers(), s.y_pointers(), u, d));
+  EXPECT_FALSE(dixon_solve(-1, {}, {}, u, d));
+  ASSERT_TRUE(dixon_solve(0, {}, {}, u, d));
+  EXPECT_TRUE(u.empty());
+  EXPECT_EQ(d, 1);
+}
+
+GTEST_TEST(DixonSolve, FindsEveryDenominatorWhenTheCombinationIsAnInteger) {
+  // x = (1/3, −1/3): the combination x₀ + 2x₁ = −1/3, but with x = (1/3, 1/3)
+  // x₀ + 2x₁ = 1 is an integer and d must grow from each value.
+  System s;
+  s.k = 2;
+  s.c = {Integer(3), Integer(0), Integer(0), Integer(3)};
+  s.y = {Integer(1), Integer(1)};
+  expect_reference_solution(s);
+  s.y = {Integer(1), Integer(-1)};
+  expect_reference_solution(s);
+}
+
+}  // namespace
+}  // namespace fixel::internal
