@@ -80,19 +80,35 @@ class ScaledProblem {
   // The common case, B's row i with denominators whose lcm fits in 64 bits:
   // L_i and each factor L_i/den in machine words, one mpz_mul_ui per entry.
   // False (nothing written) when a denominator or the lcm does not fit.
+  // Denominators repeat along a row (and zeros have 1), so the last one
+  // seen is remembered: a hardware division costs tens of cycles.
   bool scale_row_in_words(const MatrixQ& B, int i) {
-    unsigned long L = 1;
+    unsigned long L = 1, last = 1;
     for (int j = 0; j < n_; ++j) {
       mpz_srcptr q = mpq_denref(B(i, j).backend().data());
       if (!mpz_fits_ulong_p(q)) return false;
       const unsigned long d = mpz_get_ui(q);
-      if (L % d == 0) continue;  // denominators repeat
+      if (d == last || L % d == 0) {  // L only grows: a divisor stays one
+        last = d;
+        continue;
+      }
       if (__builtin_mul_overflow(L / std::gcd(L, d), d, &L)) return false;
+      last = d;
     }
     mpz_set_ui(mp(scale_[i]), L);
+    unsigned long d_last = 1, factor = L;  // L / d_last
     for (int j = 0; j < n_; ++j) {
       const auto* q = B(i, j).backend().data();
-      mpz_mul_ui(mp(at(i, n_ + j)), mpq_numref(q), L / mpz_get_ui(mpq_denref(q)));
+      if (mpq_sgn(q) == 0) {
+        mpz_set_ui(mp(at(i, n_ + j)), 0);
+        continue;
+      }
+      const unsigned long d = mpz_get_ui(mpq_denref(q));
+      if (d != d_last) {
+        d_last = d;
+        factor = L / d;
+      }
+      mpz_mul_ui(mp(at(i, n_ + j)), mpq_numref(q), factor);
       mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
     }
     return true;
