@@ -198,15 +198,17 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
 // Lifting steps after which reconstruction must have succeeded: by
 // Cramer's rule x_j = det C_j / det C, and Hadamard's bound gives
 // |det| ≤ ∏ rows' norms; p^steps > 2·|num|·|den| then suffices. Bits are
-// over-estimated from each row's largest entry, so the bound stays a bound.
+// over-estimated from each row's longest entry in limbs, so the bound
+// stays a bound (a loose one costs nothing unless reconstruction fails).
 int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, double prime_bits) {
   double det_bits = 0, num_bits = 0;
   const double half_log_k = 0.5 * std::log2(static_cast<double>(k) + 1);
   for (int a = 0; a < k; ++a) {
     std::size_t row = 0;
-    for (int j = 0; j < k; ++j) row = std::max(row, mpz_sizeinbase(mp(*c[static_cast<std::size_t>(a) * k + j]), 2));
-    det_bits += static_cast<double>(row) + half_log_k;
-    num_bits += static_cast<double>(std::max(row, mpz_sizeinbase(mp(*y[a]), 2))) + half_log_k;
+    for (int j = 0; j < k; ++j) row = std::max(row, mpz_size(mp(*c[static_cast<std::size_t>(a) * k + j])));
+    const std::size_t with_y = std::max(row, mpz_size(mp(*y[a])));
+    det_bits += 64.0 * static_cast<double>(row) + half_log_k;
+    num_bits += 64.0 * static_cast<double>(with_y) + half_log_k;
   }
   return static_cast<int>(std::ceil((det_bits + num_bits + 2) / prime_bits)) + 1;
 }
