@@ -71,19 +71,27 @@ bool TieCertifier::singular(const std::vector<int>& beta, const ApproxProblem& a
   if (!(largest > 0)) return false;
   perm_.resize(k);
   std::iota(perm_.begin(), perm_.end(), 0);
+  // The full pivot search of each step is fused into the previous step's
+  // update (the same row-major order, so the same pivot): the first one
+  // is a scan of the whole matrix.
+  int pr = 0, pc = 0;
+  for (int r = 0; r < k; ++r)
+    for (int c = 0; c < k; ++c)
+      if (std::abs(M_[idx(r, c)]) > std::abs(M_[idx(pr, pc)])) pr = r, pc = c;
   int rank = 0;
   for (; rank < k; ++rank) {
-    int pr = rank, pc = rank;
-    for (int r = rank; r < k; ++r)
-      for (int c = rank; c < k; ++c)
-        if (std::abs(M_[idx(r, c)]) > std::abs(M_[idx(pr, pc)])) pr = r, pc = c;
     if (!(std::abs(M_[idx(pr, pc)]) > 1e-9 * largest)) break;
     for (int c = 0; c < k; ++c) std::swap(M_[idx(rank, c)], M_[idx(pr, c)]);
     for (int r = 0; r < k; ++r) std::swap(M_[idx(r, rank)], M_[idx(r, pc)]);
     std::swap(perm_[rank], perm_[pc]);
+    pr = pc = rank + 1;
     for (int r = rank + 1; r < k; ++r) {
       const double f = M_[idx(r, rank)] / M_[idx(rank, rank)];
-      for (int c = rank; c < k; ++c) M_[idx(r, c)] -= f * M_[idx(rank, c)];
+      M_[idx(r, rank)] -= f * M_[idx(rank, rank)];
+      for (int c = rank + 1; c < k; ++c) {
+        M_[idx(r, c)] -= f * M_[idx(rank, c)];
+        if (std::abs(M_[idx(r, c)]) > std::abs(M_[idx(pr, pc)])) pr = r, pc = c;
+      }
     }
   }
   if (rank == k) return false;
