@@ -209,6 +209,26 @@ void BM_FilteredLemke(benchmark::State& state) {
 }
 BENCHMARK(BM_FilteredLemke)->Repetitions(5)->ReportAggregatesOnly(true);
 
+// The filtered run's pivot path alone, without its exact final values: what
+// the interval path and its tie certificates cost, a floor for
+// BM_FilteredLemke (docs/performance.md). Every problem here has a negative
+// b entry, so solve_lcp_lemke would run exactly this path.
+void BM_LemkePivotPathOnly(benchmark::State& state) {
+  const auto& all = problems();
+  for (const auto& pr : all)
+    if ((pr.b.array() >= Rational(0)).all()) state.SkipWithError("a problem with b >= 0 never reaches the pivot path");
+  fixel::ForceExactScope filtered(false);
+  fixel::LemkeResult result;
+  std::vector<int> basis;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const int n = static_cast<int>(all[k].b.size());
+    benchmark::DoNotOptimize(fixel::internal::filtered_lemke_path(all[k].B, all[k].b, 100 * (n + 1), result, basis));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_LemkePivotPathOnly)->Repetitions(5)->ReportAggregatesOnly(true);
+
 // Filtered against forced exact on all problems: status, pivots, w and z.
 void report_filtered_agreement() {
   int differ = 0;

@@ -453,7 +453,9 @@ class FilteredRun {
     record_filter(FilterSite::kLemkeTie, ties_proved_, ties_unproved_);
   }
 
-  bool run(int max_pivots, LemkeResult& result) {
+  // With `values` false (filtered_lemke_path) the run stops at the final
+  // basis: no exact values, w and z left empty.
+  bool run(int max_pivots, LemkeResult& result, bool values = true) {
     // z0 enters; the row with the most negative b leaves, ties to the larger index.
     int r = 0;
     for (int i = 1; i < n_; ++i) {
@@ -496,7 +498,7 @@ class FilteredRun {
     result = LemkeResult{};
     result.status = status;
     result.pivots = pivots;
-    if (status == LemkeStatus::kSolved) {
+    if (status == LemkeStatus::kSolved && values) {
       // Dixon's values first; the factored block when it declines, or when
       // its values fail the check (never seen; the check is the guard).
       bool checked = false;
@@ -524,6 +526,9 @@ class FilteredRun {
     }
     return true;
   }
+
+  // The basic variable of each tableau row.
+  const std::vector<int>& basis() const { return T_.basis(); }
 
  private:
   ExactTableau& exact() {
@@ -647,6 +652,14 @@ class FilteredRun {
 bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result) {
   FilteredRun run(B, b);
   return run.run(max_pivots, result);
+}
+
+bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result,
+                         std::vector<int>& basis) {
+  FilteredRun run(B, b);
+  if (!run.run(max_pivots, result, false)) return false;
+  basis = run.basis();
+  return true;
 }
 
 FinalValueCounts final_value_counts() { return {g_dixon_values.load(), g_factored_values.load()}; }

@@ -194,7 +194,30 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) 
     for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
     const TimeSteppingLcp lcp = build_lcp(scene);
     const VectorQ b = lcp.b(p);
-    expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
+    const LemkeResult solved = solve_lcp_lemke(lcp.B, b);
+    expect_same(solved, solve_forced_exact(lcp.B, b), problems);
+    if (!(b.array() >= Rational(0)).all()) {
+      // The pivot path alone ends where the whole run does, at a basis that
+      // holds every nonzero value of the answer.
+      LemkeResult path;
+      std::vector<int> basis;
+      ASSERT_TRUE(internal::filtered_lemke_path(lcp.B, b, 100 * 13, path, basis));
+      EXPECT_EQ(path.status, solved.status);
+      EXPECT_EQ(path.pivots, solved.pivots);
+      EXPECT_TRUE(path.w.size() == 0 && path.z.size() == 0);
+      const int n = static_cast<int>(b.size());
+      for (int i = 0; i < n; ++i) {
+        const bool w_basic = std::find(basis.begin(), basis.end(), i) != basis.end();
+        const bool z_basic = std::find(basis.begin(), basis.end(), n + i) != basis.end();
+        if (solved.w[i] != 0) {
+          EXPECT_TRUE(w_basic) << "w_" << i << ", problem " << problems;
+        }
+        if (solved.z[i] != 0) {
+          EXPECT_TRUE(z_basic) << "z_" << i << ", problem " << problems;
+        }
+      }
+      EXPECT_EQ(std::find(basis.begin(), basis.end(), 2 * n), basis.end());  // z0 left
+    }
     ++problems;
   }
   // Most decisions are certified by the intervals. The exact ratio ties of
