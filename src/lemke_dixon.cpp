@@ -6,8 +6,11 @@
 #include <flint/nmod.h>
 #include <flint/ulong_extras.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
+#include <vector>
 
 #include "fixel/internal/lemke_scaled.h"
 
