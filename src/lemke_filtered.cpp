@@ -254,9 +254,9 @@ class ExactTableau {
 
 // The basic values at the complementary basis β (z0 not basic), in the
 // form of ExactTableau::basic_values, with the basis block solved by
-// dixon_solve: its common denominator is the values' own (50–95 bits on
-// the seating LCPs) instead of det C (200–300 bits), so every later step
-// works on smaller integers. False when dixon_solve declines.
+// dixon_solve: its common denominator is about the values' own (3–79 bits
+// on the bench's seating LCPs) instead of D·δ (130–420 bits), so every
+// later step works on smaller integers. False when dixon_solve declines.
 bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, BasicValues& out) {
   const int n = P.n();
   thread_local std::vector<int> rows, block_rows;

@@ -2,8 +2,9 @@
 // The filtered Lemke run's final values (src/lemke_dixon.cpp): the basis
 // block solved by p-adic lifting (Dixon) and rational reconstruction, whose
 // work grows with the size of the answer rather than with det C. On the
-// seating LCPs the values' denominators are 50–95 bits while det C of the
-// row-scaled block is 200–300 bits (docs/theory.md §6).
+// bench's seating LCPs the values' denominators are 1–95 bits while the
+// factored block's common denominator D·δ is 130–420 bits
+// (docs/theory.md §6).
 #include <cstdint>
 #include <vector>
 
