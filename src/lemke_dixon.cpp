@@ -199,21 +199,21 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
 }
 
 // Lifting steps after which reconstruction must have succeeded: by
-// Cramer's rule x_j = det C_j / det C, and Hadamard's bound gives
-// |det| ≤ ∏ rows' norms; p^steps > 2·|num|·|den| then suffices. Bits are
-// over-estimated from each row's longest entry in limbs, so the bound
-// stays a bound (a loose one costs nothing unless reconstruction fails).
+// Cramer's rule x_j = det C_j / det C, and Hadamard's bound H_num ≥ H_den
+// (y's column counted in the first) bounds every numerator and
+// denominator involved; FLINT's reconstruction looks for both below
+// √(M/2), so p^steps > 2·H_num² suffices. Bits are over-estimated from each
+// row's longest entry in limbs, so the bound stays a bound (a loose one
+// costs nothing unless reconstruction fails).
 int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, double prime_bits) {
-  double det_bits = 0, num_bits = 0;
+  double num_bits = 0;
   const double half_log_k = 0.5 * std::log2(static_cast<double>(k) + 1);
   for (int a = 0; a < k; ++a) {
-    std::size_t row = 0;
+    std::size_t row = mpz_size(mp(*y[a]));
     for (int j = 0; j < k; ++j) row = std::max(row, mpz_size(mp(*c[static_cast<std::size_t>(a) * k + j])));
-    const std::size_t with_y = std::max(row, mpz_size(mp(*y[a])));
-    det_bits += 64.0 * static_cast<double>(row) + half_log_k;
-    num_bits += 64.0 * static_cast<double>(with_y) + half_log_k;
+    num_bits += 64.0 * static_cast<double>(row) + half_log_k;
   }
-  return static_cast<int>(std::ceil((det_bits + num_bits + 2) / prime_bits)) + 1;
+  return static_cast<int>(std::ceil((2 * num_bits + 2) / prime_bits)) + 1;
 }
 
 }  // namespace
@@ -255,7 +255,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       mpz_mul_ui(mp(ws.modulus), mp(ws.modulus), prime);
       if (step >= 1 && reconstruct(k, c, y, u, d, ws)) return true;
     }
-    return false;  // not within the bound: C was singular after all (p ∤ det C makes that impossible)
+    return false;  // beyond the bound: not expected (p ∤ det C), and the caller solves another way
   }
   return false;
 }

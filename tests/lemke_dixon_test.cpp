@@ -113,6 +113,21 @@ GTEST_TEST(DixonSolve, RecoversDenominatorsFarLargerThanOnePrime) {
   for (int trial = 0; trial < 5; ++trial) expect_reference_solution(random_system(rng, 5, 200, 0.0));
 }
 
+GTEST_TEST(DixonSolve, RecoversLargeNumeratorsOverSmallDenominators) {
+  // x = 2⁵⁰⁰/3 and an integer of 500 bits: reconstruction looks for
+  // numerator and denominator both below √(M/2), so the lifting must go on
+  // well past what the denominators need.
+  System s;
+  s.k = 1;
+  s.c = {Integer(3)};
+  s.y = {Integer(1) << 500};
+  expect_reference_solution(s);
+  s.k = 2;
+  s.c = {Integer(1), Integer(0), Integer(0), Integer(1)};
+  s.y = {(Integer(1) << 500) + 1, -(Integer(1) << 499)};
+  expect_reference_solution(s);
+}
+
 GTEST_TEST(DixonSolve, MovesToTheNextPrimeWhenTheFirstDividesTheDeterminant) {
   const std::vector<std::uint64_t>& primes = dixon_primes();
   ASSERT_EQ(primes.size(), 3u);
