@@ -36,9 +36,12 @@ struct BasicValues {
 //   δ·([w_i basic] num + Σ_{z_j basic} A(i, z_j)·num) = den·b_i.
 // This checks the elimination that produced the values, row by row, with
 // one product per basic z and no gcd.
-bool solves_lcp_at_basis(const ScaledProblem& P, const std::vector<int>& basis, const BasicValues& values) {
-  const int n = P.n();
-  std::vector<int> row_of(2 * n + 1, -1);
+// The checks of solves_lcp_at_basis before its equations: `basis` is
+// complementary without z0, and every value is ≥ 0. row_of gets the row of
+// each basic variable (−1 for a nonbasic one).
+bool complementary_and_nonnegative(int n, const std::vector<int>& basis, const BasicValues& values,
+                                   std::vector<int>& row_of) {
+  row_of.assign(2 * n + 1, -1);
   for (int t = 0; t < n; ++t) {
     const int v = basis[t];
     if (v < 0 || v >= 2 * n || row_of[v] >= 0) return false;  // z0 basic, or not a basis
@@ -48,7 +51,14 @@ bool solves_lcp_at_basis(const ScaledProblem& P, const std::vector<int>& basis, 
     if (row_of[i] >= 0 && row_of[n + i] >= 0) return false;  // w_i and z_i both basic
   for (int t = 0; t < n; ++t)
     if (mpz_sgn(mp(values.num[t])) < 0) return false;
-  Integer sum, rhs;
+  return true;
+}
+
+bool solves_lcp_at_basis(const ScaledProblem& P, const std::vector<int>& basis, const BasicValues& values) {
+  const int n = P.n();
+  thread_local std::vector<int> row_of;
+  if (!complementary_and_nonnegative(n, basis, values, row_of)) return false;
+  thread_local Integer sum, rhs;
   for (int i = 0; i < n; ++i) {
     if (row_of[i] >= 0)
       mpz_set(mp(sum), mp(values.num[row_of[i]]));
@@ -257,6 +267,10 @@ class ExactTableau {
 // dixon_solve: its common denominator is about the values' own (3–79 bits
 // on the bench's seating LCPs) instead of D·δ (130–420 bits), so every
 // later step works on smaller integers. False when dixon_solve declines.
+// The values it returns satisfy every equation exactly, by construction:
+// the block's rows because dixon_solve accepts only u with C·u = d·y in
+// integers, each basic w's row because that row defines its value. So
+// only the signs and the basis are left to check (the caller's).
 bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, BasicValues& out) {
   const int n = P.n();
   thread_local std::vector<int> rows, block_rows;
@@ -499,12 +513,14 @@ class FilteredRun {
     result.status = status;
     result.pivots = pivots;
     if (status == LemkeStatus::kSolved && values) {
-      // Dixon's values first; the factored block when it declines, or when
-      // its values fail the check (never seen; the check is the guard).
+      // Dixon's values first (their equations hold by construction); the
+      // factored block when lifting declines or a value is negative (never
+      // seen: the intervals certified the final basis's signs).
       bool checked = false;
       if (!final_ready_) {
+        thread_local std::vector<int> row_of;
         checked = dixon_basic_values(problem(), T_.basis(), final_) &&
-                  solves_lcp_at_basis(exact_workspace().problem, T_.basis(), final_);
+                  complementary_and_nonnegative(n_, T_.basis(), final_, row_of);
         ++(checked ? g_dixon_values : g_factored_values);
       }
       if (!checked) {
