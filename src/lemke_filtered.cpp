@@ -340,6 +340,8 @@ class IntervalTableau {
     basis_.resize(n_);
     slot_.assign(2 * n_ + 2, -1);
     stamp_.assign(width_, 0);
+    eta_.clear();
+    eta_row_.clear();
     // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
     for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
     slot_[rhs()] = n_ + 1;
@@ -444,14 +446,27 @@ class IntervalTableau {
     return to_interval(q);
   }
 
+  // The vectors' storage, reused from run to run (one per thread; a run
+  // does not nest another).
+  struct Storage {
+    std::vector<FI> T, eta;
+    std::vector<double> initial;
+    std::vector<int> basis, slot, stamp, eta_row;
+  };
+  static Storage& storage() {
+    thread_local Storage s;
+    return s;
+  }
+
   int n_, width_;
-  std::vector<FI> T_;            // row-major, width_ slots per row
-  std::vector<double> initial_;  // the first tableau's slots, approximately
-  std::vector<int> basis_;       // basic variable of each row
-  std::vector<int> slot_;        // storage slot of each nonbasic variable (and b), else −1
-  std::vector<int> stamp_;       // per slot: how many pivots its column has seen
-  std::vector<FI> eta_;          // per pivot: the entering column before it (n entries)
-  std::vector<int> eta_row_;     // per pivot: its row
+  Storage& storage_ = storage();
+  std::vector<FI>& T_ = storage_.T;                  // row-major, width_ slots per row
+  std::vector<double>& initial_ = storage_.initial;  // the first tableau's slots, approximately
+  std::vector<int>& basis_ = storage_.basis;         // basic variable of each row
+  std::vector<int>& slot_ = storage_.slot;           // storage slot of each nonbasic variable (and b), else −1
+  std::vector<int>& stamp_ = storage_.stamp;         // per slot: how many pivots its column has seen
+  std::vector<FI>& eta_ = storage_.eta;              // per pivot: the entering column before it (n entries)
+  std::vector<int>& eta_row_ = storage_.eta_row;     // per pivot: its row
   int pivots_ = 0;
 };
 
