@@ -32,11 +32,13 @@ class ScaledProblem {
     width_ = n_ + 2;  // the w columns (L_i e_i) are not stored
     A_.resize(static_cast<std::size_t>(n_) * width_);
     scale_.resize(n_);
-    Integer factor;
+    Integer& factor = factor_;
     mpz_set_ui(mp(delta_), 1);
+    word_factors_.resize(n_);
+    words_row_ = -1;
     for (int i = 0; i < n_; ++i) {
       Integer& L = scale_[i];
-      if (!scale_row_in_words(B, i)) {
+      if (!scale_row_like_previous(B, i) && !scale_row_in_words(B, i)) {
         mpz_set_ui(mp(L), 1);
         for (int j = 0; j < n_; ++j) {
           mpz_srcptr q = mpq_denref(B(i, j).backend().data());
@@ -48,17 +50,27 @@ class ScaledProblem {
         }
       }
       mpz_neg(mp(at(i, 2 * n_)), mp(L));
-      // δ: the denominator of L_i·b_i is den(b_i)/gcd(den(b_i), L_i).
+      // δ: the denominator of L_i·b_i is den(b_i)/gcd(den(b_i), L_i); a
+      // row with the L and den(b) of the previous one adds nothing (the
+      // seating LCPs' friction rows come in such pairs, and b_i = 0 has 1).
       mpz_srcptr d = mpq_denref(b[i].backend().data());
+      if (mpz_cmp_ui(d, 1) == 0 || (i > 0 && same_rhs_scaling(b, i))) continue;
       mpz_gcd(mp(factor), d, mp(L));
       mpz_divexact(mp(factor), d, mp(factor));
       if (!mpz_divisible_p(mp(delta_), mp(factor))) mpz_lcm(mp(delta_), mp(delta_), mp(factor));
     }
     for (int i = 0; i < n_; ++i) {
-      // L_i·δ·b_i = num(b_i)·(L_i·δ/den(b_i)), the division exact.
+      // L_i·δ·b_i = num(b_i)·(L_i·δ/den(b_i)), the division exact; the
+      // factor of the previous row when L and den(b) are its.
       const auto* q = b[i].backend().data();
-      mpz_mul(mp(factor), mp(scale_[i]), mp(delta_));
-      mpz_divexact(mp(factor), mp(factor), mpq_denref(q));
+      if (mpq_sgn(q) == 0) {
+        mpz_set_ui(mp(at(i, 2 * n_ + 1)), 0);
+        continue;
+      }
+      if (i == 0 || !same_rhs_scaling(b, i) || mpq_sgn(b[i - 1].backend().data()) == 0) {
+        mpz_mul(mp(factor), mp(scale_[i]), mp(delta_));
+        mpz_divexact(mp(factor), mp(factor), mpq_denref(q));
+      }
       mpz_mul(mp(at(i, 2 * n_ + 1)), mpq_numref(q), mp(factor));
     }
   }
@@ -77,6 +89,29 @@ class ScaledProblem {
 
  private:
   Integer& at(int i, int var) { return A_[static_cast<std::size_t>(i) * width_ + (var - n_)]; }  // var ≥ n
+
+  // Whether row i has the L and den(b) of row i − 1.
+  bool same_rhs_scaling(const VectorQ& b, int i) const {
+    return mpz_cmp(mp(scale_[i]), mp(scale_[i - 1])) == 0 &&
+           mpz_cmp(mpq_denref(b[i].backend().data()), mpq_denref(b[i - 1].backend().data())) == 0;
+  }
+
+  // Row i scaled with the factors of row i − 1 when that row was scaled in
+  // words and B's row i has its denominators, one by one (the seating
+  // LCPs' friction rows come in pairs): no division. False, nothing
+  // written, otherwise.
+  bool scale_row_like_previous(const MatrixQ& B, int i) {
+    if (words_row_ != i - 1 || i == 0) return false;
+    for (int j = 0; j < n_; ++j)
+      if (mpz_cmp(mpq_denref(B(i, j).backend().data()), mpq_denref(B(i - 1, j).backend().data())) != 0) return false;
+    mpz_set(mp(scale_[i]), mp(scale_[i - 1]));
+    for (int j = 0; j < n_; ++j) {
+      mpz_mul_ui(mp(at(i, n_ + j)), mpq_numref(B(i, j).backend().data()), word_factors_[j]);
+      mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
+    }
+    words_row_ = i;
+    return true;
+  }
   // The common case, B's row i with denominators whose lcm fits in 64 bits:
   // L_i and each factor L_i/den in machine words, one mpz_mul_ui per entry.
   // False (nothing written) when a denominator or the lcm does not fit.
@@ -88,7 +123,7 @@ class ScaledProblem {
       mpz_srcptr q = mpq_denref(B(i, j).backend().data());
       if (!mpz_fits_ulong_p(q)) return false;
       const unsigned long d = mpz_get_ui(q);
-      if (d == last || L % d == 0) {  // L only grows: a divisor stays one
+      if (d == 1 || d == last || L % d == 0) {  // L only grows: a divisor stays one
         last = d;
         continue;
       }
@@ -99,18 +134,16 @@ class ScaledProblem {
     unsigned long d_last = 1, factor = L;  // L / d_last
     for (int j = 0; j < n_; ++j) {
       const auto* q = B(i, j).backend().data();
-      if (mpq_sgn(q) == 0) {
-        mpz_set_ui(mp(at(i, n_ + j)), 0);
-        continue;
-      }
       const unsigned long d = mpz_get_ui(mpq_denref(q));
       if (d != d_last) {
         d_last = d;
-        factor = L / d;
+        factor = d == 1 ? L : L / d;
       }
+      word_factors_[j] = factor;  // L / den(B(i, j)), for a next row with these denominators
       mpz_mul_ui(mp(at(i, n_ + j)), mpq_numref(q), factor);
       mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
     }
+    words_row_ = i;
     return true;
   }
 
@@ -125,6 +158,9 @@ class ScaledProblem {
   std::vector<Integer> scale_;
   Integer delta_;
   Integer zero_;
+  Integer factor_;
+  std::vector<unsigned long> word_factors_;  // of row words_row_, the last row scaled in words (−1: none)
+  int words_row_ = -1;
 };
 
 }  // namespace fixel::internal
