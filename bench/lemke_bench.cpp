@@ -253,7 +253,8 @@ void report_filtered_agreement() {
             << " problems differ from forced exact Lemke; decisions certified " << c.certified << ", exact fallback "
             << c.fallbacks << "; exact ties proved by a null vector " << ties.certified << ", not proved "
             << ties.fallbacks << "; final values by p-adic lifting " << values.dixon << ", from the factored block "
-            << values.factored << "\n";
+            << values.factored << " (lifting steps " << values.lifting_steps << ", reconstructions tried "
+            << values.reconstructions << ")\n";
 }
 
 // Per-problem times: each problem solved `reps` times by each solver in

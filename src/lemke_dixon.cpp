@@ -49,7 +49,7 @@ struct Workspace {
   std::vector<mp_limb_t> lu, inverse_pivot, digit, rhs;
   std::vector<int> swaps;
   std::vector<Integer> residual, lifted, candidate;
-  Integer modulus, half, t, combination;
+  Integer modulus, half, t, combination, factor;
 };
 
 Workspace& workspace() {
@@ -158,38 +158,114 @@ bool small_denominator(const Integer& d, Workspace& ws) {
   return mpz_cmp(mp(ws.t), mp(ws.half)) < 0;
 }
 
+// The denominator of the reconstruction of a mod M whose value is at most
+// `bound` in magnitude, and that value's double: FLINT's search in the box
+// |n| ≤ N, d ≤ D with D = 2^e, N = 2^(m−2−e), m the bits of M and e =
+// ⌊(m − 3 − b)/2⌋, b the bits of ⌈bound⌉ + 1. Then 2ND = 2^(m−1) < M (M is
+// odd), so the answer is unique, and N ≥ bound·D. Such a value is found
+// once M > 8(bound + 1)·den², where the balanced search needs
+// M > 2·max(num, den)²: about |value| times fewer for large values. Powers
+// of two spare the square root. False if there is none.
+bool reconstruct_denominator_bounded(const Integer& a, double bound, Workspace& ws, Integer& den, double& value) {
+  if (!(bound >= 0 && bound < 0x1p1000)) return false;
+  const long m = static_cast<long>(mpz_sizeinbase(mp(ws.modulus), 2));
+  const long b = std::ilogb(std::ceil(bound) + 1) + 1;
+  const long e = (m - 3 - b) / 2;
+  if (m - 3 - b < 0) return false;
+  Fmpz residue, modulus, num_bound, den_bound;
+  Fmpq q;
+  fmpz_one(den_bound.v);
+  fmpz_mul_2exp(den_bound.v, den_bound.v, static_cast<ulong>(e));
+  fmpz_one(num_bound.v);
+  fmpz_mul_2exp(num_bound.v, num_bound.v, static_cast<ulong>(m - 2 - e));
+  fmpz_set_mpz(residue.v, mp(a));
+  fmpz_set_mpz(modulus.v, mp(ws.modulus));
+  if (!fmpq_reconstruct_fmpz_2(q.v, residue.v, modulus.v, num_bound.v, den_bound.v)) return false;
+  fmpz_get_mpz(mp(den), fmpq_denref(q.v));
+  value = fmpq_get_d(q.v);
+  return true;
+}
+
+// Whether `value` lies in [lo, hi] up to 2⁻³⁰ of `magnitude` ≥ |lo|, |hi|
+// (the doubles' own errors are near 2⁻⁵²): a filter in front of the exact
+// check, so its roundings can cost time, never an answer.
+bool within(double value, double lo, double hi, double magnitude) {
+  const double slack = 0x1p-30 * magnitude;
+  return value >= lo - slack && value <= hi + slack;
+}
+
+// Whether v/d lies in the hint's enclosure of x_j.
+bool plausible(const Integer& v, const Integer& d, const DixonHint& hint, int j) {
+  const double lo = hint.lo[j], hi = hint.hi[j];
+  return within(mpz_get_d(mp(v)) / mpz_get_d(mp(d)), lo, hi, std::max(std::abs(lo), std::abs(hi)));
+}
+
 // With x ≡ lifted (mod M): d from the rational reconstruction of a fixed
 // combination of the x_j (usually the lcm of their denominators), then
-// each u_j = d·x_j as the symmetric residue mod M. A u_j with |u_j|·d ≥ M/2
-// means d lacks a factor of x_j's denominator: x_j·d is reconstructed and
-// d grows by its denominator (at most k times). Last, the exact check; the
-// size test before it only keeps garbage from reaching it.
+// each u_j = d·x_j as the symmetric residue mod M. A u_j that fails the
+// test below means d lacks a factor of x_j's denominator (or M is still
+// too small): x_j·d is reconstructed and d grows by its denominator (at
+// most k times). Last, the exact check; the test before it only keeps
+// garbage from reaching it. With a hint, the combination's reconstruction
+// is bounded by the hint's magnitude and the test is the hint's
+// enclosure; without, both are balanced: |u_j|·max(d, 2⁶⁴) < M/2.
 bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
-                 std::vector<Integer>& u, Integer& d, Workspace& ws) {
+                 std::vector<Integer>& u, Integer& d, Workspace& ws, const DixonHint* hint) {
   mpz_set_ui(mp(ws.combination), 0);
   for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
   mpz_mod(mp(ws.combination), mp(ws.combination), mp(ws.modulus));
   mpz_fdiv_q_2exp(mp(ws.half), mp(ws.modulus), 1);
-  if (!reconstruct_denominator(ws.combination, ws, d) || !small_denominator(d, ws)) return false;
+  if (hint != nullptr) {
+    // The combination's enclosure from the hint's; a reconstruction
+    // outside it is garbage (M still too small), dropped before any u_j.
+    double bound = 0, lo = 0, hi = 0;  // bound ≥ |Σ (j + 1) x_j|
+    for (int j = 0; j < k; ++j) {
+      bound += (j + 1) * std::max(std::abs(hint->lo[j]), std::abs(hint->hi[j]));
+      lo += (j + 1) * hint->lo[j];
+      hi += (j + 1) * hint->hi[j];
+    }
+    double value = 0;
+    if (!reconstruct_denominator_bounded(ws.combination, bound, ws, d, value) || !within(value, lo, hi, bound))
+      return false;
+  } else if (!reconstruct_denominator(ws.combination, ws, d) || !small_denominator(d, ws)) {
+    return false;
+  }
   ws.candidate.resize(k);
   for (int grown = 0, j = 0; j < k; ++j) {
     Integer& v = ws.candidate[j];
     mpz_mul(mp(v), mp(ws.lifted[j]), mp(d));
     mpz_mod(mp(v), mp(v), mp(ws.modulus));
     if (mpz_cmp(mp(v), mp(ws.half)) > 0) mpz_sub(mp(v), mp(v), mp(ws.modulus));
-    // |u_j|·max(d, 2⁶⁴) < M/2: the 64-bit floor keeps a random residue
-    // from passing when d is small (it then passes with odds below 2⁻⁶³).
-    if (mpz_sizeinbase(mp(d), 2) > 64)
-      mpz_mul(mp(ws.t), mp(v), mp(d));
-    else
-      mpz_mul_2exp(mp(ws.t), mp(v), 64);
-    mpz_abs(mp(ws.t), mp(ws.t));
-    if (mpz_cmp(mp(ws.t), mp(ws.half)) < 0) continue;
+    if (hint != nullptr) {
+      if (plausible(v, d, *hint, j)) continue;
+    } else {
+      // The 64-bit floor keeps a random residue from passing when d is
+      // small (it then passes with odds below 2⁻⁶³).
+      if (mpz_sizeinbase(mp(d), 2) > 64)
+        mpz_mul(mp(ws.t), mp(v), mp(d));
+      else
+        mpz_mul_2exp(mp(ws.t), mp(v), 64);
+      mpz_abs(mp(ws.t), mp(ws.t));
+      if (mpz_cmp(mp(ws.t), mp(ws.half)) < 0) continue;
+    }
     if (grown++ == k) return false;
     if (mpz_sgn(mp(v)) < 0) mpz_add(mp(v), mp(v), mp(ws.modulus));
-    if (!reconstruct_denominator(v, ws, ws.t) || mpz_cmp_ui(mp(ws.t), 1) == 0) return false;
-    mpz_mul(mp(d), mp(d), mp(ws.t));
-    if (!small_denominator(d, ws)) return false;
+    if (hint != nullptr) {
+      // x_j·d's reconstruction, bounded by the hint and inside its
+      // enclosure (times d), else M is still too small.
+      const double scale = mpz_get_d(mp(d));
+      const double lo = hint->lo[j] * scale, hi = hint->hi[j] * scale;
+      const double bound = std::max(std::abs(lo), std::abs(hi));
+      double value = 0;
+      if (!reconstruct_denominator_bounded(v, bound, ws, ws.factor, value) || mpz_cmp_ui(mp(ws.factor), 1) == 0 ||
+          !within(value, lo, hi, bound))
+        return false;
+      mpz_mul(mp(d), mp(d), mp(ws.factor));
+    } else {
+      if (!reconstruct_denominator(v, ws, ws.t) || mpz_cmp_ui(mp(ws.t), 1) == 0) return false;
+      mpz_mul(mp(d), mp(d), mp(ws.t));
+      if (!small_denominator(d, ws)) return false;
+    }
     j = -1;  // d changed: every u_j again
   }
   if (!solves(k, c, y, ws.candidate, d, ws)) return false;
@@ -219,8 +295,13 @@ int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<co
 }  // namespace
 
 bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
-                 std::vector<Integer>& u, Integer& d) {
+                 std::vector<Integer>& u, Integer& d, const DixonHint* hint, DixonTrace* trace) {
   if (k < 0 || c.size() != static_cast<std::size_t>(k) * k || y.size() != static_cast<std::size_t>(k)) return false;
+  if (hint != nullptr && (hint->lo.size() != static_cast<std::size_t>(k) || hint->hi.size() != hint->lo.size()))
+    hint = nullptr;  // not this system's: ignored
+  DixonTrace ignored;
+  DixonTrace& record = trace != nullptr ? *trace : ignored;
+  record = DixonTrace{};
   Workspace& ws = workspace();
   if (k == 0) {
     u.clear();
@@ -241,8 +322,10 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       mpz_set_ui(mp(ws.lifted[a]), 0);
     }
     mpz_set_ui(mp(ws.modulus), 1);
+    record = DixonTrace{};
     // Invariant: C·lifted + modulus·residual = y, lifted < modulus entrywise.
     for (int step = 0; step < limit; ++step) {
+      ++record.steps;
       for (int a = 0; a < k; ++a) ws.rhs[a] = residue(ws.residual[a], mod);
       solve_mod(k, mod, ws);
       for (int a = 0; a < k; ++a) {
@@ -253,7 +336,13 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
         mpz_divexact_ui(mp(ws.residual[a]), mp(ws.residual[a]), prime);
       }
       mpz_mul_ui(mp(ws.modulus), mp(ws.modulus), prime);
-      if (step >= 1 && reconstruct(k, c, y, u, d, ws)) return true;
+      // With a hint, from the first step on (a one-limb reconstruction is
+      // cheap); the last step without it, where Hadamard's bound promises
+      // the balanced reconstruction success.
+      const bool last = step + 1 == limit;
+      if (hint == nullptr && step == 0) continue;
+      ++record.attempts;
+      if (reconstruct(k, c, y, u, d, ws, last ? nullptr : hint)) return true;
     }
     return false;  // beyond the bound: not expected (p ∤ det C), and the caller solves another way
   }

@@ -14,7 +14,7 @@ namespace fixel::internal {
 
 namespace {
 
-std::atomic<long> g_dixon_values{0}, g_factored_values{0};
+std::atomic<long> g_dixon_values{0}, g_factored_values{0}, g_lifting_steps{0}, g_reconstructions{0};
 
 // Exact basic values at a basis β: row t holds num_t/den, or
 // num_t/(den·L_i) when its basic variable is w_i; den > 0.
@@ -271,7 +271,10 @@ class ExactTableau {
 // the block's rows because dixon_solve accepts only u with C·u = d·y in
 // integers, each basic w's row because that row defines its value. So
 // only the signs and the basis are left to check (the caller's).
-bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, BasicValues& out) {
+// [rhs_lo_t, rhs_hi_t] encloses the basic value of tableau row t (the
+// interval tableau's b column): dixon_solve's hint, once scaled by δ.
+bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, const std::vector<double>& rhs_lo,
+                        const std::vector<double>& rhs_hi, BasicValues& out) {
   const int n = P.n();
   thread_local std::vector<int> rows, block_rows;
   thread_local std::vector<const Integer*> block, rhs;
@@ -298,7 +301,20 @@ bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, B
     for (int c = 0; c < k; ++c) block[static_cast<std::size_t>(a) * k + c] = &P.entry(rows[a], basis[block_rows[c]]);
     rhs[a] = &P.entry(rows[a], 2 * n + 1);
   }
-  if (!dixon_solve(k, block, rhs, u, d)) return false;
+  // The block's unknowns are δ times the basic z's.
+  thread_local DixonHint hint;
+  const double delta = mpz_get_d(mp(P.rhs_factor()));
+  hint.lo.resize(k);
+  hint.hi.resize(k);
+  for (int c = 0; c < k; ++c) {
+    hint.lo[c] = rhs_lo[block_rows[c]] * delta;
+    hint.hi[c] = rhs_hi[block_rows[c]] * delta;
+  }
+  DixonTrace trace;
+  const bool solved = dixon_solve(k, block, rhs, u, d, &hint, &trace);
+  g_lifting_steps += trace.steps;
+  g_reconstructions += trace.attempts;
+  if (!solved) return false;
   out.num.resize(n);
   for (int c = 0; c < k; ++c) mpz_set(mp(out.num[block_rows[c]]), mp(u[c]));
   for (int t = 0; t < n; ++t) {
@@ -534,7 +550,15 @@ class FilteredRun {
       bool checked = false;
       if (!final_ready_) {
         thread_local std::vector<int> row_of;
-        checked = dixon_basic_values(problem(), T_.basis(), final_) &&
+        thread_local std::vector<double> rhs_lo, rhs_hi;
+        rhs_lo.resize(n_);
+        rhs_hi.resize(n_);
+        for (int t = 0; t < n_; ++t) {
+          const FI x = T_.at(t, T_.rhs());
+          rhs_lo[t] = x.inf();
+          rhs_hi[t] = x.sup();
+        }
+        checked = dixon_basic_values(problem(), T_.basis(), rhs_lo, rhs_hi, final_) &&
                   complementary_and_nonnegative(n_, T_.basis(), final_, row_of);
         ++(checked ? g_dixon_values : g_factored_values);
       }
@@ -693,11 +717,15 @@ bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, Lem
   return true;
 }
 
-FinalValueCounts final_value_counts() { return {g_dixon_values.load(), g_factored_values.load()}; }
+FinalValueCounts final_value_counts() {
+  return {g_dixon_values.load(), g_factored_values.load(), g_lifting_steps.load(), g_reconstructions.load()};
+}
 
 void reset_final_value_counts() {
   g_dixon_values = 0;
   g_factored_values = 0;
+  g_lifting_steps = 0;
+  g_reconstructions = 0;
 }
 
 bool solves_lcp_at_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis,

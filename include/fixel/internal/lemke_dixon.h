@@ -16,14 +16,30 @@ namespace fixel::internal {
 // when C is singular modulo the last); exposed for tests.
 const std::vector<std::uint64_t>& dixon_primes();
 
+// Enclosures lo_j ≤ x_j ≤ hi_j of the solution, in doubles, when the caller
+// has them (the filtered run's interval tableau does). Only a hint: it
+// decides when reconstruction is tried and which candidates reach the
+// exact check, never what is returned. A wrong hint can make dixon_solve
+// decline, never answer wrongly.
+struct DixonHint {
+  std::vector<double> lo, hi;
+};
+
+// What one dixon_solve did, for tests and benchmarks.
+struct DixonTrace {
+  int steps = 0;     // lifting steps made with the prime that answered
+  int attempts = 0;  // reconstructions tried (each a rational reconstruction or more)
+};
+
 // Solves C x = y for the k×k integer matrix C (c[a·k + j] = C(a, j)) and
 // the integer vector y, as x = u/d with one common denominator d > 0.
 // True only when C·u = d·y holds exactly (checked before returning). False
 // when C is singular, or singular modulo every prime tried, or no
 // reconstruction passed that check within the lifting steps that
 // Hadamard's bound says suffice: the caller then solves another way.
-// The pointers must stay valid during the call.
+// The pointers must stay valid during the call. `hint` (k enclosures, or
+// null) lets reconstruction start earlier (docs/theory.md §6).
 bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
-                 std::vector<Integer>& u, Integer& d);
+                 std::vector<Integer>& u, Integer& d, const DixonHint* hint = nullptr, DixonTrace* trace = nullptr);
 
 }  // namespace fixel::internal

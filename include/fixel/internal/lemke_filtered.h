@@ -29,6 +29,7 @@ bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, Lem
 // columns at hand already count in neither. For tests and benchmarks.
 struct FinalValueCounts {
   long dixon = 0, factored = 0;
+  long lifting_steps = 0, reconstructions = 0;  // summed over the dixon runs (DixonTrace)
 };
 FinalValueCounts final_value_counts();
 void reset_final_value_counts();
