@@ -74,23 +74,35 @@ bool TieCertifier::singular(const std::vector<int>& beta, const ApproxProblem& a
   // The full pivot search of each step is fused into the previous step's
   // update (the same row-major order, so the same pivot): the first one
   // is a scan of the whole matrix.
+  // The search keeps the best magnitude in a register and updates it
+  // without branches (data-dependent branches mispredict here); the same
+  // first strict maximum in row-major order, so the same pivot.
   int pr = 0, pc = 0;
+  double best = -1;
+  const auto consider = [&](int r, int c) {
+    const double a = std::abs(M_[idx(r, c)]);
+    const bool better = a > best;
+    best = better ? a : best;
+    pr = better ? r : pr;
+    pc = better ? c : pc;
+  };
   for (int r = 0; r < k; ++r)
-    for (int c = 0; c < k; ++c)
-      if (std::abs(M_[idx(r, c)]) > std::abs(M_[idx(pr, pc)])) pr = r, pc = c;
+    for (int c = 0; c < k; ++c) consider(r, c);
   int rank = 0;
   for (; rank < k; ++rank) {
-    if (!(std::abs(M_[idx(pr, pc)]) > 1e-9 * largest)) break;
+    if (!(best > 1e-9 * largest)) break;
     for (int c = 0; c < k; ++c) std::swap(M_[idx(rank, c)], M_[idx(pr, c)]);
     for (int r = 0; r < k; ++r) std::swap(M_[idx(r, rank)], M_[idx(r, pc)]);
     std::swap(perm_[rank], perm_[pc]);
     pr = pc = rank + 1;
+    best = -1;
+    const double pivot = M_[idx(rank, rank)];
     for (int r = rank + 1; r < k; ++r) {
-      const double f = M_[idx(r, rank)] / M_[idx(rank, rank)];
-      M_[idx(r, rank)] -= f * M_[idx(rank, rank)];
+      const double f = M_[idx(r, rank)] / pivot;
+      M_[idx(r, rank)] -= f * pivot;
       for (int c = rank + 1; c < k; ++c) {
         M_[idx(r, c)] -= f * M_[idx(rank, c)];
-        if (std::abs(M_[idx(r, c)]) > std::abs(M_[idx(pr, pc)])) pr = r, pc = c;
+        consider(r, c);
       }
     }
   }
