@@ -356,8 +356,7 @@ class IntervalTableau {
     basis_.resize(n_);
     slot_.assign(2 * n_ + 2, -1);
     stamp_.assign(width_, 0);
-    eta_.clear();
-    eta_row_.clear();
+    forget_pivots();
     // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
     for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
     slot_[rhs()] = n_ + 1;
@@ -400,9 +399,15 @@ class IntervalTableau {
     bring_up_to_date(ks);
     const int leaving = basis_[r];
     eta_.resize(static_cast<std::size_t>(pivots_ + 1) * n_);
-    for (int i = 0; i < n_; ++i) eta_[static_cast<std::size_t>(pivots_) * n_ + i] = at_slot(i, ks);
+    eta_support_start_.push_back(static_cast<int>(eta_support_.size()));
+    for (int i = 0; i < n_; ++i) {
+      const FI f = at_slot(i, ks);
+      eta_[static_cast<std::size_t>(pivots_) * n_ + i] = f;
+      if (i != r && !(f.inf() == 0 && f.sup() == 0)) eta_support_.push_back(i);
+    }
     eta_row_.push_back(r);
     const FI inverse = FI(1) / at_slot(r, ks);
+    eta_inverse_.push_back(inverse);
     at_slot(r, ks) = inverse;
     for (int i = 0; i < n_; ++i) {
       if (i == r) continue;
@@ -420,19 +425,29 @@ class IntervalTableau {
  private:
   FI& at_slot(int i, int k) { return T_[static_cast<std::size_t>(i) * width_ + k]; }
 
+  void forget_pivots() {
+    eta_.clear();
+    eta_row_.clear();
+    eta_inverse_.clear();
+    eta_support_.clear();
+    eta_support_start_.clear();
+  }
+
   // Applies the pivots made since slot k was last read, in order, with the
-  // operations of a Gauss–Jordan step on that column (row r divided by p,
-  // then row i less T(i, s)·(new row r), exact zeros skipped), so its
-  // enclosures are bit for bit those of the eager update.
+  // operations of a Gauss–Jordan step on that column (row r times the
+  // pivot's reciprocal, the interval the pivot column got, then row i less
+  // T(i, s)·(new row r) for the rows where T(i, s) is not an exact zero),
+  // so its enclosures are bit for bit those of an eager update.
   void bring_up_to_date(int k) {
     for (int t = stamp_[k]; t < pivots_; ++t) {
       const FI* f = &eta_[static_cast<std::size_t>(t) * n_];
       const int r = eta_row_[t];
-      const FI x = at_slot(r, k) / f[r];
+      const FI x = at_slot(r, k) * eta_inverse_[t];
       at_slot(r, k) = x;
       if (x.inf() == 0 && x.sup() == 0) continue;
-      for (int i = 0; i < n_; ++i) {
-        if (i == r || (f[i].inf() == 0 && f[i].sup() == 0)) continue;
+      const int end = t + 1 < pivots_ ? eta_support_start_[t + 1] : static_cast<int>(eta_support_.size());
+      for (int e = eta_support_start_[t]; e < end; ++e) {
+        const int i = eta_support_[e];
         at_slot(i, k) -= f[i] * x;
       }
     }
@@ -442,8 +457,7 @@ class IntervalTableau {
   // Brings every column up to date and forgets the pivots.
   void flush() {
     for (int k = 0; k < width_; ++k) bring_up_to_date(k);
-    eta_.clear();
-    eta_row_.clear();
+    forget_pivots();
     pivots_ = 0;
     stamp_.assign(width_, 0);
   }
@@ -465,9 +479,9 @@ class IntervalTableau {
   // The vectors' storage, reused from run to run (one per thread; a run
   // does not nest another).
   struct Storage {
-    std::vector<FI> T, eta;
+    std::vector<FI> T, eta, eta_inverse;
     std::vector<double> initial;
-    std::vector<int> basis, slot, stamp, eta_row;
+    std::vector<int> basis, slot, stamp, eta_row, eta_support, eta_support_start;
   };
   static Storage& storage() {
     thread_local Storage s;
@@ -476,13 +490,18 @@ class IntervalTableau {
 
   int n_, width_;
   Storage& storage_ = storage();
-  std::vector<FI>& T_ = storage_.T;                  // row-major, width_ slots per row
-  std::vector<double>& initial_ = storage_.initial;  // the first tableau's slots, approximately
-  std::vector<int>& basis_ = storage_.basis;         // basic variable of each row
-  std::vector<int>& slot_ = storage_.slot;           // storage slot of each nonbasic variable (and b), else −1
-  std::vector<int>& stamp_ = storage_.stamp;         // per slot: how many pivots its column has seen
-  std::vector<FI>& eta_ = storage_.eta;              // per pivot: the entering column before it (n entries)
-  std::vector<int>& eta_row_ = storage_.eta_row;     // per pivot: its row
+  std::vector<FI>& T_ = storage_.T;                      // row-major, width_ slots per row
+  std::vector<double>& initial_ = storage_.initial;      // the first tableau's slots, approximately
+  std::vector<int>& basis_ = storage_.basis;             // basic variable of each row
+  std::vector<int>& slot_ = storage_.slot;               // storage slot of each nonbasic variable (and b), else −1
+  std::vector<int>& stamp_ = storage_.stamp;             // per slot: how many pivots its column has seen
+  std::vector<FI>& eta_ = storage_.eta;                  // per pivot: the entering column before it (n entries)
+  std::vector<int>& eta_row_ = storage_.eta_row;         // per pivot: its row
+  std::vector<FI>& eta_inverse_ = storage_.eta_inverse;  // per pivot: 1/p, p its pivot
+  // Per pivot t, from eta_support_start_[t]: the rows i ≠ r whose T(i, s)
+  // is not an exact zero, the only rows its update changes.
+  std::vector<int>& eta_support_ = storage_.eta_support;
+  std::vector<int>& eta_support_start_ = storage_.eta_support_start;
   int pivots_ = 0;
 };
 
