@@ -254,7 +254,8 @@ void report_filtered_agreement() {
             << c.fallbacks << "; exact ties proved by a null vector " << ties.certified << ", not proved "
             << ties.fallbacks << "; final values by p-adic lifting " << values.dixon << ", from the factored block "
             << values.factored << " (lifting steps " << values.lifting_steps << ", reconstructions tried "
-            << values.reconstructions << ")\n";
+            << values.reconstructions << "); z0-row decisions settled by the final values " << values.z0_settled
+            << ", runs repeated " << values.z0_reruns << "\n";
 }
 
 // Per-problem times: each problem solved `reps` times by each solver in

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <boost/container/small_vector.hpp>
+#include <limits>
 #include <vector>
 
 #include "fixel/error.h"
@@ -15,6 +16,8 @@ namespace fixel::internal {
 namespace {
 
 std::atomic<long> g_dixon_values{0}, g_factored_values{0}, g_lifting_steps{0}, g_reconstructions{0};
+std::atomic<long> g_z0_settled{0}, g_z0_reruns{0};
+std::atomic<bool> g_defer_every_z0_comparison{false};
 
 // Exact basic values at a basis β: row t holds num_t/den, or
 // num_t/(den·L_i) when its basic variable is w_i; den > 0.
@@ -509,13 +512,28 @@ class IntervalTableau {
 // from the intervals when they certify it, else from the exact tableau at the
 // current basis (built lazily, dropped at each pivot). So the pivots, and the
 // final basis, are the exact run's.
+//
+// One decision may be settled later instead: the z0 row against another row
+// in a ratio test when the intervals cannot order their ratios. The z0 row
+// wins ties, so "the z0 row wins" is right iff no candidate's ratio is
+// below the z0 row's, iff every basic value after pivoting on it is ≥ 0;
+// and that pivot is the last. So with `settle_z0_by_values` the run takes
+// the z0 row, finds the final values exactly as always, and their exact
+// signs settle the decision (docs/theory.md §6). A negative value means it
+// was wrong: settlement_failed() says so and the caller runs again
+// without settling (the decision is then proved or made exactly).
 class FilteredRun {
  public:
-  FilteredRun(const MatrixQ& B, const VectorQ& b) : B_(B), b_(b), n_(static_cast<int>(b.size())), T_(B, b) {}
+  FilteredRun(const MatrixQ& B, const VectorQ& b, bool settle_z0_by_values = false)
+      : B_(B), b_(b), n_(static_cast<int>(b.size())), T_(B, b), settle_z0_(settle_z0_by_values) {}
   ~FilteredRun() {
     record_filter(FilterSite::kLemke, certified_, exact_);
     record_filter(FilterSite::kLemkeTie, ties_proved_, ties_unproved_);
   }
+
+  // Whether the last run's values showed a z0-row decision wrong: `result`
+  // is then not set, and the run must be repeated without settling.
+  bool settlement_failed() const { return settlement_failed_; }
 
   // With `values` false (filtered_lemke_path) the run stops at the final
   // basis: no exact values, w and z left empty.
@@ -546,6 +564,7 @@ class FilteredRun {
         status = LemkeStatus::kRayTermination;
         break;
       }
+      final_settles_ = z0_taken_unordered_;  // then r is the z0 row: the last pivot
       const int leaving = T_.basic(r);
       // The last pivot: when this basis's exact columns are at hand (the z0
       // row usually wins a tie), the final values follow from them.
@@ -559,16 +578,12 @@ class FilteredRun {
       if (leaving == T_.z0()) break;
       entering = T_.complement(leaving);
     }
-    result = LemkeResult{};
-    result.status = status;
-    result.pivots = pivots;
     if (status == LemkeStatus::kSolved && values) {
-      // Dixon's values first (their equations hold by construction); the
-      // factored block when lifting declines or a value is negative (never
-      // seen: the intervals certified the final basis's signs).
-      bool checked = false;
+      // Dixon's values first (their equations hold by construction, so only
+      // signs and basis are checked); the factored block when lifting
+      // declines, with the full check.
+      bool equations_hold = false;
       if (!final_ready_) {
-        thread_local std::vector<int> row_of;
         thread_local std::vector<double> rhs_lo, rhs_hi;
         rhs_lo.resize(n_);
         rhs_hi.resize(n_);
@@ -577,16 +592,27 @@ class FilteredRun {
           rhs_lo[t] = x.inf();
           rhs_hi[t] = x.sup();
         }
-        checked = dixon_basic_values(problem(), T_.basis(), rhs_lo, rhs_hi, final_) &&
-                  complementary_and_nonnegative(n_, T_.basis(), final_, row_of);
-        ++(checked ? g_dixon_values : g_factored_values);
+        equations_hold = dixon_basic_values(problem(), T_.basis(), rhs_lo, rhs_hi, final_);
+        ++(equations_hold ? g_dixon_values : g_factored_values);
+        if (!equations_hold) exact().basic_values(T_.rhs(), final_);
       }
-      if (!checked) {
-        if (!final_ready_) exact().basic_values(T_.rhs(), final_);
+      thread_local std::vector<int> row_of;
+      const bool solves = equations_hold ? complementary_and_nonnegative(n_, T_.basis(), final_, row_of)
+                                         : solves_lcp_at_basis(exact_workspace().problem, T_.basis(), final_);
+      if (final_settles_) ++(solves ? g_z0_settled : g_z0_reruns);
+      if (!solves) {
+        if (final_settles_) {  // a negative value: the z0 row should not have won
+          settlement_failed_ = true;
+          return true;
+        }
         // Never report a wrong "solved" (the exact path uses is_solution).
-        if (!solves_lcp_at_basis(exact_workspace().problem, T_.basis(), final_))
-          throw InternalError("solve_lcp_lemke: the filtered run's final values fail the exact check of the equations");
+        throw InternalError("solve_lcp_lemke: the filtered run's final values fail the exact check of the equations");
       }
+    }
+    result = LemkeResult{};
+    result.status = status;
+    result.pivots = pivots;
+    if (status == LemkeStatus::kSolved && values) {
       result.w.resize(n_);
       result.z.resize(n_);
       for (int t = 0; t < n_; ++t) {
@@ -661,17 +687,50 @@ class FilteredRun {
   // whose entry sign the intervals leave open go last, and one that
   // certainly loses to the best so far, whatever that sign is, needs no
   // exact sign (docs/theory.md §6).
+  //
+  // With settling on, an unordered comparison of the z0 row with another
+  // row is taken as a z0 win (z0_taken_unordered_). That holds only if the
+  // z0 row is still best at the end; otherwise the test runs again with
+  // every decision made.
   int ratio_test(int s) {
+    z0_taken_unordered_ = false;
+    const int best = ratio_test_once(s, settle_z0_);
+    if (!z0_taken_unordered_ || T_.basic(best) == T_.z0()) return best;
+    z0_taken_unordered_ = false;
+    return ratio_test_once(s, false);
+  }
+
+  //
+  // Rows with a certainly positive entry first, each with an enclosure of
+  // its ratio; a row whose ratio is certainly above another's (its
+  // enclosure starts above the least upper end) cannot be the minimum, so
+  // it is dropped before any pairwise comparison: ties among rows that
+  // lose anyway are never proved.
+  int ratio_test_once(int s, bool settle_z0) {
     int best = -1;
-    boost::container::small_vector<int, 16> open;
+    boost::container::small_vector<int, 16> open, positive;
+    boost::container::small_vector<FI, 16> ratio;
+    double least_upper = std::numeric_limits<double>::infinity();
     for (int i = 0; i < n_; ++i) {
-      const int sign = certain_sign(T_.at(i, s));
+      const FI entry = T_.at(i, s);
+      const int sign = certain_sign(entry);
       if (sign == kUndecided) {
         open.push_back(i);
         continue;
       }
       ++certified_;
-      if (sign > 0) consider(i, best, s);
+      if (sign <= 0) continue;
+      positive.push_back(i);
+      ratio.push_back(T_.at(i, T_.rhs()) / entry);
+      least_upper = std::min(least_upper, ratio.back().sup());
+    }
+    for (std::size_t a = 0; a < positive.size(); ++a) {
+      const bool kept_for_tests = g_defer_every_z0_comparison && T_.basic(positive[a]) == T_.z0();
+      if (ratio[a].inf() > least_upper && !kept_for_tests) {
+        ++certified_;
+        continue;
+      }
+      consider(positive[a], best, s, settle_z0);
     }
     for (const int i : open) {
       if (best >= 0 && certainly_loses(i, best, s)) {
@@ -679,15 +738,30 @@ class FilteredRun {
         continue;
       }
       ++exact_;
-      if (exact().entry_sign(i, s) > 0) consider(i, best, s);
+      if (exact().entry_sign(i, s) > 0) consider(i, best, s, settle_z0);
     }
     return best;
   }
 
   // Row i (entry T(i, s) > 0) against the best row so far.
-  void consider(int i, int& best, int s) {
+  void consider(int i, int& best, int s, bool settle_z0) {
     if (best < 0) {
       best = i;
+      return;
+    }
+    const bool z0_row = T_.basic(i) == T_.z0() || T_.basic(best) == T_.z0();
+    if (z0_row && settle_z0) {
+      const int c = g_defer_every_z0_comparison
+                        ? kUndecided
+                        : certain_sign(T_.at(i, T_.rhs()) * T_.at(best, s) - T_.at(best, T_.rhs()) * T_.at(i, s));
+      if (c == kUndecided) {  // the z0 row taken to win; its final values settle it
+        z0_taken_unordered_ = true;
+        if (T_.basic(i) == T_.z0()) best = i;
+        return;
+      }
+      ++certified_;
+      if (c < 0) best = i;
+      if (c == 0 && T_.basic(i) == T_.z0()) best = i;  // a certified tie (exact zeros): the z0 row wins
       return;
     }
     int c = compare_ratio(i, best, T_.rhs(), s);
@@ -716,6 +790,8 @@ class FilteredRun {
   IntervalTableau T_;
   bool scaled_ = false, tableau_current_ = false;
   bool final_ready_ = false;  // final_ holds the final basis's values
+  bool settle_z0_;            // take unordered z0-row comparisons, settle them by the final values
+  bool z0_taken_unordered_ = false, final_settles_ = false, settlement_failed_ = false;
   BasicValues& final_ = exact_workspace().final_values;
   long certified_ = 0, exact_ = 0;
   long ties_proved_ = 0, ties_unproved_ = 0;
@@ -724,9 +800,17 @@ class FilteredRun {
 }  // namespace
 
 bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result) {
-  FilteredRun run(B, b);
+  {
+    // One run at a time: the runs share per-thread storage.
+    FilteredRun run(B, b, true);
+    if (!run.run(max_pivots, result)) return false;
+    if (!run.settlement_failed()) return true;
+  }
+  FilteredRun run(B, b, false);
   return run.run(max_pivots, result);
 }
+
+void set_lemke_leave_every_z0_comparison_unordered(bool on) { g_defer_every_z0_comparison = on; }
 
 bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result,
                          std::vector<int>& basis) {
@@ -737,7 +821,8 @@ bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, Lem
 }
 
 FinalValueCounts final_value_counts() {
-  return {g_dixon_values.load(), g_factored_values.load(), g_lifting_steps.load(), g_reconstructions.load()};
+  return {g_dixon_values.load(),    g_factored_values.load(), g_lifting_steps.load(),
+          g_reconstructions.load(), g_z0_settled.load(),      g_z0_reruns.load()};
 }
 
 void reset_final_value_counts() {
@@ -745,6 +830,8 @@ void reset_final_value_counts() {
   g_factored_values = 0;
   g_lifting_steps = 0;
   g_reconstructions = 0;
+  g_z0_settled = 0;
+  g_z0_reruns = 0;
 }
 
 bool solves_lcp_at_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis,

@@ -222,9 +222,11 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) 
   }
   // Most decisions are certified by the intervals. The exact ratio ties of
   // the friction-cone rows, which no interval can certify, are proved by
-  // integer null vectors (kLemkeTie); the few left over are decided on exact
-  // tableau columns. Here: 129 ties proved and 2 not, so 2 exact fallbacks
-  // where there were 131.
+  // integer null vectors (kLemkeTie) or, when they set the z0 row against
+  // another in the last ratio test of a run with values, settled by the
+  // final values' signs; the few left over are decided on exact tableau
+  // columns. Here the pivot-path runs prove 47 ties and leave none, and the
+  // full runs settle 28 z0-row decisions, none of them wrong.
   const FilterCounts c = filter_stats().at(FilterSite::kLemke);
   const FilterCounts ties = filter_stats().at(FilterSite::kLemkeTie);
   EXPECT_GT(c.certified, c.fallbacks);
@@ -237,6 +239,53 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) 
   EXPECT_GT(values.dixon, problems / 2);
   EXPECT_LE(values.dixon, problems);
   EXPECT_EQ(values.factored, 0);
+  EXPECT_GT(values.z0_settled, 0);
+  EXPECT_EQ(values.z0_reruns, 0);
+}
+
+// The test switch leaves every comparison of the z0 row to the final values
+// and keeps the z0 row in every ratio test where its entry is positive, so
+// the run often ends too early on purpose: a negative final value must then
+// send it to the second run, and the answer must not change.
+GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenEveryZ0RowDecisionIsLeftToTheFinalValues) {
+  ForceExactScope filtered(false);
+  struct Switch {
+    Switch() { internal::set_lemke_leave_every_z0_comparison_unordered(true); }
+    ~Switch() { internal::set_lemke_leave_every_z0_comparison_unordered(false); }
+  } on;
+  internal::reset_final_value_counts();
+  std::mt19937_64 rng(2027);
+  int problems = 0;
+  while (problems < 30) {
+    Scene scene = test::random_scene(rng, 3);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    VectorQ p = S.apex;
+    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+    const TimeSteppingLcp lcp = build_lcp(scene);
+    const VectorQ b = lcp.b(p);
+    expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
+    ++problems;
+  }
+  std::uniform_int_distribution<int> small(-3, 3), size(2, 6);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = size(rng);
+    MatrixQ B(n, n);
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) {
+      b[i] = Rational(small(rng), 1 + trial % 4);
+      for (int j = 0; j < n; ++j) B(i, j) = Rational(small(rng), 1 + trial % 3);
+      B(i, i) += 4;  // mostly P-matrices, so that most runs solve
+    }
+    expect_same(solve_lcp_lemke(B, b), solve_forced_exact(B, b), trial);
+  }
+  const internal::FinalValueCounts values = internal::final_value_counts();
+  EXPECT_GT(values.z0_settled, 0);
+  EXPECT_GT(values.z0_reruns, 0);
 }
 
 GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {

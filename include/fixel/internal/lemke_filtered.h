@@ -13,7 +13,9 @@ namespace fixel::internal {
 // the fraction-free integer tableau. Returns false, with `result` untouched,
 // only when a pivot element's interval contains zero (the caller then runs
 // the exact tableau); otherwise sets `result` (exact w, z when solved).
-// Records the decisions in FilterSite::kLemke.
+// Records the decisions in FilterSite::kLemke. A comparison of the z0 row
+// that the intervals leave open may be settled by the final values' exact
+// signs (a second run when they show it wrong): same answer.
 bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result);
 
 // The same run without its final values, for the benchmark that measures
@@ -27,12 +29,22 @@ bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, Lem
 // reset: by dixon_solve (internal/lemke_dixon.h), or from the factored
 // basis block when it declined. Runs that had the final basis's exact
 // columns at hand already count in neither. For tests and benchmarks.
+//
+// z0_settled and z0_reruns count the runs whose last pivot rested on a
+// comparison of the z0 row that the intervals left open: settled by the
+// final values' signs, or rerun because a value was negative.
 struct FinalValueCounts {
   long dixon = 0, factored = 0;
   long lifting_steps = 0, reconstructions = 0;  // summed over the dixon runs (DixonTrace)
+  long z0_settled = 0, z0_reruns = 0;
 };
 FinalValueCounts final_value_counts();
 void reset_final_value_counts();
+
+// For tests: every comparison of the z0 row with another row in a ratio
+// test is left to the final values, as if the intervals could never order
+// them, so that both outcomes of settling run. Answers must not change.
+void set_lemke_leave_every_z0_comparison_unordered(bool on);
 
 // The filtered run's final check, exposed for tests: whether the basic
 // values x_t = num_t/den (num_t/(den·L_i) when basis[t] is w_i, with L_i the
