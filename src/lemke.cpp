@@ -1,5 +1,6 @@
 #include "fixel/lemke.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -178,7 +179,8 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) 
                      "must be square of the size of b (" + std::to_string(n) + ")");
   if (max_pivots <= 0) max_pivots = 100 * (n + 1);
   LemkeResult result;
-  if ((b.array() >= Rational(0)).all()) {  // z = 0 already solves it
+  // z = 0 already solves it when b ≥ 0 (signs read in place: no temporary).
+  if (std::all_of(b.begin(), b.end(), [](const Rational& x) { return mpq_sgn(x.backend().data()) >= 0; })) {
     result.status = LemkeStatus::kSolved;
     result.w = b;
     result.z = VectorQ::Zero(n);
