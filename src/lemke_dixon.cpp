@@ -195,9 +195,14 @@ bool within(double value, double lo, double hi, double magnitude) {
 }
 
 // Whether v/d lies in the hint's enclosure of x_j.
+// v/d is taken from both mantissas and exponents, so that it does not
+// overflow when v and d are beyond double range themselves.
 bool plausible(const Integer& v, const Integer& d, const DixonHint& hint, int j) {
   const double lo = hint.lo[j], hi = hint.hi[j];
-  return within(mpz_get_d(mp(v)) / mpz_get_d(mp(d)), lo, hi, std::max(std::abs(lo), std::abs(hi)));
+  long v_exp = 0, d_exp = 0;
+  const double v_mantissa = mpz_get_d_2exp(&v_exp, mp(v)), d_mantissa = mpz_get_d_2exp(&d_exp, mp(d));
+  const double value = std::ldexp(v_mantissa / d_mantissa, static_cast<int>(std::clamp(v_exp - d_exp, -4000L, 4000L)));
+  return within(value, lo, hi, std::max(std::abs(lo), std::abs(hi)));
 }
 
 // With x ≡ lifted (mod M): d from the rational reconstruction of a fixed
@@ -215,15 +220,18 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
   for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
   mpz_mod(mp(ws.combination), mp(ws.combination), mp(ws.modulus));
   mpz_fdiv_q_2exp(mp(ws.half), mp(ws.modulus), 1);
+  double bound = 0, lo = 0, hi = 0;  // bound ≥ |Σ (j + 1) x_j|, [lo, hi] ∋ Σ (j + 1) x_j
   if (hint != nullptr) {
-    // The combination's enclosure from the hint's; a reconstruction
-    // outside it is garbage (M still too small), dropped before any u_j.
-    double bound = 0, lo = 0, hi = 0;  // bound ≥ |Σ (j + 1) x_j|
     for (int j = 0; j < k; ++j) {
       bound += (j + 1) * std::max(std::abs(hint->lo[j]), std::abs(hint->hi[j]));
       lo += (j + 1) * hint->lo[j];
       hi += (j + 1) * hint->hi[j];
     }
+    if (!(bound < 0x1p1000)) hint = nullptr;  // values beyond doubles (or no enclosure): balanced
+  }
+  if (hint != nullptr) {
+    // A reconstruction outside the combination's enclosure is garbage (M
+    // still too small), dropped before any u_j.
     double value = 0;
     if (!reconstruct_denominator_bounded(ws.combination, bound, ws, d, value) || !within(value, lo, hi, bound))
       return false;
@@ -250,15 +258,15 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
     }
     if (grown++ == k) return false;
     if (mpz_sgn(mp(v)) < 0) mpz_add(mp(v), mp(v), mp(ws.modulus));
-    if (hint != nullptr) {
+    const double scale = mpz_get_d(mp(d));
+    const double lo_j = hint != nullptr ? hint->lo[j] * scale : 0, hi_j = hint != nullptr ? hint->hi[j] * scale : 0;
+    const double bound_j = std::max(std::abs(lo_j), std::abs(hi_j));
+    if (hint != nullptr && bound_j < 0x1p1000) {
       // x_j·d's reconstruction, bounded by the hint and inside its
       // enclosure (times d), else M is still too small.
-      const double scale = mpz_get_d(mp(d));
-      const double lo = hint->lo[j] * scale, hi = hint->hi[j] * scale;
-      const double bound = std::max(std::abs(lo), std::abs(hi));
       double value = 0;
-      if (!reconstruct_denominator_bounded(v, bound, ws, ws.factor, value) || mpz_cmp_ui(mp(ws.factor), 1) == 0 ||
-          !within(value, lo, hi, bound))
+      if (!reconstruct_denominator_bounded(v, bound_j, ws, ws.factor, value) || mpz_cmp_ui(mp(ws.factor), 1) == 0 ||
+          !within(value, lo_j, hi_j, bound_j))
         return false;
       mpz_mul(mp(d), mp(d), mp(ws.factor));
     } else {

@@ -267,6 +267,33 @@ GTEST_TEST(DixonSolve, StopsLiftingEarlierWithAHint) {
   EXPECT_EQ(Rational(u[0], d), Rational(1, 3));
 }
 
+GTEST_TEST(DixonSolve, NeedsNoMoreStepsWithAHintWhenTheValuesAreHuge) {
+  // 200-bit entries: denominators of about 1,000 bits, past double range.
+  // The hint's tests must not overflow into rejecting every candidate
+  // (which would lift on to Hadamard's bound), and an enclosure that is the
+  // whole line is no hint at all.
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 5; ++trial) {
+    const System s = random_system(rng, 5, 200, 0.0);
+    VectorQ x;
+    ASSERT_TRUE(s.reference(x));
+    std::vector<Integer> u;
+    Integer d;
+    DixonTrace plain, hinted, whole_line;
+    ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, nullptr, &plain));
+    const DixonHint hint = hint_from(x);
+    ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, &hint, &hinted));
+    for (int j = 0; j < s.k; ++j) EXPECT_EQ(Rational(u[j], d), x[j]) << "trial " << trial << ", x_" << j;
+    EXPECT_LE(hinted.steps, plain.steps) << "trial " << trial;
+    DixonHint line;
+    line.lo.assign(s.k, -INFINITY);
+    line.hi.assign(s.k, INFINITY);
+    ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, &line, &whole_line));
+    EXPECT_EQ(whole_line.steps, plain.steps) << "trial " << trial;
+    for (int j = 0; j < s.k; ++j) EXPECT_EQ(Rational(u[j], d), x[j]) << "trial " << trial << ", x_" << j;
+  }
+}
+
 GTEST_TEST(DixonSolve, IgnoresAHintOfAnotherSize) {
   System s;
   s.k = 2;
