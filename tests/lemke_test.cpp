@@ -432,38 +432,5 @@ GTEST_TEST(IsSolution, AgreesWithTheRationalDefinitionOnRandomComplementaryPairs
   }
 }
 
-// The filtered run's own final check, on values solved by hand for
-// B = [[1/2, 0], [1, 1]], b = (−1, 1/3): at the basis (z_1, w_2), z_1 = 2 and
-// w_2 = 7/3. Row scales L = (2, 3), so with den = 1 the integers are
-// num = (z_1, 3·w_2) = (2, 7); den = 2 doubles them.
-GTEST_TEST(FilteredLemke, FinalCheckAcceptsTheBasisSolutionAndNothingElse) {
-  MatrixQ B(2, 2);
-  B << Rational(1, 2), 0, 1, 1;
-  VectorQ b(2);
-  b << -1, Rational(1, 3);
-  const std::vector<int> z1_w2 = {2, 1};  // variables: w 0..1, z 2..3, z0 4
-  const auto check = [&](const std::vector<int>& basis, std::vector<Integer> num, Integer den) {
-    return internal::solves_lcp_at_basis(B, b, basis, num, den);
-  };
-  // By hand: z_1 = 2, w_2 = 1·2 + 1/3 = 7/3. B's row 2 has no denominator,
-  // so L_2 = 1 and w_2 = num/(den·1): z_1 = 6/3, w_2 = 7/3.
-  EXPECT_TRUE(check(z1_w2, {6, 7}, 3));
-  EXPECT_TRUE(check(z1_w2, {12, 14}, 6));
-  EXPECT_FALSE(check(z1_w2, {2, 7}, 1));    // w_2 = 7 (L_2 is not 3 = den b_2): row 2 fails
-  EXPECT_FALSE(check(z1_w2, {6, 8}, 3));    // w_2 = 8/3: row 2 fails
-  EXPECT_FALSE(check(z1_w2, {9, 7}, 3));    // z_1 = 3: both rows fail
-  EXPECT_FALSE(check({2, 0}, {6, 0}, 3));   // z_1 and its complement w_1 both basic
-  EXPECT_FALSE(check({2, 4}, {6, 0}, 3));   // z0 still basic
-  EXPECT_FALSE(check({0, 1}, {-6, 1}, 3));  // w = b solves the rows (L_1 = 2), but w_1 = −6/(3·2) < 0
-  EXPECT_FALSE(check(z1_w2, {6, 7}, 0));
-  EXPECT_FALSE(internal::solves_lcp_at_basis(MatrixQ(2, 3), b, z1_w2, {6, 7}, 3));  // B not 2×2: no read past it
-  // The filtered run ends at that basis and returns those values.
-  ForceExactScope filtered(false);
-  const auto r = solve_lcp_lemke(B, b);
-  ASSERT_EQ(r.status, LemkeStatus::kSolved);
-  EXPECT_EQ(r.z, (VectorQ(2) << 2, 0).finished());
-  EXPECT_EQ(r.w, (VectorQ(2) << 0, Rational(7, 3)).finished());
-}
-
 }  // namespace
 }  // namespace fixel

@@ -1,7 +1,9 @@
 #pragma once
 // The filtered Lemke run (src/lemke_filtered.cpp): the exact lexicographic
-// pivot path followed on an interval tableau, with every decision the
-// intervals cannot certify made exactly on columns of the exact tableau.
+// pivot path followed on an interval tableau (internal/lemke_interval.h),
+// with every decision the intervals cannot certify made exactly on columns
+// of the exact tableau, and the final values found exactly
+// (internal/lemke_exact.h).
 #include "fixel/lemke.h"
 #include "fixel/rational.h"
 
@@ -45,12 +47,5 @@ void reset_final_value_counts();
 // test is left to the final values, as if the intervals could never order
 // them, so that both outcomes of settling run. Answers must not change.
 void set_lemke_leave_every_z0_comparison_unordered(bool on);
-
-// The filtered run's final check, exposed for tests: whether the basic
-// values x_t = num_t/den (num_t/(den·L_i) when basis[t] is w_i, with L_i the
-// lcm of the denominators of B's row i) solve LCP(B, b) at the
-// complementary basis `basis` (0..n−1 w, n..2n−1 z, 2n z0), exactly.
-bool solves_lcp_at_basis(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis,
-                         const std::vector<Integer>& num, const Integer& den);
 
 }  // namespace fixel::internal

@@ -1,6 +1,7 @@
 #pragma once
 // The LCP's tableau data scaled to integers, shared by the filtered Lemke
-// run (src/lemke_filtered.cpp) and its tie certificates (src/lemke_tie.cpp).
+// run (src/lemke_filtered.cpp, its exact side src/lemke_exact.cpp) and its
+// tie certificates (src/lemke_tie.cpp).
 #include <gmp.h>
 
 #include <cstddef>

@@ -1,0 +1,108 @@
+#pragma once
+// The filtered Lemke run's interval tableau (src/lemke_interval.cpp): the
+// exact run's tableau enclosed entry by entry, so that most decisions are
+// certified in doubles (docs/theory.md §6). Its hot accessors are inline.
+#include <cstddef>
+#include <vector>
+
+#include "fixel/internal/filtered.h"
+#include "fixel/internal/lemke_tie.h"
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+
+// The same tableau in intervals (Gauss–Jordan on [I, −B, −e | b]): every
+// entry encloses the exact tableau's. It is the integer tableau of
+// src/lemke.cpp up to positive row and column scalings, which change no
+// ratio-test decision. Only the n + 1 nonbasic columns and b are stored: a
+// basic variable's column is a unit vector, and the leaving variable's
+// column takes over the entering one's storage. Needs a Protect scope.
+class IntervalTableau {
+ public:
+  IntervalTableau(const MatrixQ& B, const VectorQ& b);
+
+  // Doubles near the first tableau's entries, for guesses only.
+  ApproxProblem approx() const { return {initial_.data(), n_}; }
+
+  int z0() const { return 2 * n_; }
+  int rhs() const { return 2 * n_ + 1; }
+  int basic(int row) const { return basis_[row]; }
+  const std::vector<int>& basis() const { return basis_; }
+  int complement(int var) const { return var < n_ ? var + n_ : var - n_; }
+
+  // Entry (i, var): a unit-vector entry for a basic variable.
+  FI at(int i, int var) {
+    const int k = slot_[var];
+    if (k < 0) return FI(basis_[i] == var ? 1 : 0);
+    bring_up_to_date(k);
+    return at_slot(i, k);
+  }
+
+  // Pivot on (r, s), s nonbasic; needs a pivot interval that excludes zero.
+  // The leaving variable's column, e_r before, becomes (−T(i, s)/p)_i with
+  // 1/p in row r, and is stored in s's slot. The other columns are updated
+  // when they are next read (bring_up_to_date) or at the flush after 2n
+  // pivots: the path reads b's column and the entering one, and others only
+  // for a lexicographic tie-break.
+  void pivot(int r, int s);
+
+ private:
+  FI& at_slot(int i, int k) { return T_[static_cast<std::size_t>(i) * width_ + k]; }
+
+  void forget_pivots();
+
+  // Applies the pivots made since slot k was last read, in order, with the
+  // operations of a Gauss–Jordan step on that column (row r times the
+  // pivot's reciprocal, the interval the pivot column got, then row i less
+  // T(i, s)·(new row r) for the rows where T(i, s) is not an exact zero),
+  // so its enclosures are bit for bit those of an eager update.
+  void bring_up_to_date(int k) {
+    for (int t = stamp_[k]; t < pivots_; ++t) {
+      const FI* f = &eta_[static_cast<std::size_t>(t) * n_];
+      const int r = eta_row_[t];
+      const FI x = at_slot(r, k) * eta_inverse_[t];
+      at_slot(r, k) = x;
+      if (x.inf() == 0 && x.sup() == 0) continue;
+      const int end = t + 1 < pivots_ ? eta_support_start_[t + 1] : static_cast<int>(eta_support_.size());
+      for (int e = eta_support_start_[t]; e < end; ++e) {
+        const int i = eta_support_[e];
+        at_slot(i, k) -= f[i] * x;
+      }
+    }
+    stamp_[k] = pivots_;
+  }
+
+  // Brings every column up to date and forgets the pivots.
+  void flush();
+
+  // q in an interval: when numerator and denominator are exact doubles, one
+  // interval division (outward rounded), else the shared conversion.
+  static FI enclosure(const Rational& q);
+
+  // The vectors' storage, reused from run to run (one per thread; a run
+  // does not nest another).
+  struct Storage {
+    std::vector<FI> T, eta, eta_inverse;
+    std::vector<double> initial;
+    std::vector<int> basis, slot, stamp, eta_row, eta_support, eta_support_start;
+  };
+  static Storage& storage();
+
+  int n_, width_;
+  Storage& storage_ = storage();
+  std::vector<FI>& T_ = storage_.T;                      // row-major, width_ slots per row
+  std::vector<double>& initial_ = storage_.initial;      // the first tableau's slots, approximately
+  std::vector<int>& basis_ = storage_.basis;             // basic variable of each row
+  std::vector<int>& slot_ = storage_.slot;               // storage slot of each nonbasic variable (and b), else −1
+  std::vector<int>& stamp_ = storage_.stamp;             // per slot: how many pivots its column has seen
+  std::vector<FI>& eta_ = storage_.eta;                  // per pivot: the entering column before it (n entries)
+  std::vector<int>& eta_row_ = storage_.eta_row;         // per pivot: its row
+  std::vector<FI>& eta_inverse_ = storage_.eta_inverse;  // per pivot: 1/p, p its pivot
+  // Per pivot t, from eta_support_start_[t]: the rows i ≠ r whose T(i, s)
+  // is not an exact zero, the only rows its update changes.
+  std::vector<int>& eta_support_ = storage_.eta_support;
+  std::vector<int>& eta_support_start_ = storage_.eta_support_start;
+  int pivots_ = 0;
+};
+
+}  // namespace fixel::internal

@@ -1,0 +1,85 @@
+#include "fixel/internal/lemke_interval.h"
+
+namespace fixel::internal {
+
+IntervalTableau::IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())), width_(n_ + 2) {
+  T_.assign(static_cast<std::size_t>(n_) * width_, FI(0));
+  basis_.resize(n_);
+  slot_.assign(2 * n_ + 2, -1);
+  stamp_.assign(width_, 0);
+  forget_pivots();
+  // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
+  for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
+  slot_[rhs()] = n_ + 1;
+  for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < n_; ++j)
+      if (mpq_sgn(B(i, j).backend().data()) != 0) at_slot(i, j) = -enclosure(B(i, j));  // no Rational(0) temporary
+    at_slot(i, n_) = FI(-1);
+    at_slot(i, n_ + 1) = enclosure(b[i]);
+    basis_[i] = i;
+  }
+  initial_.resize(T_.size());
+  for (std::size_t k = 0; k < T_.size(); ++k) initial_[k] = T_[k].inf();  // width_ = n + 2: ApproxProblem's layout
+}
+
+void IntervalTableau::pivot(int r, int s) {
+  const int ks = slot_[s];
+  bring_up_to_date(ks);
+  const int leaving = basis_[r];
+  eta_.resize(static_cast<std::size_t>(pivots_ + 1) * n_);
+  eta_support_start_.push_back(static_cast<int>(eta_support_.size()));
+  for (int i = 0; i < n_; ++i) {
+    const FI f = at_slot(i, ks);
+    eta_[static_cast<std::size_t>(pivots_) * n_ + i] = f;
+    if (i != r && !(f.inf() == 0 && f.sup() == 0)) eta_support_.push_back(i);
+  }
+  eta_row_.push_back(r);
+  const FI inverse = FI(1) / at_slot(r, ks);
+  eta_inverse_.push_back(inverse);
+  at_slot(r, ks) = inverse;
+  for (int i = 0; i < n_; ++i) {
+    if (i == r) continue;
+    const FI f = at_slot(i, ks);
+    if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
+    at_slot(i, ks) = -f * inverse;
+  }
+  stamp_[ks] = ++pivots_;
+  basis_[r] = s;
+  slot_[leaving] = ks;
+  slot_[s] = -1;
+  if (pivots_ >= 2 * n_) flush();  // bounds the pivots kept, and the work, by the eager update's
+}
+
+void IntervalTableau::forget_pivots() {
+  eta_.clear();
+  eta_row_.clear();
+  eta_inverse_.clear();
+  eta_support_.clear();
+  eta_support_start_.clear();
+}
+
+void IntervalTableau::flush() {
+  for (int k = 0; k < width_; ++k) bring_up_to_date(k);
+  forget_pivots();
+  pivots_ = 0;
+  stamp_.assign(width_, 0);
+}
+
+FI IntervalTableau::enclosure(const Rational& q) {
+  const auto* m = q.backend().data();
+  const mpz_srcptr num = mpq_numref(m), den = mpq_denref(m);
+  constexpr mp_limb_t kExact = mp_limb_t(1) << 53;
+  if (mpz_size(num) <= 1 && mpz_size(den) == 1 && mpz_getlimbn(num, 0) < kExact && mpz_getlimbn(den, 0) < kExact) {
+    const double n = static_cast<double>(mpz_getlimbn(num, 0));
+    const FI quotient = FI(n) / FI(static_cast<double>(mpz_getlimbn(den, 0)));
+    return mpz_sgn(num) < 0 ? -quotient : quotient;
+  }
+  return to_interval(q);
+}
+
+IntervalTableau::Storage& IntervalTableau::storage() {
+  thread_local Storage s;
+  return s;
+}
+
+}  // namespace fixel::internal

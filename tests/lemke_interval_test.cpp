@@ -1,0 +1,95 @@
+#include "fixel/internal/lemke_interval.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "fixel/internal/exact_lu.h"
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+namespace {
+
+// The exact tableau A_β⁻¹ [A | b], A = [I, −B, −e], by Eigen's exact LU (a
+// second method); columns numbered w 0..n−1, z n..2n−1, z0 2n, b 2n+1.
+MatrixQ reference_tableau(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis) {
+  const int n = static_cast<int>(b.size());
+  MatrixQ A = MatrixQ::Zero(n, 2 * n + 2);
+  for (int i = 0; i < n; ++i) {
+    A(i, i) = 1;
+    for (int j = 0; j < n; ++j) A(i, n + j) = -B(i, j);
+    A(i, 2 * n) = -1;
+    A(i, 2 * n + 1) = b[i];
+  }
+  MatrixQ A_beta(n, n);
+  for (int t = 0; t < n; ++t) A_beta.col(t) = A.col(basis[t]);
+  return exact_lu(A_beta).solve(A);
+}
+
+// Whether the interval holds q, compared exactly (a double is a rational).
+bool holds(const FI& x, const Rational& q) { return Rational(x.inf()) <= q && q <= Rational(x.sup()); }
+
+GTEST_TEST(IntervalTableau, EnclosesTheExactTableauAfterEveryPivot) {
+  // Random pivots (on entries the intervals certify nonzero), more than 2n
+  // of them so that the pivots kept are flushed too; after each, every
+  // entry of every column encloses the exact tableau's, and the basis is
+  // the one pivoted to.
+  std::mt19937_64 rng(41);
+  std::uniform_int_distribution<int> num(-9, 9), den(1, 9);
+  int pivots = 0;
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 2 + trial % 5;
+    MatrixQ B(n, n);
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) {
+      b[i] = Rational(num(rng), den(rng));
+      for (int j = 0; j < n; ++j) B(i, j) = (rng() % 3 == 0) ? Rational(0) : Rational(num(rng), den(rng));
+    }
+    Protect rounding;
+    IntervalTableau T(B, b);
+    for (int step = 0; step < 3 * n; ++step) {
+      const int r = static_cast<int>(rng() % n);
+      int s = -1;
+      for (int tries = 0; tries < 4 * n && s < 0; ++tries) {
+        const int v = static_cast<int>(rng() % (2 * n + 1));
+        const bool basic = std::find(T.basis().begin(), T.basis().end(), v) != T.basis().end();
+        if (!basic && certain_sign(T.at(r, v)) != 0 && certain_sign(T.at(r, v)) != kUndecided) s = v;
+      }
+      if (s < 0) continue;
+      T.pivot(r, s);
+      ++pivots;
+      ASSERT_EQ(T.basic(r), s);
+      const MatrixQ exact = reference_tableau(B, b, T.basis());
+      for (int var = 0; var <= T.rhs(); ++var)
+        for (int i = 0; i < n; ++i)
+          ASSERT_TRUE(holds(T.at(i, var), exact(i, var)))
+              << "trial " << trial << ", step " << step << ", entry (" << i << ", " << var << ")";
+    }
+  }
+  EXPECT_GT(pivots, 200);
+}
+
+GTEST_TEST(IntervalTableau, KeepsExactZerosAndPointsExact) {
+  // Integer data: the first tableau is exact, and an entry whose pivot
+  // column entry is an exact zero stays untouched by that pivot.
+  MatrixQ B(2, 2);
+  B << 2, 0, 0, 3;
+  VectorQ b(2);
+  b << -4, 6;
+  Protect rounding;
+  IntervalTableau T(B, b);
+  EXPECT_EQ(T.at(0, 2).inf(), -2);  // −B(0, 0), z_0 is variable n = 2
+  EXPECT_EQ(T.at(0, 2).sup(), -2);
+  EXPECT_EQ(T.at(1, T.rhs()).inf(), 6);
+  T.pivot(0, 2);  // z_0 enters in row 0: row 0 divided by −2
+  const FI value = T.at(0, T.rhs());
+  EXPECT_EQ(value.inf(), 2);  // z_0 = 2, exactly
+  EXPECT_EQ(value.sup(), 2);
+  EXPECT_EQ(T.at(1, T.rhs()).inf(), 6);  // T(1, z_0) was an exact 0: row 1 untouched
+  EXPECT_EQ(T.at(1, T.rhs()).sup(), 6);
+}
+
+}  // namespace
+}  // namespace fixel::internal
