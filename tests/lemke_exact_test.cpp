@@ -11,23 +11,10 @@
 #include "fixel/internal/exact_lu.h"
 #include "fixel/lemke.h"
 #include "fixel/rational.h"
+#include "test_util.h"
 
 namespace fixel::internal {
 namespace {
-
-// [A | b] = [I, −B, −e | b] in rationals, columns numbered as ScaledProblem's
-// variables (w 0..n−1, z n..2n−1, z0 2n, b 2n+1).
-MatrixQ tableau_data(const MatrixQ& B, const VectorQ& b) {
-  const int n = static_cast<int>(b.size());
-  MatrixQ A = MatrixQ::Zero(n, 2 * n + 2);
-  for (int i = 0; i < n; ++i) {
-    A(i, i) = 1;
-    for (int j = 0; j < n; ++j) A(i, n + j) = -B(i, j);
-    A(i, 2 * n) = -1;
-    A(i, 2 * n + 1) = b[i];
-  }
-  return A;
-}
 
 // The reference, by a second method: A_β⁻¹ [A | b] by Eigen's exact LU;
 // false when A_β is singular.
@@ -81,7 +68,7 @@ GTEST_TEST(ExactTableau, GivesTheSignsAndValuesOfTheTableauAtAnyBasis) {
     const int n = 2 + trial % 4;
     const RandomLcp lcp = random_lcp(rng, n);
     const std::vector<int> basis = random_basis(rng, n);
-    const MatrixQ A = tableau_data(lcp.B, lcp.b);
+    const MatrixQ A = test::lemke_tableau_data(lcp.B, lcp.b);
     MatrixQ T;
     if (!reference_tableau(A, basis, T)) continue;
     SCOPED_TRACE("trial " + std::to_string(trial));
@@ -126,7 +113,7 @@ GTEST_TEST(DixonBasicValues, GivesTheBasisValuesWithOrWithoutAUsefulHint) {
     const RandomLcp lcp = random_lcp(rng, n);
     std::vector<int> basis(n);
     for (int i = 0; i < n; ++i) basis[i] = (rng() % 2) ? i : n + i;
-    const MatrixQ A = tableau_data(lcp.B, lcp.b);
+    const MatrixQ A = test::lemke_tableau_data(lcp.B, lcp.b);
     MatrixQ T;
     if (!reference_tableau(A, basis, T)) continue;
     SCOPED_TRACE("trial " + std::to_string(trial));

@@ -8,6 +8,7 @@
 
 #include "fixel/internal/exact_lu.h"
 #include "fixel/rational.h"
+#include "test_util.h"
 
 namespace fixel::internal {
 namespace {
@@ -16,13 +17,7 @@ namespace {
 // second method); columns numbered w 0..n−1, z n..2n−1, z0 2n, b 2n+1.
 MatrixQ reference_tableau(const MatrixQ& B, const VectorQ& b, const std::vector<int>& basis) {
   const int n = static_cast<int>(b.size());
-  MatrixQ A = MatrixQ::Zero(n, 2 * n + 2);
-  for (int i = 0; i < n; ++i) {
-    A(i, i) = 1;
-    for (int j = 0; j < n; ++j) A(i, n + j) = -B(i, j);
-    A(i, 2 * n) = -1;
-    A(i, 2 * n + 1) = b[i];
-  }
+  const MatrixQ A = test::lemke_tableau_data(B, b);
   MatrixQ A_beta(n, n);
   for (int t = 0; t < n; ++t) A_beta.col(t) = A.col(basis[t]);
   return exact_lu(A_beta).solve(A);

@@ -169,6 +169,23 @@ LemkeResult solve_forced_exact(const MatrixQ& B, const VectorQ& b) {
   return solve_lcp_lemke(B, b);
 }
 
+// The seating LCP of a random 3-fixel scene at an impulse around its S, as
+// lemke_bench's problems; false when the scene has no seating set.
+bool random_seating_lcp(std::mt19937_64& rng, TimeSteppingLcp& lcp, VectorQ& b) {
+  const Scene scene = test::random_scene(rng, 3);
+  SeatingSet S;
+  try {
+    S = seating_set(scene);
+  } catch (const Error&) {
+    return false;
+  }
+  VectorQ p = S.apex;
+  for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+  lcp = build_lcp(scene);
+  b = lcp.b(p);
+  return true;
+}
+
 void expect_same(const LemkeResult& a, const LemkeResult& b, int trial) {
   EXPECT_EQ(a.status, b.status) << "trial " << trial;
   EXPECT_EQ(a.pivots, b.pivots) << "trial " << trial;
@@ -183,17 +200,9 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) 
   std::mt19937_64 rng(2026);
   int problems = 0;
   while (problems < 40) {
-    Scene scene = test::random_scene(rng, 3);
-    SeatingSet S;
-    try {
-      S = seating_set(scene);
-    } catch (const Error&) {
-      continue;
-    }
-    VectorQ p = S.apex;
-    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
-    const TimeSteppingLcp lcp = build_lcp(scene);
-    const VectorQ b = lcp.b(p);
+    TimeSteppingLcp lcp;
+    VectorQ b;
+    if (!random_seating_lcp(rng, lcp, b)) continue;
     const LemkeResult solved = solve_lcp_lemke(lcp.B, b);
     expect_same(solved, solve_forced_exact(lcp.B, b), problems);
     if (!(b.array() >= Rational(0)).all()) {
@@ -257,17 +266,9 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenEveryZ0RowDecisionIsLeftT
   std::mt19937_64 rng(2027);
   int problems = 0;
   while (problems < 30) {
-    Scene scene = test::random_scene(rng, 3);
-    SeatingSet S;
-    try {
-      S = seating_set(scene);
-    } catch (const Error&) {
-      continue;
-    }
-    VectorQ p = S.apex;
-    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
-    const TimeSteppingLcp lcp = build_lcp(scene);
-    const VectorQ b = lcp.b(p);
+    TimeSteppingLcp lcp;
+    VectorQ b;
+    if (!random_seating_lcp(rng, lcp, b)) continue;
     expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
     ++problems;
   }

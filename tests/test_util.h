@@ -49,6 +49,21 @@ inline Scene scene_file(const std::string& name) {
   return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
 }
 
+// Lemke's tableau data [A | b] = [I, −B, −e | b] of LCP(B, b) in rationals,
+// columns numbered as the filtered run's variables (w 0..n−1, z n..2n−1,
+// z0 2n, b 2n+1).
+inline MatrixQ lemke_tableau_data(const MatrixQ& B, const VectorQ& b) {
+  const int n = static_cast<int>(b.size());
+  MatrixQ A = MatrixQ::Zero(n, 2 * n + 2);
+  for (int i = 0; i < n; ++i) {
+    A(i, i) = 1;
+    for (int j = 0; j < n; ++j) A(i, n + j) = -B(i, j);
+    A(i, 2 * n) = -1;
+    A(i, 2 * n + 1) = b[i];
+  }
+  return A;
+}
+
 // A rational in [lo, hi] with denominator `den`.
 inline Rational random_rational(std::mt19937_64& rng, int lo, int hi, int den) {
   std::uniform_int_distribution<int> d(lo * den, hi * den);
