@@ -59,8 +59,6 @@ std::vector<int> random_basis(std::mt19937_64& rng, int n) {
   return {all.begin(), all.begin() + n};
 }
 
-int sign_of(const Rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
-
 GTEST_TEST(ExactTableau, GivesTheSignsAndValuesOfTheTableauAtAnyBasis) {
   std::mt19937_64 rng(31);
   int checked = 0;
@@ -78,11 +76,12 @@ GTEST_TEST(ExactTableau, GivesTheSignsAndValuesOfTheTableauAtAnyBasis) {
     E.assign(P, basis);
     const int rhs = 2 * n + 1;
     for (int col = 0; col <= rhs; ++col)
-      for (int t = 0; t < n; ++t) EXPECT_EQ(E.entry_sign(t, col), sign_of(T(t, col))) << "entry " << t << ", " << col;
+      for (int t = 0; t < n; ++t)
+        EXPECT_EQ(E.entry_sign(t, col), fixel::sign(T(t, col))) << "entry " << t << ", " << col;
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j)
         for (int col = 0; col <= rhs; col += 3)
-          EXPECT_EQ(E.cross_sign(i, j, col, n), sign_of(T(i, col) * T(j, n) - T(j, col) * T(i, n)));
+          EXPECT_EQ(E.cross_sign(i, j, col, n), fixel::sign(T(i, col) * T(j, n) - T(j, col) * T(i, n)));
     BasicValues values;
     E.basic_values(rhs, values);
     EXPECT_GT(values.den, 0);
