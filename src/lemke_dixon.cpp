@@ -7,6 +7,7 @@
 #include <flint/ulong_extras.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -44,13 +45,70 @@ struct Fmpq {
   Fmpq& operator=(const Fmpq&) = delete;
 };
 
+// Signed and unsigned 128-bit words (a GCC and Clang extension).
+__extension__ typedef __int128 Int128;
+__extension__ typedef unsigned __int128 UInt128;
+
 // Storage reused from call to call (one per thread).
 struct Workspace {
   std::vector<mp_limb_t> lu, inverse_pivot, digit, rhs;
   std::vector<int> swaps;
   std::vector<Integer> residual, lifted, candidate;
   Integer modulus, half, t, combination, factor;
+  // The word path's system and residual (words() below).
+  std::vector<std::int64_t> c_words;
+  std::vector<Int128> y_words, residual_words;
 };
+
+std::atomic<bool> g_words_allowed{true};
+
+// The word path. With |C(a, j)| < 2^59, |y_a| < 2^125 and k ≤ 16, every
+// residual stays a signed 128-bit integer: before the division by p,
+// |r − Σ_j C(a, j)·digit_j| < 2^125 + 16·2^59·2^62 = 2^126, and after it
+// (p > 2^62) |r| < 2^64. So lifting needs no GMP call at all; on the
+// seating LCPs every block entry has at most 52 bits and y at most 91.
+constexpr int kWordRows = 16;
+constexpr mp_limb_t kWordEntry = mp_limb_t(1) << 59;
+
+// C and y as words into ws (c_words, y_words); false, with
+// nothing promised about ws, when an entry is too large or k > 16.
+bool words(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, Workspace& ws) {
+  if (k > kWordRows || !g_words_allowed) return false;
+  ws.c_words.resize(c.size());
+  for (std::size_t e = 0; e < c.size(); ++e) {
+    const mpz_srcptr z = mp(*c[e]);
+    if (mpz_size(z) > 1) return false;
+    const mp_limb_t m = mpz_getlimbn(z, 0);  // 0 for zero
+    if (m >= kWordEntry) return false;
+    ws.c_words[e] = mpz_sgn(z) < 0 ? -static_cast<std::int64_t>(m) : static_cast<std::int64_t>(m);
+  }
+  ws.y_words.resize(k);
+  for (int a = 0; a < k; ++a) {
+    const mpz_srcptr z = mp(*y[a]);
+    if (mpz_size(z) > 2) return false;
+    const UInt128 m =
+        (static_cast<UInt128>(mpz_getlimbn(z, 1)) << 64) | mpz_getlimbn(z, 0);  // limbs past the size read 0
+    if (m >> 125 != 0) return false;
+    ws.y_words[a] = mpz_sgn(z) < 0 ? -static_cast<Int128>(m) : static_cast<Int128>(m);
+  }
+  return true;
+}
+
+// x mod p in [0, p) for |x| < 2^126 (so its high word is below p).
+mp_limb_t residue(Int128 x, nmod_t mod) {
+  const UInt128 m = x < 0 ? -static_cast<UInt128>(x) : static_cast<UInt128>(x);
+  mp_limb_t r;
+  NMOD_RED2(r, static_cast<mp_limb_t>(m >> 64), static_cast<mp_limb_t>(m), mod);
+  return x < 0 ? nmod_neg(r, mod) : r;
+}
+
+// 1/p modulo 2^128 for odd p, by Newton's iteration (each step doubles the
+// correct low bits, from 3: p·p ≡ 1 mod 8).
+UInt128 inverse_mod_2_128(std::uint64_t p) {
+  UInt128 inverse = p;
+  for (int i = 0; i < 6; ++i) inverse *= 2 - p * inverse;
+  return inverse;
+}
 
 Workspace& workspace() {
   thread_local Workspace ws;
@@ -71,12 +129,19 @@ mp_limb_t residue(const Integer& x, nmod_t mod) {
 // diagonal), with the pivots' inverses from one inversion (Montgomery's
 // batch trick): one n_invmod per factoring instead of k. False if C is
 // singular mod p.
-bool factor_mod(int k, const std::vector<const Integer*>& c, nmod_t mod, Workspace& ws) {
+bool factor_mod(int k, const std::vector<const Integer*>& c, bool in_words, nmod_t mod, Workspace& ws) {
   const auto at = [k](int a, int j) { return static_cast<std::size_t>(a) * k + j; };
   ws.lu.resize(static_cast<std::size_t>(k) * k);
   ws.inverse_pivot.resize(k);
   ws.swaps.resize(k);
-  for (std::size_t e = 0; e < ws.lu.size(); ++e) ws.lu[e] = residue(*c[e], mod);
+  if (in_words) {
+    for (std::size_t e = 0; e < ws.lu.size(); ++e) {  // |C(a, j)| < 2^59 < p
+      const std::int64_t x = ws.c_words[e];
+      ws.lu[e] = x < 0 ? static_cast<mp_limb_t>(x + static_cast<std::int64_t>(mod.n)) : static_cast<mp_limb_t>(x);
+    }
+  } else {
+    for (std::size_t e = 0; e < ws.lu.size(); ++e) ws.lu[e] = residue(*c[e], mod);
+  }
   for (int col = 0; col < k; ++col) {
     int p = col;
     while (p < k && ws.lu[at(p, col)] == 0) ++p;
@@ -128,12 +193,23 @@ void solve_mod(int k, nmod_t mod, Workspace& ws) {
   }
 }
 
-// Whether C·u = d·y exactly.
-bool solves(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+// Whether C·u = d·y exactly (C's entries from c_words when in words).
+bool solves(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, bool in_words,
             const std::vector<Integer>& u, const Integer& d, Workspace& ws) {
   for (int a = 0; a < k; ++a) {
     mpz_mul(mp(ws.t), mp(d), mp(*y[a]));
-    for (int j = 0; j < k; ++j) mpz_submul(mp(ws.t), mp(*c[static_cast<std::size_t>(a) * k + j]), mp(u[j]));
+    for (int j = 0; j < k; ++j) {
+      const std::size_t e = static_cast<std::size_t>(a) * k + j;
+      if (!in_words) {
+        mpz_submul(mp(ws.t), mp(*c[e]), mp(u[j]));
+        continue;
+      }
+      const std::int64_t x = ws.c_words[e];
+      if (x > 0)
+        mpz_submul_ui(mp(ws.t), mp(u[j]), static_cast<unsigned long>(x));
+      else if (x < 0)
+        mpz_addmul_ui(mp(ws.t), mp(u[j]), static_cast<unsigned long>(-x));
+    }
     if (mpz_sgn(mp(ws.t)) != 0) return false;
   }
   return true;
@@ -214,7 +290,7 @@ bool plausible(const Integer& v, const Integer& d, const DixonHint& hint, int j)
 // garbage from reaching it. With a hint, the combination's reconstruction
 // is bounded by the hint's magnitude and the test is the hint's
 // enclosure; without, both are balanced: |u_j|·max(d, 2⁶⁴) < M/2.
-bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, bool in_words,
                  std::vector<Integer>& u, Integer& d, Workspace& ws, const DixonHint* hint) {
   mpz_set_ui(mp(ws.combination), 0);
   for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
@@ -276,7 +352,7 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
     }
     j = -1;  // d changed: every u_j again
   }
-  if (!solves(k, c, y, ws.candidate, d, ws)) return false;
+  if (!solves(k, c, y, in_words, ws.candidate, d, ws)) return false;
   u.resize(k);
   for (int j = 0; j < k; ++j) mpz_swap(mp(u[j]), mp(ws.candidate[j]));
   return true;
@@ -302,6 +378,8 @@ int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<co
 
 }  // namespace
 
+void set_dixon_words_allowed(bool on) { g_words_allowed = on; }
+
 bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
                  std::vector<Integer>& u, Integer& d, const DixonHint* hint, DixonTrace* trace) {
   if (k < 0 || c.size() != static_cast<std::size_t>(k) * k || y.size() != static_cast<std::size_t>(k)) return false;
@@ -316,31 +394,43 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     mpz_set_ui(mp(d), 1);
     return true;
   }
+  const bool in_words = words(k, c, y, ws);
   for (const std::uint64_t prime : dixon_primes()) {
     nmod_t mod;
     nmod_init(&mod, prime);
-    if (!factor_mod(k, c, mod, ws)) continue;  // p divides det C (or C is singular)
+    if (!factor_mod(k, c, in_words, mod, ws)) continue;  // p divides det C (or C is singular)
     const int limit = step_limit(k, c, y, std::log2(static_cast<double>(prime)));
+    const UInt128 prime_inverse = inverse_mod_2_128(prime);
     ws.residual.resize(k);
     ws.lifted.resize(k);
     ws.digit.resize(k);
     ws.rhs.resize(k);
+    ws.residual_words = ws.y_words;
     for (int a = 0; a < k; ++a) {
-      mpz_set(mp(ws.residual[a]), mp(*y[a]));
+      if (!in_words) mpz_set(mp(ws.residual[a]), mp(*y[a]));
       mpz_set_ui(mp(ws.lifted[a]), 0);
     }
     mpz_set_ui(mp(ws.modulus), 1);
     record = DixonTrace{};
+    record.words = in_words;
     // Invariant: C·lifted + modulus·residual = y, lifted < modulus entrywise.
     for (int step = 0; step < limit; ++step) {
       ++record.steps;
-      for (int a = 0; a < k; ++a) ws.rhs[a] = residue(ws.residual[a], mod);
+      for (int a = 0; a < k; ++a)
+        ws.rhs[a] = in_words ? residue(ws.residual_words[a], mod) : residue(ws.residual[a], mod);
       solve_mod(k, mod, ws);
       for (int a = 0; a < k; ++a) {
         mpz_addmul_ui(mp(ws.lifted[a]), mp(ws.modulus), ws.digit[a]);
+        const std::size_t row = static_cast<std::size_t>(a) * k;
+        if (in_words) {
+          // r ← (r − Σ_j C(a, j)·digit_j)/p, exact: times 1/p modulo 2^128.
+          Int128 r = ws.residual_words[a];
+          for (int j = 0; j < k; ++j) r -= static_cast<Int128>(ws.c_words[row + j]) * static_cast<Int128>(ws.digit[j]);
+          ws.residual_words[a] = static_cast<Int128>(static_cast<UInt128>(r) * prime_inverse);
+          continue;
+        }
         for (int j = 0; j < k; ++j)
-          if (ws.digit[j] != 0)
-            mpz_submul_ui(mp(ws.residual[a]), mp(*c[static_cast<std::size_t>(a) * k + j]), ws.digit[j]);
+          if (ws.digit[j] != 0) mpz_submul_ui(mp(ws.residual[a]), mp(*c[row + j]), ws.digit[j]);
         mpz_divexact_ui(mp(ws.residual[a]), mp(ws.residual[a]), prime);
       }
       mpz_mul_ui(mp(ws.modulus), mp(ws.modulus), prime);
@@ -350,7 +440,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       const bool last = step + 1 == limit;
       if (hint == nullptr && step == 0) continue;
       ++record.attempts;
-      if (reconstruct(k, c, y, u, d, ws, last ? nullptr : hint)) return true;
+      if (reconstruct(k, c, y, in_words, u, d, ws, last ? nullptr : hint)) return true;
     }
     return false;  // beyond the bound: not expected (p ∤ det C), and the caller solves another way
   }

@@ -139,6 +139,90 @@ GTEST_TEST(DixonSolve, MovesToTheNextPrimeWhenTheFirstDividesTheDeterminant) {
   expect_reference_solution(s);
 }
 
+GTEST_TEST(DixonSolve, MovesToTheNextPrimeInMachineWordsToo) {
+  // det C = p₀ with entries far below 2^59: the word path must start the
+  // next prime's lifting from y again.
+  const Integer p0(dixon_primes()[0]);
+  const Integer two_31 = Integer(1) << 31;
+  System s;
+  s.k = 2;
+  s.c = {two_31, Integer(-(p0 - two_31 * two_31)), Integer(1), two_31};
+  s.y = {Integer(5), Integer(-7)};
+  std::vector<Integer> u;
+  Integer d;
+  DixonTrace trace;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, nullptr, &trace));
+  EXPECT_TRUE(trace.words);
+  expect_reference_solution(s);
+}
+
+// Solves s in machine words and again with GMP: the same u and d, integer
+// for integer, and the reference's values.
+void expect_words_and_gmp_agree(const System& s, bool words_expected) {
+  std::vector<Integer> u_words, u_gmp;
+  Integer d_words, d_gmp;
+  DixonTrace trace_words, trace_gmp;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u_words, d_words, nullptr, &trace_words));
+  set_dixon_words_allowed(false);
+  const bool solved = dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u_gmp, d_gmp, nullptr, &trace_gmp);
+  set_dixon_words_allowed(true);
+  ASSERT_TRUE(solved);
+  EXPECT_EQ(trace_words.words, words_expected);
+  EXPECT_FALSE(trace_gmp.words);
+  EXPECT_EQ(trace_words.steps, trace_gmp.steps);
+  EXPECT_EQ(d_words, d_gmp);
+  EXPECT_EQ(u_words, u_gmp);
+  expect_reference_solution(s);
+}
+
+GTEST_TEST(DixonSolve, LiftsInMachineWordsWhenTheEntriesAreSmallWithTheAnswersOfGmp) {
+  std::mt19937_64 rng(12);
+  int compared = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const int k = 1 + trial % 12;
+    System s = random_system(rng, k, trial % 2 ? 52 : 58, (trial % 3) * 0.25);  // the seating blocks: ≤ 52 bits
+    for (Integer& y : s.y) y = random_integer(rng, 120, 0.1);
+    VectorQ x;
+    if (!s.reference(x)) continue;
+    SCOPED_TRACE(trial);
+    expect_words_and_gmp_agree(s, true);
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+}
+
+GTEST_TEST(DixonSolve, StaysInMachineWordsAtTheLargestEntriesItAccepts) {
+  // k = 16, |C(a, j)| = 2^59 − 1 and |y_a| = 2^125 − 1, random signs: the
+  // residuals' bound (2^126 before each division) is reached as nearly as
+  // any input can.
+  std::mt19937_64 rng(13);
+  const Integer c_max = (Integer(1) << 59) - 1, y_max = (Integer(1) << 125) - 1;
+  for (int trial = 0; trial < 3; ++trial) {
+    System s;
+    s.k = 16;
+    for (int e = 0; e < 256; ++e) s.c.push_back(rng() & 1 ? c_max : Integer(-c_max));
+    for (int a = 0; a < 16; ++a) s.y.push_back(rng() & 1 ? y_max : Integer(-y_max));
+    VectorQ x;
+    if (!s.reference(x)) continue;
+    SCOPED_TRACE(trial);
+    expect_words_and_gmp_agree(s, true);
+  }
+}
+
+GTEST_TEST(DixonSolve, LiftsWithGmpPastTheWordBounds) {
+  System s;
+  s.k = 2;
+  s.c = {Integer(1) << 59, Integer(1), Integer(1), Integer(3)};
+  s.y = {Integer(1), Integer(1)};
+  expect_words_and_gmp_agree(s, false);  // an entry of 2^59
+  s.c = {Integer(5), Integer(1), Integer(1), Integer(3)};
+  s.y = {Integer(1) << 125, Integer(1)};
+  expect_words_and_gmp_agree(s, false);  // a right-hand side of 2^125
+  std::mt19937_64 rng(14);
+  System large = random_system(rng, 17, 20, 0.0);
+  expect_words_and_gmp_agree(large, false);  // k = 17
+}
+
 GTEST_TEST(DixonSolve, DeclinesWhenEveryPrimeDividesTheDeterminant) {
   const std::vector<std::uint64_t>& primes = dixon_primes();
   System s;

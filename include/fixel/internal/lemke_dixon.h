@@ -27,9 +27,14 @@ struct DixonHint {
 
 // What one dixon_solve did, for tests and benchmarks.
 struct DixonTrace {
-  int steps = 0;     // lifting steps made with the prime that answered
-  int attempts = 0;  // reconstructions tried (each a rational reconstruction or more)
+  int steps = 0;       // lifting steps made with the prime that answered
+  int attempts = 0;    // reconstructions tried (each a rational reconstruction or more)
+  bool words = false;  // whether the lifting ran in machine words (small entries) rather than GMP
 };
+
+// Test switch: with `on` false, dixon_solve lifts with GMP even when the
+// system's entries are small enough for machine words (the default path).
+void set_dixon_words_allowed(bool on);
 
 // Solves C x = y for the k×k integer matrix C (c[a·k + j] = C(a, j)) and
 // the integer vector y, as x = u/d with one common denominator d > 0.
