@@ -97,8 +97,16 @@ bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, c
     // L_i·δ·d·w_i = d·(L_i δ b_i) − Σ_c A(i, β_c)·u_c.
     const int i = basis[t];
     mpz_mul(mp(out.num[t]), mp(d), mp(P.entry(i, 2 * n + 1)));
-    for (int c = 0; c < k; ++c)
-      if (mpz_sgn(mp(u[c])) != 0) mpz_submul(mp(out.num[t]), mp(P.entry(i, basis[block_rows[c]])), mp(u[c]));
+    for (int c = 0; c < k; ++c) {
+      if (mpz_sgn(mp(u[c])) == 0) continue;
+      const mpz_srcptr a = mp(P.entry(i, basis[block_rows[c]]));
+      if (mpz_size(a) > 1)
+        mpz_submul(mp(out.num[t]), a, mp(u[c]));
+      else if (mpz_sgn(a) > 0)  // one limb (the seating LCPs' entries have at most 52 bits)
+        mpz_submul_ui(mp(out.num[t]), mp(u[c]), mpz_getlimbn(a, 0));
+      else if (mpz_sgn(a) < 0)
+        mpz_addmul_ui(mp(out.num[t]), mp(u[c]), mpz_getlimbn(a, 0));
+    }
   }
   mpz_mul(mp(out.den), mp(d), mp(P.rhs_factor()));
   return true;

@@ -145,13 +145,21 @@ class FilteredRun {
     if (status == LemkeStatus::kSolved && values) {
       result.w.resize(n_);
       result.z.resize(n_);
+      // Each value in lowest terms, written straight into the result (den > 0).
+      thread_local Integer den_w, g;
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
+        const mpz_srcptr num = mp(final_.num[t]);
+        if (mpz_sgn(num) == 0) continue;  // the result's 0 already
         auto* q = (v < n_ ? result.w[v] : result.z[v - n_]).backend().data();
-        mpz_set(mpq_numref(q), mp(final_.num[t]));
-        mpz_set(mpq_denref(q), mp(final_.den));
-        if (v < n_) mpz_mul(mpq_denref(q), mpq_denref(q), mp(exact_workspace().problem.scale(v)));
-        mpq_canonicalize(q);
+        mpz_srcptr den = mp(final_.den);
+        if (v < n_) {
+          mpz_mul(mp(den_w), den, mp(exact_workspace().problem.scale(v)));
+          den = mp(den_w);
+        }
+        mpz_gcd(mp(g), num, den);
+        mpz_divexact(mpq_numref(q), num, mp(g));
+        mpz_divexact(mpq_denref(q), den, mp(g));
       }
     }
     return true;
