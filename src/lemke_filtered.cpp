@@ -249,8 +249,11 @@ class FilteredRun {
     boost::container::small_vector<int, 16> open, positive;
     boost::container::small_vector<FI, 16> ratio;
     double least_upper = std::numeric_limits<double>::infinity();
+    const FI* entries = T_.column(s);
+    const FI* values = T_.column(T_.rhs());
+    const std::size_t stride = static_cast<std::size_t>(T_.stride());
     for (int i = 0; i < n_; ++i) {
-      const FI entry = T_.at(i, s);
+      const FI entry = entries[i * stride];
       const int sign = certain_sign(entry);
       if (sign == kUndecided) {
         open.push_back(i);
@@ -259,7 +262,7 @@ class FilteredRun {
       ++certified_;
       if (sign <= 0) continue;
       positive.push_back(i);
-      ratio.push_back(T_.at(i, T_.rhs()) / entry);
+      ratio.push_back(values[i * stride] / entry);
       least_upper = std::min(least_upper, ratio.back().sup());
     }
     for (std::size_t a = 0; a < positive.size(); ++a) {

@@ -38,6 +38,15 @@ class IntervalTableau {
     return at_slot(i, k);
   }
 
+  // Column var (nonbasic, or b) brought up to date: entry i at [i·stride()].
+  // Valid until the next pivot.
+  const FI* column(int var) {
+    const int k = slot_[var];
+    bring_up_to_date(k);
+    return &T_[k];
+  }
+  int stride() const { return width_; }
+
   // Pivot on (r, s), s nonbasic; needs a pivot interval that excludes zero.
   // The leaving variable's column, e_r before, becomes (−T(i, s)/p)_i with
   // 1/p in row r, and is stored in s's slot. The other columns are updated
