@@ -1,7 +1,6 @@
 #include "fixel/internal/lemke_filtered.h"
 
 #include <atomic>
-#include <boost/container/small_vector.hpp>
 #include <limits>
 #include <vector>
 
@@ -246,8 +245,17 @@ class FilteredRun {
   // lose anyway are never proved.
   int ratio_test_once(int s, bool settle_z0) {
     int best = -1;
-    boost::container::small_vector<int, 16> open, positive;
-    boost::container::small_vector<FI, 16> ratio;
+    // Rows of open sign, rows of positive entry and their ratios: n slots
+    // each, reused (a ratio test does not nest another).
+    thread_local std::vector<int> open_rows, positive_rows;
+    thread_local std::vector<FI> ratios;
+    open_rows.resize(n_);
+    positive_rows.resize(n_);
+    ratios.resize(n_);
+    int* const open = open_rows.data();
+    int* const positive = positive_rows.data();
+    FI* const ratio = ratios.data();
+    int opened = 0, positives = 0;
     double least_upper = std::numeric_limits<double>::infinity();
     const FI* entries = T_.column(s);
     const FI* values = T_.column(T_.rhs());
@@ -256,16 +264,17 @@ class FilteredRun {
       const FI entry = entries[i * stride];
       const int sign = certain_sign(entry);
       if (sign == kUndecided) {
-        open.push_back(i);
+        open[opened++] = i;
         continue;
       }
       ++certified_;
       if (sign <= 0) continue;
-      positive.push_back(i);
-      ratio.push_back(values[i * stride] / entry);
-      least_upper = std::min(least_upper, ratio.back().sup());
+      positive[positives] = i;
+      ratio[positives] = values[i * stride] / entry;
+      least_upper = std::min(least_upper, ratio[positives].sup());
+      ++positives;
     }
-    for (std::size_t a = 0; a < positive.size(); ++a) {
+    for (int a = 0; a < positives; ++a) {
       const bool kept_for_tests = g_defer_every_z0_comparison && T_.basic(positive[a]) == T_.z0();
       if (ratio[a].inf() > least_upper && !kept_for_tests) {
         ++certified_;
@@ -273,7 +282,8 @@ class FilteredRun {
       }
       consider(positive[a], best, s, settle_z0);
     }
-    for (const int i : open) {
+    for (int o = 0; o < opened; ++o) {
+      const int i = open[o];
       if (best >= 0 && certainly_loses(i, best, s)) {
         ++certified_;
         continue;
