@@ -20,8 +20,10 @@ namespace fixel::internal {
 const std::vector<std::uint64_t>& dixon_primes() {
   static const std::vector<std::uint64_t> primes = [] {
     std::vector<std::uint64_t> out;
-    ulong p = UWORD(1) << 62;
-    for (int i = 0; i < 3; ++i) out.push_back(p = n_nextprime(p, 1));
+    // The largest primes below 2^62: then a one-step modulus is a small
+    // fmpz for FLINT's reconstruction (no GMP integer behind it).
+    for (ulong p = (UWORD(1) << 62) - 1; out.size() < 3; p -= 2)
+      if (n_is_prime(p)) out.push_back(p);
     return out;
   }();
   return primes;
@@ -65,7 +67,7 @@ std::atomic<bool> g_words_allowed{true};
 // The word path. With |C(a, j)| < 2^59, |y_a| < 2^125 and k ≤ 16, every
 // residual stays a signed 128-bit integer: before the division by p,
 // |r − Σ_j C(a, j)·digit_j| < 2^125 + 16·2^59·2^62 = 2^126, and after it
-// (p > 2^62) |r| < 2^64. So lifting needs no GMP call at all; on the
+// (p > 2^61) |r| < 2^65. So lifting needs no GMP call at all; on the
 // seating LCPs every block entry has at most 52 bits and y at most 91.
 constexpr int kWordRows = 16;
 constexpr mp_limb_t kWordEntry = mp_limb_t(1) << 59;
@@ -94,7 +96,7 @@ bool words(int k, const std::vector<const Integer*>& c, const std::vector<const 
   return true;
 }
 
-// x mod p in [0, p) for |x| < 2^126 (so its high word is below p).
+// x mod p in [0, p) for |x| < 2^125 (so its high word is below p > 2^61).
 mp_limb_t residue(Int128 x, nmod_t mod) {
   const UInt128 m = x < 0 ? -static_cast<UInt128>(x) : static_cast<UInt128>(x);
   mp_limb_t r;
