@@ -209,6 +209,22 @@ void BM_FilteredLemke(benchmark::State& state) {
 }
 BENCHMARK(BM_FilteredLemke)->Repetitions(5)->ReportAggregatesOnly(true);
 
+// The same solves into one LemkeResult reused from solve to solve (the
+// overload for callers solving in a loop): the result's rationals are not
+// allocated anew each time.
+void BM_FilteredLemkeIntoReusedResult(benchmark::State& state) {
+  const auto& all = problems();
+  fixel::ForceExactScope filtered(false);
+  fixel::LemkeResult result;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    fixel::solve_lcp_lemke(all[k].B, all[k].b, result);
+    benchmark::DoNotOptimize(result);
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_FilteredLemkeIntoReusedResult)->Repetitions(5)->ReportAggregatesOnly(true);
+
 // The filtered run's pivot path alone, without its exact final values: what
 // the interval path and its tie certificates cost, a floor for
 // BM_FilteredLemke (docs/performance.md). Every problem here has a negative

@@ -173,23 +173,30 @@ bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const Vec
 }
 
 LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) {
+  LemkeResult result;
+  solve_lcp_lemke(B, b, result, max_pivots);
+  return result;
+}
+
+void solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, LemkeResult& result, int max_pivots) {
   const int n = static_cast<int>(b.size());
   if (B.rows() != n || B.cols() != n)
     throw InputError("B", std::to_string(B.rows()) + "x" + std::to_string(B.cols()),
                      "must be square of the size of b (" + std::to_string(n) + ")");
   if (max_pivots <= 0) max_pivots = 100 * (n + 1);
-  LemkeResult result;
+  result.status = LemkeStatus::kRayTermination;
+  result.pivots = 0;
   // z = 0 already solves it when b ≥ 0 (signs read in place: no temporary).
   if (std::all_of(b.begin(), b.end(), [](const Rational& x) { return mpq_sgn(x.backend().data()) >= 0; })) {
     result.status = LemkeStatus::kSolved;
     result.w = b;
-    result.z = VectorQ::Zero(n);
-    return result;
+    result.z.resize(n);
+    result.z.setZero();
+    return;
   }
 
   if (!force_exact()) {
-    LemkeResult filtered;
-    if (internal::filtered_lemke(B, b, max_pivots, filtered)) return filtered;
+    if (internal::filtered_lemke(B, b, max_pivots, result)) return;
     internal::record_filter(FilterSite::kLemke, 0, 1);  // a pivot interval held zero: the whole run is exact
   }
 
@@ -206,12 +213,16 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) 
   while (true) {
     if (result.pivots >= max_pivots) {
       result.status = LemkeStatus::kPivotLimit;
-      return result;
+      result.w.resize(0);
+      result.z.resize(0);
+      return;
     }
     r = T.ratio_test(entering);
     if (r < 0) {
       result.status = LemkeStatus::kRayTermination;
-      return result;
+      result.w.resize(0);
+      result.z.resize(0);
+      return;
     }
     const int leaving = T.basic(r);
     T.pivot(r, entering);
@@ -224,7 +235,6 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) 
   if (!is_solution(B, b, result.w, result.z))
     throw InternalError("solve_lcp_lemke: the final basis fails the independent is_solution check");
   result.status = LemkeStatus::kSolved;
-  return result;
 }
 
 }  // namespace fixel

@@ -138,18 +138,26 @@ class FilteredRun {
         throw InternalError("solve_lcp_lemke: the filtered run's final values fail the exact check of the equations");
       }
     }
-    result = LemkeResult{};
     result.status = status;
     result.pivots = pivots;
-    if (status == LemkeStatus::kSolved && values) {
+    if (status != LemkeStatus::kSolved || !values) {
+      result.w.resize(0);
+      result.z.resize(0);
+    } else {
+      // Into the result's own storage when it has the size already (a
+      // caller solving in a loop): zeros first, then each basic value in
+      // lowest terms, written straight in (den > 0).
       result.w.resize(n_);
       result.z.resize(n_);
-      // Each value in lowest terms, written straight into the result (den > 0).
+      for (int i = 0; i < n_; ++i) {
+        mpq_set_ui(result.w[i].backend().data(), 0, 1);
+        mpq_set_ui(result.z[i].backend().data(), 0, 1);
+      }
       thread_local Integer den_w, g;
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
         const mpz_srcptr num = mp(final_.num[t]);
-        if (mpz_sgn(num) == 0) continue;  // the result's 0 already
+        if (mpz_sgn(num) == 0) continue;
         auto* q = (v < n_ ? result.w[v] : result.z[v - n_]).backend().data();
         mpz_srcptr den = mp(final_.den);
         if (v < n_) {

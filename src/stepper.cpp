@@ -17,11 +17,12 @@ Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, in
   Scene state = scene;  // carries ν^ℓ and ψ^ℓ from step to step
   VectorQ q = VectorQ::Zero(dof);
   Simulation sim;
+  LemkeResult solved;  // reused from step to step
   for (int k = 0; k < steps; ++k) {
     poll(control, "simulate", k, steps, "steps");
     const VectorQ p = k < static_cast<int>(impulses.size()) ? impulses[k] : VectorQ(VectorQ::Zero(dof));
     const TimeSteppingLcp lcp = build_lcp(state);
-    const LemkeResult solved = solve_lcp_lemke(lcp.B, lcp.b(p));
+    solve_lcp_lemke(lcp.B, lcp.b(p), solved);
     if (solved.status != LemkeStatus::kSolved)
       throw UnsupportedError("step " + std::to_string(k + 1), "Lemke ended in " + to_string(solved.status),
                              "and no motion was computed; fixel does not handle this contact situation");

@@ -289,6 +289,43 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenEveryZ0RowDecisionIsLeftT
   EXPECT_GT(values.z0_reruns, 0);
 }
 
+// One LemkeResult reused across a mix of problems (seating LCPs, b ≥ 0,
+// ray terminations, pivot limits, sizes that change), filtered and forced
+// exact: each answer is the returning overload's, field for field, so no
+// value of an earlier problem survives into a later one.
+GTEST_TEST(Lemke, GivesTheSameAnswersIntoOneReusedResult) {
+  std::mt19937_64 rng(2028);
+  std::uniform_int_distribution<int> small(-3, 3), size(1, 5);
+  LemkeResult reused;
+  int solved = 0, unsolved = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    MatrixQ B;
+    VectorQ b;
+    int max_pivots = 0;
+    if (trial < 40) {  // seating LCPs back to back: size 12 each time
+      TimeSteppingLcp lcp;
+      if (!random_seating_lcp(rng, lcp, b)) continue;
+      B = lcp.B;
+    } else {  // size 4, then sizes that change
+      const int n = trial < 100 ? 4 : size(rng);
+      B.resize(n, n);
+      b.resize(n);
+      for (int i = 0; i < n; ++i) {
+        b[i] = Rational(small(rng), 1 + trial % 4);
+        for (int j = 0; j < n; ++j) B(i, j) = Rational(small(rng), 1 + trial % 3);
+      }
+      if (trial % 7 == 0) max_pivots = 2;
+    }
+    ForceExactScope exact(trial % 5 == 0);
+    solve_lcp_lemke(B, b, reused, max_pivots);
+    const LemkeResult fresh = solve_lcp_lemke(B, b, max_pivots);
+    expect_same(reused, fresh, trial);
+    ++(fresh.status == LemkeStatus::kSolved ? solved : unsolved);
+  }
+  EXPECT_GT(solved, 60);
+  EXPECT_GT(unsolved, 10);
+}
+
 GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnDegeneratePsdProblems) {
   ForceExactScope filtered(false);
   std::mt19937_64 rng(17);
