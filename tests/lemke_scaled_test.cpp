@@ -101,6 +101,28 @@ GTEST_TEST(ScaledProblem, ScalesRowsWhoseLcmPassesAMachineWordAsDefined) {
   }
 }
 
+GTEST_TEST(ScaledProblem, ScalesARowWhoseLcmGrowsAfterEarlierQuotientsAsDefined) {
+  // Denominators 2, 3, 2, 4, 6, 1: the lcm grows 2 → 6 → 12 after the
+  // quotients of the first 2 and 3 were taken, so theirs must grow with it
+  // (12/2 = 6, not 6/2 = 3); repeated and dividing ones in between.
+  MatrixQ B(2, 6);
+  B << Rational(1, 2), Rational(1, 3), Rational(-3, 2), Rational(1, 4), Rational(5, 6), Rational(7), Rational(1, 5),
+      Rational(1, 5), Rational(2, 25), Rational(1, 1), Rational(3, 125), Rational(1, 5);
+  MatrixQ square(6, 6);
+  square.setZero();
+  square.topRows(2) = B;
+  VectorQ b = VectorQ::Constant(6, Rational(-1, 3));
+  ScaledProblem P;
+  P.assign(square, b);
+  EXPECT_EQ(P.scale(0), Integer(12));
+  EXPECT_EQ(P.entry(0, 6), Integer(-6));    // z_0: −12·(1/2)
+  EXPECT_EQ(P.entry(0, 7), Integer(-4));    // z_1: −12·(1/3)
+  EXPECT_EQ(P.entry(0, 8), Integer(18));    // z_2: −12·(−3/2)
+  EXPECT_EQ(P.entry(0, 11), Integer(-84));  // z_5: −12·7
+  EXPECT_EQ(P.scale(1), Integer(125));
+  expect_scaled_as_defined(square, b);
+}
+
 GTEST_TEST(ScaledProblem, ForgetsTheLastProblemsRowsWhenReassigned) {
   // One ScaledProblem reused: the second problem's first row must not be
   // scaled with the first problem's last factors.
