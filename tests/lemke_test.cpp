@@ -186,6 +186,19 @@ bool random_seating_lcp(std::mt19937_64& rng, TimeSteppingLcp& lcp, VectorQ& b) 
   return true;
 }
 
+// An n×n LCP of small fractions: entries in [−3, 3] over 1 + trial % 3
+// (B) and 1 + trial % 4 (b), with `diagonal` added to B's diagonal.
+void random_small_lcp(std::mt19937_64& rng, int n, int trial, int diagonal, MatrixQ& B, VectorQ& b) {
+  std::uniform_int_distribution<int> small(-3, 3);
+  B.resize(n, n);
+  b.resize(n);
+  for (int i = 0; i < n; ++i) {
+    b[i] = Rational(small(rng), 1 + trial % 4);
+    for (int j = 0; j < n; ++j) B(i, j) = Rational(small(rng), 1 + trial % 3);
+    B(i, i) += diagonal;
+  }
+}
+
 void expect_same(const LemkeResult& a, const LemkeResult& b, int trial) {
   EXPECT_EQ(a.status, b.status) << "trial " << trial;
   EXPECT_EQ(a.pivots, b.pivots) << "trial " << trial;
@@ -272,16 +285,11 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenEveryZ0RowDecisionIsLeftT
     expect_same(solve_lcp_lemke(lcp.B, b), solve_forced_exact(lcp.B, b), problems);
     ++problems;
   }
-  std::uniform_int_distribution<int> small(-3, 3), size(2, 6);
+  std::uniform_int_distribution<int> size(2, 6);
   for (int trial = 0; trial < 200; ++trial) {
-    const int n = size(rng);
-    MatrixQ B(n, n);
-    VectorQ b(n);
-    for (int i = 0; i < n; ++i) {
-      b[i] = Rational(small(rng), 1 + trial % 4);
-      for (int j = 0; j < n; ++j) B(i, j) = Rational(small(rng), 1 + trial % 3);
-      B(i, i) += 4;  // mostly P-matrices, so that most runs solve
-    }
+    MatrixQ B;
+    VectorQ b;
+    random_small_lcp(rng, size(rng), trial, 4, B, b);  // mostly P-matrices, so that most runs solve
     expect_same(solve_lcp_lemke(B, b), solve_forced_exact(B, b), trial);
   }
   const internal::FinalValueCounts values = internal::final_value_counts();
@@ -295,7 +303,7 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWhenEveryZ0RowDecisionIsLeftT
 // value of an earlier problem survives into a later one.
 GTEST_TEST(Lemke, GivesTheSameAnswersIntoOneReusedResult) {
   std::mt19937_64 rng(2028);
-  std::uniform_int_distribution<int> small(-3, 3), size(1, 5);
+  std::uniform_int_distribution<int> size(1, 5);
   LemkeResult reused;
   int solved = 0, unsolved = 0;
   for (int trial = 0; trial < 150; ++trial) {
@@ -307,13 +315,7 @@ GTEST_TEST(Lemke, GivesTheSameAnswersIntoOneReusedResult) {
       if (!random_seating_lcp(rng, lcp, b)) continue;
       B = lcp.B;
     } else {  // size 4, then sizes that change
-      const int n = trial < 100 ? 4 : size(rng);
-      B.resize(n, n);
-      b.resize(n);
-      for (int i = 0; i < n; ++i) {
-        b[i] = Rational(small(rng), 1 + trial % 4);
-        for (int j = 0; j < n; ++j) B(i, j) = Rational(small(rng), 1 + trial % 3);
-      }
+      random_small_lcp(rng, trial < 100 ? 4 : size(rng), trial, 0, B, b);
       if (trial % 7 == 0) max_pivots = 2;
     }
     ForceExactScope exact(trial % 5 == 0);
