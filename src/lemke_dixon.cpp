@@ -104,6 +104,16 @@ mp_limb_t residue(Int128 x, nmod_t mod) {
   return x < 0 ? nmod_neg(r, mod) : r;
 }
 
+// x mod p for |x| < 2^126: the high word, below 2^62 < 2p, is reduced
+// first (NMOD_RED2 wants it below p).
+mp_limb_t residue_below_2_126(Int128 x, nmod_t mod) {
+  const UInt128 m = x < 0 ? -static_cast<UInt128>(x) : static_cast<UInt128>(x);
+  mp_limb_t high = static_cast<mp_limb_t>(m >> 64), r;
+  if (high >= mod.n) high -= mod.n;
+  NMOD_RED2(r, high, static_cast<mp_limb_t>(m), mod);
+  return r;  // zero or not, as x mod p: the sign does not matter here
+}
+
 // 1/p modulo 2^128 for odd p, by Newton's iteration (each step doubles the
 // correct low bits, from 3: p·p ≡ 1 mod 8).
 UInt128 inverse_mod_2_128(std::uint64_t p) {
@@ -216,6 +226,70 @@ bool solves(int k, const std::vector<const Integer*>& c, const std::vector<const
   }
   return true;
 }
+
+// x modulo 2^128, as two's complement.
+UInt128 low_bits(mpz_srcptr z) {
+  const UInt128 m =
+      (static_cast<UInt128>(mpz_getlimbn(z, 1)) << 64) | mpz_getlimbn(z, 0);  // limbs past the size read 0
+  return mpz_sgn(z) < 0 ? -m : m;
+}
+
+// Bits of |x|: |x| < 2^bits (0 for x = 0).
+long bits(mpz_srcptr z) { return mpz_sgn(z) == 0 ? 0 : static_cast<long>(mpz_sizeinbase(z, 2)); }
+
+// Whether C·u = d·y, given C·u ≡ d·y (mod M): see dixon_accepts. C's
+// entries from c_words when in words.
+bool accepts(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, bool in_words,
+             const std::vector<Integer>& u, const Integer& d, const Integer& modulus, Workspace& ws) {
+  // r = C·u − d·y is a multiple of M. With M odd, r is then 0 if it is
+  // ≡ 0 mod 2^128 (wrapping products of the low words) and |r| < M·2^128,
+  // which sizes show: |r| < k·2^(cb+ub) + 2^(db+yb) ≤ 2^(E+1) with
+  // E = max(cb + ub + ⌈log2 k⌉, db + yb), and M ≥ 2^(mb−1). When the
+  // sizes do not show it, the exact products decide.
+  thread_local std::vector<UInt128> u_low;
+  u_low.resize(k);
+  long cb = 0, ub = 0, yb = 0;
+  for (int j = 0; j < k; ++j) {
+    u_low[j] = low_bits(mp(u[j]));
+    ub = std::max(ub, bits(mp(u[j])));
+  }
+  if (in_words) {
+    std::uint64_t largest = 0;
+    for (const std::int64_t x : ws.c_words) largest |= static_cast<std::uint64_t>(x < 0 ? -x : x);
+    cb = largest == 0 ? 0 : 64 - __builtin_clzll(largest);  // |x| ≤ largest < 2^cb (an upper bound: or of all)
+  } else {
+    for (const Integer* x : c) cb = std::max(cb, bits(mp(*x)));
+  }
+  for (const Integer* x : y) yb = std::max(yb, bits(mp(*x)));
+  long log_k = 0;
+  while ((1L << log_k) < k) ++log_k;
+  const long e = std::max(cb + ub + log_k, bits(mp(d)) + yb);
+  if (!mpz_odd_p(mp(modulus)) || e + 2 > bits(mp(modulus)) + 128) return solves(k, c, y, in_words, u, d, ws);
+  const UInt128 d_low = low_bits(mp(d));
+  for (int a = 0; a < k; ++a) {
+    UInt128 r = -(d_low * low_bits(mp(*y[a])));
+    const std::size_t row = static_cast<std::size_t>(a) * k;
+    if (in_words) {
+      for (int j = 0; j < k; ++j) r += static_cast<UInt128>(static_cast<Int128>(ws.c_words[row + j])) * u_low[j];
+    } else {
+      for (int j = 0; j < k; ++j) r += low_bits(mp(*c[row + j])) * u_low[j];
+    }
+    if (r != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool dixon_accepts(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                   const std::vector<Integer>& u, const Integer& d, const Integer& modulus) {
+  if (k < 0 || c.size() != static_cast<std::size_t>(k) * k || y.size() != static_cast<std::size_t>(k) ||
+      u.size() != static_cast<std::size_t>(k))
+    return false;
+  return accepts(k, c, y, false, u, d, modulus, workspace());
+}
+
+namespace {
 
 // Rational reconstruction of a mod M (0 ≤ a < M): its denominator into
 // `den`, false if there is none.
@@ -354,7 +428,8 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
     }
     j = -1;  // d changed: every u_j again
   }
-  if (!solves(k, c, y, in_words, ws.candidate, d, ws)) return false;
+  // C·u ≡ d·y (mod M) holds by construction: C·x̄ ≡ y and u ≡ d·x̄.
+  if (!accepts(k, c, y, in_words, ws.candidate, d, ws.modulus, ws)) return false;
   u.resize(k);
   for (int j = 0; j < k; ++j) mpz_swap(mp(u[j]), mp(ws.candidate[j]));
   return true;
@@ -416,6 +491,9 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     record = DixonTrace{};
     record.words = in_words;
     // Invariant: C·lifted + modulus·residual = y, lifted < modulus entrywise.
+    // It is checked, not assumed: each division by p is of a number p
+    // is seen to divide (a wrong digit would stop the solve), and the
+    // acceptance test (accepts) relies on it.
     for (int step = 0; step < limit; ++step) {
       ++record.steps;
       for (int a = 0; a < k; ++a)
@@ -428,12 +506,13 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
           // r ← (r − Σ_j C(a, j)·digit_j)/p, exact: times 1/p modulo 2^128.
           Int128 r = ws.residual_words[a];
           for (int j = 0; j < k; ++j) r -= static_cast<Int128>(ws.c_words[row + j]) * static_cast<Int128>(ws.digit[j]);
+          if (residue_below_2_126(r, mod) != 0) return false;  // checked: see the invariant
           ws.residual_words[a] = static_cast<Int128>(static_cast<UInt128>(r) * prime_inverse);
           continue;
         }
         for (int j = 0; j < k; ++j)
           if (ws.digit[j] != 0) mpz_submul_ui(mp(ws.residual[a]), mp(*c[row + j]), ws.digit[j]);
-        mpz_divexact_ui(mp(ws.residual[a]), mp(ws.residual[a]), prime);
+        if (mpz_tdiv_q_ui(mp(ws.residual[a]), mp(ws.residual[a]), prime) != 0) return false;
       }
       mpz_mul_ui(mp(ws.modulus), mp(ws.modulus), prime);
       // With a hint, from the first step on (a one-limb reconstruction is

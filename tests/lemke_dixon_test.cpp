@@ -395,5 +395,64 @@ GTEST_TEST(DixonSolve, IgnoresAHintOfAnotherSize) {
   EXPECT_EQ(Rational(u[1], d), Rational(1, 5));
 }
 
+// The acceptance test takes C·u ≡ d·y (mod M) as given and must tell
+// C·u = d·y from every other residual that congruence allows: one more M
+// in a u_j (a residual that is a nonzero multiple of M), and one more
+// M·2^128 (a residual ≡ 0 mod 2^128 too, which only the size bound can
+// catch). Over moduli large enough for the word test (p^20 always, p³ and
+// p for the smaller systems) and too small for it (3, 1), where the exact
+// products decide.
+GTEST_TEST(DixonAccepts, TellsTheSolutionFromEveryResidualTheCongruenceAllows) {
+  std::mt19937_64 rng(29);
+  const Integer p = Integer(dixon_primes()[0]);
+  const Integer two_128 = Integer(1) << 128;
+  int checked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int k = 1 + trial % 16;
+    const System s = random_system(rng, k, trial % 2 == 0 ? 52 : 90, 0.2);
+    std::vector<Integer> u;
+    Integer d;
+    if (!dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d)) continue;  // singular
+    SCOPED_TRACE(trial);
+    Integer p_20 = 1;
+    for (int e = 0; e < 20; ++e) p_20 *= p;
+    for (const Integer& M : {p_20, Integer(p * p * p), Integer(p), Integer(3), Integer(1)}) {
+      EXPECT_TRUE(dixon_accepts(s.k, s.c_pointers(), s.y_pointers(), u, d, M)) << "M = " << M;
+      for (const Integer& shift : {M, Integer(M * two_128), Integer(-M * two_128)}) {
+        std::vector<Integer> wrong = u;
+        const int j = static_cast<int>(rng() % static_cast<unsigned>(k));
+        wrong[j] += shift;
+        EXPECT_FALSE(dixon_accepts(s.k, s.c_pointers(), s.y_pointers(), wrong, d, M))
+            << "M = " << M << ", u_" << j << " shifted by " << shift;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 200);
+  // Malformed sizes: no answer.
+  std::vector<Integer> u{Integer(1)};
+  EXPECT_FALSE(dixon_accepts(2, {}, {}, u, Integer(1), p));
+}
+
+GTEST_TEST(DixonAccepts, RejectsAResidualOfExactlyMTimes2To128) {
+  // C = (1), d = 1, u = y ± M·2^128: the residual ±M·2^128 is ≡ 0 both
+  // modulo M and modulo 2^128, and |r| = M·2^128 is just outside what the
+  // size bound may admit; a bound looser by 2 bits accepts it.
+  const Integer p = Integer(dixon_primes()[0]);
+  const Integer two_128 = Integer(1) << 128;
+  System s;
+  s.k = 1;
+  s.c = {Integer(1)};
+  s.y = {Integer(12345)};
+  for (const Integer& M : {Integer(1), Integer(3), p, Integer(p * p * p)}) {
+    EXPECT_TRUE(dixon_accepts(1, s.c_pointers(), s.y_pointers(), {s.y[0]}, Integer(1), M)) << "M = " << M;
+    for (const int sign : {1, -1}) {
+      const std::vector<Integer> wrong{s.y[0] + sign * M * two_128};
+      EXPECT_FALSE(dixon_accepts(1, s.c_pointers(), s.y_pointers(), wrong, Integer(1), M))
+          << "M = " << M << ", sign " << sign;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fixel::internal

@@ -36,9 +36,19 @@ struct DixonTrace {
 // system's entries are small enough for machine words (the default path).
 void set_dixon_words_allowed(bool on);
 
+// The acceptance test of dixon_solve, exposed for tests: whether
+// C·u = d·y, for u and d of which C·u ≡ d·y (mod modulus) is known.
+// With an odd modulus M it checks C·u − d·y ≡ 0 mod 2^128 in machine
+// words, which with that congruence and |C·u − d·y| < M·2^128 (shown from
+// the operands' sizes) proves equality; when the sizes do not show it,
+// the exact products decide (docs/theory.md §6). Without the congruence
+// its answer means nothing.
+bool dixon_accepts(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                   const std::vector<Integer>& u, const Integer& d, const Integer& modulus);
+
 // Solves C x = y for the k×k integer matrix C (c[a·k + j] = C(a, j)) and
 // the integer vector y, as x = u/d with one common denominator d > 0.
-// True only when C·u = d·y holds exactly (checked before returning). False
+// True only when C·u = d·y holds exactly (proved before returning). False
 // when C is singular, or singular modulo every prime tried, or no
 // reconstruction passed that check within the lifting steps that
 // Hadamard's bound says suffice: the caller then solves another way.
