@@ -72,36 +72,54 @@ std::atomic<bool> g_words_allowed{true};
 constexpr int kWordRows = 16;
 constexpr mp_limb_t kWordEntry = mp_limb_t(1) << 59;
 
+// |z| modulo 2^128, its two low limbs read without a branch on z's size:
+// a select of pointers, then the loads (the sizes of the values read here
+// follow no pattern a branch predictor could learn).
+UInt128 low_128(mpz_srcptr z) {
+  static const mp_limb_t zero = 0;
+  const int size = z->_mp_size;
+  const mp_limb_t low = *(size != 0 ? z->_mp_d : &zero);
+  const mp_limb_t high = *(size > 1 || size < -1 ? z->_mp_d + 1 : &zero);
+  return (static_cast<UInt128>(high) << 64) | low;
+}
+
 // C and y as words into ws (c_words, y_words); false, with
 // nothing promised about ws, when an entry is too large or k > 16.
 bool words(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, Workspace& ws) {
   if (k > kWordRows || !g_words_allowed) return false;
   ws.c_words.resize(c.size());
+  mp_limb_t too_large = 0;  // any limb count above 1, or magnitude at or above 2^59
   for (std::size_t e = 0; e < c.size(); ++e) {
+    // Without a branch on the entry's sign or zeroness: the blocks' zeros
+    // and signs follow no pattern a branch predictor could learn.
     const mpz_srcptr z = mp(*c[e]);
-    if (mpz_size(z) > 1) return false;
-    const mp_limb_t m = mpz_getlimbn(z, 0);  // 0 for zero
-    if (m >= kWordEntry) return false;
-    ws.c_words[e] = mpz_sgn(z) < 0 ? -static_cast<std::int64_t>(m) : static_cast<std::int64_t>(m);
+    const int size = z->_mp_size;
+    const mp_limb_t m = static_cast<mp_limb_t>(low_128(z));
+    too_large |= static_cast<mp_limb_t>(size > 1 || size < -1) | static_cast<mp_limb_t>(m >= kWordEntry);
+    const std::int64_t negative = size < 0 ? -1 : 0;  // a mask: size >> 31 (compiles without a branch)
+    ws.c_words[e] = (static_cast<std::int64_t>(m) ^ negative) - negative;
   }
+  if (too_large != 0) return false;
   ws.y_words.resize(k);
   for (int a = 0; a < k; ++a) {
     const mpz_srcptr z = mp(*y[a]);
     if (mpz_size(z) > 2) return false;
-    const UInt128 m =
-        (static_cast<UInt128>(mpz_getlimbn(z, 1)) << 64) | mpz_getlimbn(z, 0);  // limbs past the size read 0
-    if (m >> 125 != 0) return false;
-    ws.y_words[a] = mpz_sgn(z) < 0 ? -static_cast<Int128>(m) : static_cast<Int128>(m);
+    const UInt128 m = low_128(z);
+    too_large |= static_cast<mp_limb_t>(m >> 125 != 0);
+    const Int128 negative = z->_mp_size < 0 ? -1 : 0;
+    ws.y_words[a] = (static_cast<Int128>(m) ^ negative) - negative;
   }
-  return true;
+  return too_large == 0;
 }
 
 // x mod p in [0, p) for |x| < 2^125 (so its high word is below p > 2^61).
 mp_limb_t residue(Int128 x, nmod_t mod) {
-  const UInt128 m = x < 0 ? -static_cast<UInt128>(x) : static_cast<UInt128>(x);
+  const UInt128 negative = static_cast<UInt128>(x >> 127);  // all ones for x < 0: masks, no branch
+  const UInt128 m = (static_cast<UInt128>(x) ^ negative) - negative;
   mp_limb_t r;
   NMOD_RED2(r, static_cast<mp_limb_t>(m >> 64), static_cast<mp_limb_t>(m), mod);
-  return x < 0 ? nmod_neg(r, mod) : r;
+  const mp_limb_t flip = static_cast<mp_limb_t>(negative) & (mp_limb_t(0) - static_cast<mp_limb_t>(r != 0));
+  return r ^ ((r ^ (mod.n - r)) & flip);  // p − r for x < 0 and r ≠ 0
 }
 
 // x mod p for |x| < 2^126: the high word, below 2^62 < 2p, is reduced
@@ -136,6 +154,24 @@ mp_limb_t residue(const Integer& x, nmod_t mod) {
   return mpz_sgn(z) < 0 ? nmod_neg(r, mod) : r;
 }
 
+// x mod p for any 128-bit x: the high word reduced first.
+mp_limb_t reduce_128(UInt128 x, nmod_t mod) {
+  mp_limb_t high = static_cast<mp_limb_t>(x >> 64), r;
+  NMOD_RED(high, high, mod);
+  NMOD_RED2(r, high, static_cast<mp_limb_t>(x), mod);
+  return r;
+}
+
+// (a·b + c·e) mod p for residues below p, 2^61 < p < 2^62: the sum of the
+// two products is below 2^125, so its high word is below p and one
+// reduction serves both.
+mp_limb_t mul_add_mod(mp_limb_t a, mp_limb_t b, mp_limb_t c, mp_limb_t e, nmod_t mod) {
+  const UInt128 x = static_cast<UInt128>(a) * b + static_cast<UInt128>(c) * e;
+  mp_limb_t r;
+  NMOD_RED2(r, static_cast<mp_limb_t>(x >> 64), static_cast<mp_limb_t>(x), mod);
+  return r;
+}
+
 // C modulo p reduced to upper triangular U by division-free elimination
 // (row r ← U_cc·row r − C_rc·row c, the multipliers C_rc kept below the
 // diagonal), with the pivots' inverses from one inversion (Montgomery's
@@ -148,8 +184,8 @@ bool factor_mod(int k, const std::vector<const Integer*>& c, bool in_words, nmod
   ws.swaps.resize(k);
   if (in_words) {
     for (std::size_t e = 0; e < ws.lu.size(); ++e) {  // |C(a, j)| < 2^59 < p
-      const std::int64_t x = ws.c_words[e];
-      ws.lu[e] = x < 0 ? static_cast<mp_limb_t>(x + static_cast<std::int64_t>(mod.n)) : static_cast<mp_limb_t>(x);
+      const std::int64_t x = ws.c_words[e];           // p added to a negative x, by a mask: signs are unpredictable
+      ws.lu[e] = static_cast<mp_limb_t>(x) + (static_cast<mp_limb_t>(x >> 63) & mod.n);
     }
   } else {
     for (std::size_t e = 0; e < ws.lu.size(); ++e) ws.lu[e] = residue(*c[e], mod);
@@ -165,8 +201,9 @@ bool factor_mod(int k, const std::vector<const Integer*>& c, bool in_words, nmod
     for (int r = col + 1; r < k; ++r) {
       const mp_limb_t f = ws.lu[at(r, col)];
       if (f == 0) continue;  // row r already eliminated: left unscaled
+      const mp_limb_t minus_f = mod.n - f;
       for (int j = col + 1; j < k; ++j)
-        ws.lu[at(r, j)] = nmod_sub(nmod_mul(pivot, ws.lu[at(r, j)], mod), nmod_mul(f, ws.lu[at(col, j)], mod), mod);
+        ws.lu[at(r, j)] = mul_add_mod(pivot, ws.lu[at(r, j)], minus_f, ws.lu[at(col, j)], mod);
     }
   }
   // inverse_pivot[c] = 1/U_cc: prefix products, one inverse, then back.
@@ -194,14 +231,25 @@ void solve_mod(int k, nmod_t mod, Workspace& ws) {
     const mp_limb_t pivot = ws.lu[at(col, col)];
     for (int r = col + 1; r < k; ++r) {
       const mp_limb_t f = ws.lu[at(r, col)];
-      if (f != 0) ws.rhs[r] = nmod_sub(nmod_mul(pivot, ws.rhs[r], mod), nmod_mul(f, ws.rhs[col], mod), mod);
+      if (f != 0) ws.rhs[r] = mul_add_mod(pivot, ws.rhs[r], mod.n - f, ws.rhs[col], mod);
     }
   }
   for (int r = k; r-- > 0;) {
-    mp_limb_t s = ws.rhs[r];
-    for (int j = r + 1; j < k; ++j)
-      if (ws.lu[at(r, j)] != 0) s = nmod_sub(s, nmod_mul(ws.lu[at(r, j)], ws.digit[j], mod), mod);
-    ws.digit[r] = nmod_mul(s, ws.inverse_pivot[r], mod);
+    // Σ_j U_rj·digit_j in 128 bits: at most 15 products below 2^124 each
+    // (k ≤ 16 on this path; longer rows are reduced in parts).
+    UInt128 sum = 0;
+    int terms = 0;
+    mp_limb_t reduced = 0;
+    for (int j = r + 1; j < k; ++j) {
+      sum += static_cast<UInt128>(ws.lu[at(r, j)]) * ws.digit[j];
+      if (++terms == 15) {
+        reduced = nmod_add(reduced, reduce_128(sum, mod), mod);
+        sum = 0;
+        terms = 0;
+      }
+    }
+    reduced = nmod_add(reduced, reduce_128(sum, mod), mod);
+    ws.digit[r] = nmod_mul(nmod_sub(ws.rhs[r], reduced, mod), ws.inverse_pivot[r], mod);
   }
 }
 
@@ -229,9 +277,8 @@ bool solves(int k, const std::vector<const Integer*>& c, const std::vector<const
 
 // x modulo 2^128, as two's complement.
 UInt128 low_bits(mpz_srcptr z) {
-  const UInt128 m =
-      (static_cast<UInt128>(mpz_getlimbn(z, 1)) << 64) | mpz_getlimbn(z, 0);  // limbs past the size read 0
-  return mpz_sgn(z) < 0 ? -m : m;
+  const UInt128 negative = z->_mp_size < 0 ? ~UInt128(0) : 0;
+  return (low_128(z) ^ negative) - negative;
 }
 
 // Bits of |x|: |x| < 2^bits (0 for x = 0).
