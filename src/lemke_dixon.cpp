@@ -489,12 +489,16 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
 // √(M/2), so p^steps > 2·H_num² suffices. Bits are over-estimated from each
 // row's longest entry in limbs, so the bound stays a bound (a loose one
 // costs nothing unless reconstruction fails).
-int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, double prime_bits) {
+int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, bool in_words,
+               double prime_bits) {
   double num_bits = 0;
   const double half_log_k = 0.5 * std::log2(static_cast<double>(k) + 1);
   for (int a = 0; a < k; ++a) {
     std::size_t row = mpz_size(mp(*y[a]));
-    for (int j = 0; j < k; ++j) row = std::max(row, mpz_size(mp(*c[static_cast<std::size_t>(a) * k + j])));
+    if (in_words)
+      row = std::max<std::size_t>(row, 1);  // every entry of C has at most one limb
+    else
+      for (int j = 0; j < k; ++j) row = std::max(row, mpz_size(mp(*c[static_cast<std::size_t>(a) * k + j])));
     num_bits += 64.0 * static_cast<double>(row) + half_log_k;
   }
   return static_cast<int>(std::ceil((2 * num_bits + 2) / prime_bits)) + 1;
@@ -523,7 +527,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     nmod_t mod;
     nmod_init(&mod, prime);
     if (!factor_mod(k, c, in_words, mod, ws)) continue;  // p divides det C (or C is singular)
-    const int limit = step_limit(k, c, y, std::log2(static_cast<double>(prime)));
+    const int limit = step_limit(k, c, y, in_words, std::log2(static_cast<double>(prime)));
     const UInt128 prime_inverse = inverse_mod_2_128(prime);
     ws.residual.resize(k);
     ws.lifted.resize(k);
