@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "fixel/internal/lemke_dixon_words.h"
 #include "fixel/internal/lemke_scaled.h"
 
 namespace fixel::internal {
@@ -47,210 +48,22 @@ struct Fmpq {
   Fmpq& operator=(const Fmpq&) = delete;
 };
 
-// Signed and unsigned 128-bit words (a GCC and Clang extension).
-__extension__ typedef __int128 Int128;
-__extension__ typedef unsigned __int128 UInt128;
-
 // Storage reused from call to call (one per thread).
 struct Workspace {
-  std::vector<mp_limb_t> lu, inverse_pivot, digit, rhs;
-  std::vector<int> swaps;
+  ModularLu lu;
+  std::vector<mp_limb_t> digit, rhs;
   std::vector<Integer> residual, lifted, candidate;
   Integer modulus, half, t, combination, factor;
-  // The word path's system and residual (words() below).
+  // The word path's system and residual (internal/lemke_dixon_words.h).
   std::vector<std::int64_t> c_words;
   std::vector<Int128> y_words, residual_words;
 };
 
 std::atomic<bool> g_words_allowed{true};
 
-// The word path. With |C(a, j)| < 2^59, |y_a| < 2^125 and k ≤ 16, every
-// residual stays a signed 128-bit integer: before the division by p,
-// |r − Σ_j C(a, j)·digit_j| < 2^125 + 16·2^59·2^62 = 2^126, and after it
-// (p > 2^61) |r| < 2^65. So lifting needs no GMP call at all; on the
-// seating LCPs every block entry has at most 52 bits and y at most 91.
-constexpr int kWordRows = 16;
-constexpr mp_limb_t kWordEntry = mp_limb_t(1) << 59;
-
-// |z| modulo 2^128, its two low limbs read without a branch on z's size:
-// a select of pointers, then the loads (the sizes of the values read here
-// follow no pattern a branch predictor could learn).
-UInt128 low_128(mpz_srcptr z) {
-  static const mp_limb_t zero = 0;
-  const int size = z->_mp_size;
-  const mp_limb_t low = *(size != 0 ? z->_mp_d : &zero);
-  const mp_limb_t high = *(size > 1 || size < -1 ? z->_mp_d + 1 : &zero);
-  return (static_cast<UInt128>(high) << 64) | low;
-}
-
-// C and y as words into ws (c_words, y_words); false, with
-// nothing promised about ws, when an entry is too large or k > 16.
-bool words(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, Workspace& ws) {
-  if (k > kWordRows || !g_words_allowed) return false;
-  ws.c_words.resize(c.size());
-  mp_limb_t too_large = 0;  // any limb count above 1, or magnitude at or above 2^59
-  for (std::size_t e = 0; e < c.size(); ++e) {
-    // Without a branch on the entry's sign or zeroness: the blocks' zeros
-    // and signs follow no pattern a branch predictor could learn.
-    const mpz_srcptr z = mp(*c[e]);
-    const int size = z->_mp_size;
-    const mp_limb_t m = static_cast<mp_limb_t>(low_128(z));
-    too_large |= static_cast<mp_limb_t>(size > 1 || size < -1) | static_cast<mp_limb_t>(m >= kWordEntry);
-    const std::int64_t negative = size < 0 ? -1 : 0;  // a mask: size >> 31 (compiles without a branch)
-    ws.c_words[e] = (static_cast<std::int64_t>(m) ^ negative) - negative;
-  }
-  if (too_large != 0) return false;
-  ws.y_words.resize(k);
-  for (int a = 0; a < k; ++a) {
-    const mpz_srcptr z = mp(*y[a]);
-    if (mpz_size(z) > 2) return false;
-    const UInt128 m = low_128(z);
-    too_large |= static_cast<mp_limb_t>(m >> 125 != 0);
-    const Int128 negative = z->_mp_size < 0 ? -1 : 0;
-    ws.y_words[a] = (static_cast<Int128>(m) ^ negative) - negative;
-  }
-  return too_large == 0;
-}
-
-// x mod p in [0, p) for |x| < 2^125 (so its high word is below p > 2^61).
-mp_limb_t residue(Int128 x, nmod_t mod) {
-  const UInt128 negative = static_cast<UInt128>(x >> 127);  // all ones for x < 0: masks, no branch
-  const UInt128 m = (static_cast<UInt128>(x) ^ negative) - negative;
-  mp_limb_t r;
-  NMOD_RED2(r, static_cast<mp_limb_t>(m >> 64), static_cast<mp_limb_t>(m), mod);
-  const mp_limb_t flip = static_cast<mp_limb_t>(negative) & (mp_limb_t(0) - static_cast<mp_limb_t>(r != 0));
-  return r ^ ((r ^ (mod.n - r)) & flip);  // p − r for x < 0 and r ≠ 0
-}
-
-// x mod p for |x| < 2^126: the high word, below 2^62 < 2p, is reduced
-// first (NMOD_RED2 wants it below p).
-mp_limb_t residue_below_2_126(Int128 x, nmod_t mod) {
-  const UInt128 m = x < 0 ? -static_cast<UInt128>(x) : static_cast<UInt128>(x);
-  mp_limb_t high = static_cast<mp_limb_t>(m >> 64), r;
-  if (high >= mod.n) high -= mod.n;
-  NMOD_RED2(r, high, static_cast<mp_limb_t>(m), mod);
-  return r;  // zero or not, as x mod p: the sign does not matter here
-}
-
-// 1/p modulo 2^128 for odd p, by Newton's iteration (each step doubles the
-// correct low bits, from 3: p·p ≡ 1 mod 8).
-UInt128 inverse_mod_2_128(std::uint64_t p) {
-  UInt128 inverse = p;
-  for (int i = 0; i < 6; ++i) inverse *= 2 - p * inverse;
-  return inverse;
-}
-
 Workspace& workspace() {
   thread_local Workspace ws;
   return ws;
-}
-
-// x mod p in [0, p), limb by limb with FLINT's preinverted reduction
-// (no hardware division).
-mp_limb_t residue(const Integer& x, nmod_t mod) {
-  const mpz_srcptr z = mp(x);
-  mp_limb_t r = 0;
-  for (std::size_t i = mpz_size(z); i-- > 0;) NMOD_RED2(r, r, mpz_getlimbn(z, i), mod);
-  return mpz_sgn(z) < 0 ? nmod_neg(r, mod) : r;
-}
-
-// x mod p for any 128-bit x: the high word reduced first.
-mp_limb_t reduce_128(UInt128 x, nmod_t mod) {
-  mp_limb_t high = static_cast<mp_limb_t>(x >> 64), r;
-  NMOD_RED(high, high, mod);
-  NMOD_RED2(r, high, static_cast<mp_limb_t>(x), mod);
-  return r;
-}
-
-// (a·b + c·e) mod p for residues below p, 2^61 < p < 2^62: the sum of the
-// two products is below 2^125, so its high word is below p and one
-// reduction serves both.
-mp_limb_t mul_add_mod(mp_limb_t a, mp_limb_t b, mp_limb_t c, mp_limb_t e, nmod_t mod) {
-  const UInt128 x = static_cast<UInt128>(a) * b + static_cast<UInt128>(c) * e;
-  mp_limb_t r;
-  NMOD_RED2(r, static_cast<mp_limb_t>(x >> 64), static_cast<mp_limb_t>(x), mod);
-  return r;
-}
-
-// C modulo p reduced to upper triangular U by division-free elimination
-// (row r ← U_cc·row r − C_rc·row c, the multipliers C_rc kept below the
-// diagonal), with the pivots' inverses from one inversion (Montgomery's
-// batch trick): one n_invmod per factoring instead of k. False if C is
-// singular mod p.
-bool factor_mod(int k, const std::vector<const Integer*>& c, bool in_words, nmod_t mod, Workspace& ws) {
-  const auto at = [k](int a, int j) { return static_cast<std::size_t>(a) * k + j; };
-  ws.lu.resize(static_cast<std::size_t>(k) * k);
-  ws.inverse_pivot.resize(k);
-  ws.swaps.resize(k);
-  if (in_words) {
-    for (std::size_t e = 0; e < ws.lu.size(); ++e) {  // |C(a, j)| < 2^59 < p
-      const std::int64_t x = ws.c_words[e];           // p added to a negative x, by a mask: signs are unpredictable
-      ws.lu[e] = static_cast<mp_limb_t>(x) + (static_cast<mp_limb_t>(x >> 63) & mod.n);
-    }
-  } else {
-    for (std::size_t e = 0; e < ws.lu.size(); ++e) ws.lu[e] = residue(*c[e], mod);
-  }
-  for (int col = 0; col < k; ++col) {
-    int p = col;
-    while (p < k && ws.lu[at(p, col)] == 0) ++p;
-    if (p == k) return false;
-    ws.swaps[col] = p;
-    if (p != col)
-      for (int j = 0; j < k; ++j) std::swap(ws.lu[at(p, j)], ws.lu[at(col, j)]);
-    const mp_limb_t pivot = ws.lu[at(col, col)];
-    for (int r = col + 1; r < k; ++r) {
-      const mp_limb_t f = ws.lu[at(r, col)];
-      if (f == 0) continue;  // row r already eliminated: left unscaled
-      const mp_limb_t minus_f = mod.n - f;
-      for (int j = col + 1; j < k; ++j)
-        ws.lu[at(r, j)] = mul_add_mod(pivot, ws.lu[at(r, j)], minus_f, ws.lu[at(col, j)], mod);
-    }
-  }
-  // inverse_pivot[c] = 1/U_cc: prefix products, one inverse, then back.
-  mp_limb_t product = 1;
-  for (int col = 0; col < k; ++col) {
-    ws.inverse_pivot[col] = product;  // U_00 ⋯ U_(c−1)(c−1)
-    product = nmod_mul(product, ws.lu[at(col, col)], mod);
-  }
-  mp_limb_t inverse = n_invmod(product, mod.n);  // a product of nonzero residues mod a prime
-  for (int col = k; col-- > 0;) {
-    ws.inverse_pivot[col] = nmod_mul(ws.inverse_pivot[col], inverse, mod);
-    inverse = nmod_mul(inverse, ws.lu[at(col, col)], mod);
-  }
-  return true;
-}
-
-// digit = C⁻¹ rhs mod p, from factor_mod's factors (rhs is overwritten).
-void solve_mod(int k, nmod_t mod, Workspace& ws) {
-  const auto at = [k](int a, int j) { return static_cast<std::size_t>(a) * k + j; };
-  // The swaps first, then the eliminations: the stored multipliers moved
-  // with their rows at every later swap (as in LAPACK's getrs).
-  for (int col = 0; col < k; ++col)
-    if (ws.swaps[col] != col) std::swap(ws.rhs[col], ws.rhs[ws.swaps[col]]);
-  for (int col = 0; col < k; ++col) {
-    const mp_limb_t pivot = ws.lu[at(col, col)];
-    for (int r = col + 1; r < k; ++r) {
-      const mp_limb_t f = ws.lu[at(r, col)];
-      if (f != 0) ws.rhs[r] = mul_add_mod(pivot, ws.rhs[r], mod.n - f, ws.rhs[col], mod);
-    }
-  }
-  for (int r = k; r-- > 0;) {
-    // Σ_j U_rj·digit_j in 128 bits: at most 15 products below 2^124 each
-    // (k ≤ 16 on this path; longer rows are reduced in parts).
-    UInt128 sum = 0;
-    int terms = 0;
-    mp_limb_t reduced = 0;
-    for (int j = r + 1; j < k; ++j) {
-      sum += static_cast<UInt128>(ws.lu[at(r, j)]) * ws.digit[j];
-      if (++terms == 15) {
-        reduced = nmod_add(reduced, reduce_128(sum, mod), mod);
-        sum = 0;
-        terms = 0;
-      }
-    }
-    reduced = nmod_add(reduced, reduce_128(sum, mod), mod);
-    ws.digit[r] = nmod_mul(nmod_sub(ws.rhs[r], reduced, mod), ws.inverse_pivot[r], mod);
-  }
 }
 
 // Whether C·u = d·y exactly (C's entries from c_words when in words).
@@ -273,12 +86,6 @@ bool solves(int k, const std::vector<const Integer*>& c, const std::vector<const
     if (mpz_sgn(mp(ws.t)) != 0) return false;
   }
   return true;
-}
-
-// x modulo 2^128, as two's complement.
-UInt128 low_bits(mpz_srcptr z) {
-  const UInt128 negative = z->_mp_size < 0 ? ~UInt128(0) : 0;
-  return (low_128(z) ^ negative) - negative;
 }
 
 // Bits of |x|: |x| < 2^bits (0 for x = 0).
@@ -522,11 +329,12 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     mpz_set_ui(mp(d), 1);
     return true;
   }
-  const bool in_words = words(k, c, y, ws);
+  const bool in_words = g_words_allowed && block_in_words(k, c, y, ws.c_words, ws.y_words);
   for (const std::uint64_t prime : dixon_primes()) {
     nmod_t mod;
     nmod_init(&mod, prime);
-    if (!factor_mod(k, c, in_words, mod, ws)) continue;  // p divides det C (or C is singular)
+    if (!(in_words ? ws.lu.factor(k, ws.c_words, mod) : ws.lu.factor(k, c, mod)))
+      continue;  // p divides det C (or C is singular)
     const int limit = step_limit(k, c, y, in_words, std::log2(static_cast<double>(prime)));
     const UInt128 prime_inverse = inverse_mod_2_128(prime);
     ws.residual.resize(k);
@@ -549,7 +357,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       ++record.steps;
       for (int a = 0; a < k; ++a)
         ws.rhs[a] = in_words ? residue(ws.residual_words[a], mod) : residue(ws.residual[a], mod);
-      solve_mod(k, mod, ws);
+      ws.lu.solve(ws.rhs, ws.digit);
       for (int a = 0; a < k; ++a) {
         mpz_addmul_ui(mp(ws.lifted[a]), mp(ws.modulus), ws.digit[a]);
         const std::size_t row = static_cast<std::size_t>(a) * k;

@@ -1,0 +1,117 @@
+#pragma once
+// The machine-word arithmetic of the p-adic lifting (src/lemke_dixon.cpp):
+// residues modulo a prime 2^61 < p < 2^62, 128-bit words, and the block
+// C triangularised modulo p (src/lemke_dixon_words.cpp). Each helper reads
+// its operands without a branch on their signs, sizes or zeros: those
+// follow no pattern a branch predictor could learn, and a mispredicted
+// branch costs more than the arithmetic here (docs/performance.md).
+#include <flint/nmod.h>
+#include <gmp.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "fixel/rational.h"
+
+namespace fixel::internal {
+
+// Signed and unsigned 128-bit words (a GCC and Clang extension).
+__extension__ typedef __int128 Int128;
+__extension__ typedef unsigned __int128 UInt128;
+
+// The word path's bounds. With |C(a, j)| < 2^59, |y_a| < 2^125 and k ≤ 16,
+// every residual of the lifting stays a signed 128-bit integer: before the
+// division by p, |r − Σ_j C(a, j)·digit_j| < 2^125 + 16·2^59·2^62 = 2^126,
+// and after it (p > 2^61) |r| < 2^65.
+constexpr int kWordRows = 16;
+constexpr mp_limb_t kWordEntry = mp_limb_t(1) << 59;
+
+// |z| modulo 2^128 (its two low limbs).
+inline UInt128 low_128(mpz_srcptr z) {
+  // A select of pointers, then the loads: a zero has no limb to read.
+  static const mp_limb_t zero = 0;
+  const int size = z->_mp_size;
+  const mp_limb_t low = *(size != 0 ? z->_mp_d : &zero);
+  const mp_limb_t high = *(size > 1 || size < -1 ? z->_mp_d + 1 : &zero);
+  return (static_cast<UInt128>(high) << 64) | low;
+}
+
+// z modulo 2^128, as two's complement.
+inline UInt128 low_bits(mpz_srcptr z) {
+  const UInt128 negative = z->_mp_size < 0 ? ~UInt128(0) : 0;
+  return (low_128(z) ^ negative) - negative;
+}
+
+// C (k×k, row-major) and y as words, when every |C(a, j)| < 2^59 and
+// |y_a| < 2^125 and k ≤ 16; false otherwise, with the outputs unspecified.
+bool block_in_words(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                    std::vector<std::int64_t>& c_words, std::vector<Int128>& y_words);
+
+// x mod p in [0, p), for |x| < 2^125.
+inline mp_limb_t residue(Int128 x, nmod_t mod) {
+  const UInt128 negative = static_cast<UInt128>(x >> 127);  // all ones for x < 0
+  const UInt128 m = (static_cast<UInt128>(x) ^ negative) - negative;
+  mp_limb_t r;
+  NMOD_RED2(r, static_cast<mp_limb_t>(m >> 64), static_cast<mp_limb_t>(m), mod);  // high word < 2^61 < p
+  const mp_limb_t flip = static_cast<mp_limb_t>(negative) & (mp_limb_t(0) - static_cast<mp_limb_t>(r != 0));
+  return r ^ ((r ^ (mod.n - r)) & flip);  // p − r for x < 0 and r ≠ 0
+}
+
+// |x| mod p, for |x| < 2^126: zero exactly when p divides x.
+inline mp_limb_t residue_below_2_126(Int128 x, nmod_t mod) {
+  const UInt128 negative = static_cast<UInt128>(x >> 127);
+  const UInt128 m = (static_cast<UInt128>(x) ^ negative) - negative;
+  mp_limb_t high = static_cast<mp_limb_t>(m >> 64), r;
+  high -= mod.n & (mp_limb_t(0) - static_cast<mp_limb_t>(high >= mod.n));  // below 2^62 < 2p: NMOD_RED2 wants < p
+  NMOD_RED2(r, high, static_cast<mp_limb_t>(m), mod);
+  return r;
+}
+
+// x mod p in [0, p), for any integer x.
+mp_limb_t residue(const Integer& x, nmod_t mod);
+
+// x mod p in [0, p), for any 128-bit x.
+inline mp_limb_t reduce_128(UInt128 x, nmod_t mod) {
+  mp_limb_t high = static_cast<mp_limb_t>(x >> 64), r;
+  NMOD_RED(high, high, mod);
+  NMOD_RED2(r, high, static_cast<mp_limb_t>(x), mod);
+  return r;
+}
+
+// (a·b + c·e) mod p, for a, b, c, e ≤ p.
+inline mp_limb_t mul_add_mod(mp_limb_t a, mp_limb_t b, mp_limb_t c, mp_limb_t e, nmod_t mod) {
+  // Both products are below 2^124 (p < 2^62), their sum below 2^125: its
+  // high word is below p, so one reduction serves both.
+  const UInt128 x = static_cast<UInt128>(a) * b + static_cast<UInt128>(c) * e;
+  mp_limb_t r;
+  NMOD_RED2(r, static_cast<mp_limb_t>(x >> 64), static_cast<mp_limb_t>(x), mod);
+  return r;
+}
+
+// 1/p modulo 2^128, for odd p.
+UInt128 inverse_mod_2_128(std::uint64_t p);
+
+// A k×k integer matrix C triangularised modulo p, for solving C·x ≡ r
+// (mod p) again and again: division-free elimination (row r ← U_cc·row r −
+// C_rc·row c, the multipliers C_rc kept below the diagonal), the pivots'
+// inverses from one modular inversion (Montgomery's batch trick).
+class ModularLu {
+ public:
+  // C modulo p from words (|C(a, j)| < p), or from integers. False if C is
+  // singular modulo p; then solve() must not be called.
+  bool factor(int k, const std::vector<std::int64_t>& c_words, nmod_t mod);
+  bool factor(int k, const std::vector<const Integer*>& c, nmod_t mod);
+  // digit = C⁻¹·rhs mod p (rhs, k residues, is overwritten).
+  void solve(std::vector<mp_limb_t>& rhs, std::vector<mp_limb_t>& digit) const;
+
+ private:
+  bool eliminate();
+  std::size_t at(int a, int j) const { return static_cast<std::size_t>(a) * k_ + j; }
+
+  int k_ = 0;
+  nmod_t mod_{};
+  std::vector<mp_limb_t> lu_, inverse_pivot_;
+  std::vector<int> swaps_;
+};
+
+}  // namespace fixel::internal

@@ -1,0 +1,234 @@
+#include "fixel/internal/lemke_dixon_words.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "fixel/internal/lemke_dixon.h"
+#include "fixel/internal/lemke_scaled.h"
+
+namespace fixel::internal {
+namespace {
+
+// Every value below is checked against GMP's own arithmetic on the same
+// integers (a second method): mpz_fdiv_r_2exp for the words, mpz_fdiv_r for
+// the residues.
+
+// A signed integer of `bits` random bits (so up to that size), or zero.
+Integer random_integer(std::mt19937_64& rng, int bits) {
+  Integer x = 0;
+  for (int left = bits; left > 0; left -= 32) {
+    const int chunk = left < 32 ? left : 32;
+    x = (x << chunk) + Integer(rng() & ((std::uint64_t{1} << chunk) - 1));
+  }
+  return (rng() & 1) ? Integer(-x) : x;
+}
+
+UInt128 to_word(const Integer& nonnegative_below_2_128) {
+  const mpz_srcptr z = mp(nonnegative_below_2_128);
+  return (static_cast<UInt128>(mpz_getlimbn(z, 1)) << 64) | mpz_getlimbn(z, 0);
+}
+
+Integer from_word(Int128 x) {
+  const UInt128 m = x < 0 ? -static_cast<UInt128>(x) : static_cast<UInt128>(x);
+  Integer out = (Integer(static_cast<std::uint64_t>(m >> 64)) << 64) + Integer(static_cast<std::uint64_t>(m));
+  return x < 0 ? Integer(-out) : out;
+}
+
+Integer from_word(UInt128 x) {
+  return (Integer(static_cast<std::uint64_t>(x >> 64)) << 64) + Integer(static_cast<std::uint64_t>(x));
+}
+
+// x mod n in [0, n), by GMP.
+std::uint64_t gmp_mod(const Integer& x, std::uint64_t n) {
+  Integer r;
+  mpz_fdiv_r(mp(r), mp(x), mp(Integer(n)));
+  return mpz_get_ui(mp(r));
+}
+
+nmod_t modulus(std::uint64_t p) {
+  nmod_t mod;
+  nmod_init(&mod, p);
+  return mod;
+}
+
+// Sizes 0–300 bits, both signs, and the edges of one and two limbs.
+std::vector<Integer> sample_integers(std::mt19937_64& rng) {
+  std::vector<Integer> out = {Integer(0), Integer(1), Integer(-1)};
+  for (const int e : {63, 64, 127, 128, 129}) {
+    out.push_back(Integer(1) << e);
+    out.push_back((Integer(1) << e) - 1);
+    out.push_back(-(Integer(1) << e));
+    out.push_back(Integer(1) - (Integer(1) << e));
+  }
+  for (int trial = 0; trial < 300; ++trial) out.push_back(random_integer(rng, trial % 301));
+  return out;
+}
+
+GTEST_TEST(DixonWords, LowBitsAreTheIntegerModulo2To128ForEverySignAndSize) {
+  std::mt19937_64 rng(3);
+  for (const Integer& x : sample_integers(rng)) {
+    Integer expected, magnitude;
+    mpz_fdiv_r_2exp(mp(expected), mp(x), 128);  // in [0, 2^128)
+    EXPECT_EQ(from_word(low_bits(mp(x))), expected) << x;
+    mpz_abs(mp(magnitude), mp(x));
+    mpz_fdiv_r_2exp(mp(magnitude), mp(magnitude), 128);
+    EXPECT_EQ(from_word(low_128(mp(x))), magnitude) << x;
+  }
+}
+
+GTEST_TEST(DixonWords, ResiduesAgreeWithGmpForEveryPrimeSignAndEdge) {
+  std::mt19937_64 rng(5);
+  for (const std::uint64_t p : dixon_primes()) {
+    const nmod_t mod = modulus(p);
+    std::vector<Integer> values = sample_integers(rng);
+    for (const int e : {125, 126}) {  // the edges of the two word residues
+      values.push_back((Integer(1) << e) - 1);
+      values.push_back(Integer(1) - (Integer(1) << e));
+    }
+    values.push_back(Integer(p) << 63);  // multiples of p
+    values.push_back(-(Integer(p) * Integer(p)));
+    for (const Integer& x : values) {
+      SCOPED_TRACE(x);
+      EXPECT_EQ(residue(x, mod), gmp_mod(x, p));
+      const long size = static_cast<long>(mpz_sizeinbase(mp(x), 2));
+      if (mpz_sgn(mp(x)) == 0 || size <= 125) {
+        const Int128 w = static_cast<Int128>(low_bits(mp(x)));
+        ASSERT_EQ(from_word(w), x);
+        EXPECT_EQ(residue(w, mod), gmp_mod(x, p));
+      }
+      if (mpz_sgn(mp(x)) == 0 || size <= 126) {
+        const Int128 w = static_cast<Int128>(low_bits(mp(x)));
+        Integer magnitude;
+        mpz_abs(mp(magnitude), mp(x));
+        EXPECT_EQ(residue_below_2_126(w, mod), gmp_mod(magnitude, p));
+      }
+      if (mpz_sgn(mp(x)) >= 0 && (mpz_sgn(mp(x)) == 0 || size <= 128)) {
+        EXPECT_EQ(reduce_128(to_word(x), mod), gmp_mod(x, p));
+      }
+    }
+    EXPECT_EQ(reduce_128(~UInt128(0), mod), gmp_mod((Integer(1) << 128) - 1, p));
+    // a·b + c·e for residues up to p itself.
+    for (int trial = 0; trial < 200; ++trial) {
+      std::uint64_t w[4];
+      for (std::uint64_t& x : w) x = trial < 16 ? (trial & 1 ? p : p - 1) : rng() % (p + 1);
+      const Integer expected = Integer(w[0]) * Integer(w[1]) + Integer(w[2]) * Integer(w[3]);
+      EXPECT_EQ(mul_add_mod(w[0], w[1], w[2], w[3], mod), gmp_mod(expected, p)) << "trial " << trial;
+    }
+  }
+}
+
+GTEST_TEST(DixonWords, InvertsOddNumbersModulo2To128) {
+  std::vector<std::uint64_t> odd = dixon_primes();
+  odd.insert(odd.end(), {1, 3, 0xFFFFFFFFFFFFFFFFull, 0x8000000000000001ull});
+  for (const std::uint64_t p : odd) EXPECT_EQ(static_cast<UInt128>(p * inverse_mod_2_128(p)), UInt128(1)) << p;
+}
+
+// The pointers block_in_words takes.
+std::vector<const Integer*> pointers(const std::vector<Integer>& v) {
+  std::vector<const Integer*> out;
+  for (const Integer& x : v) out.push_back(&x);
+  return out;
+}
+
+GTEST_TEST(DixonWords, TakesABlockInWordsExactlyUpToTheBoundsAndNoFurther) {
+  const Integer entry_edge = (Integer(1) << 59) - 1, y_edge = (Integer(1) << 125) - 1;
+  std::vector<Integer> c = {entry_edge, Integer(-entry_edge), Integer(0), Integer(-7)};
+  std::vector<Integer> y = {y_edge, Integer(-y_edge)};
+  std::vector<std::int64_t> c_words;
+  std::vector<Int128> y_words;
+  ASSERT_TRUE(block_in_words(2, pointers(c), pointers(y), c_words, y_words));
+  for (std::size_t e = 0; e < c.size(); ++e) EXPECT_EQ(Integer(c_words[e]), c[e]) << "entry " << e;
+  for (std::size_t a = 0; a < y.size(); ++a) EXPECT_EQ(from_word(y_words[a]), y[a]) << "row " << a;
+
+  const auto rejected = [&](std::vector<Integer> c2, std::vector<Integer> y2) {
+    return !block_in_words(2, pointers(c2), pointers(y2), c_words, y_words);
+  };
+  EXPECT_TRUE(rejected({Integer(1) << 59, Integer(0), Integer(0), Integer(1)}, y));
+  EXPECT_TRUE(rejected({Integer(0), -(Integer(1) << 59), Integer(0), Integer(1)}, y));
+  EXPECT_TRUE(rejected({Integer(0), Integer(0), Integer(1) << 64, Integer(1)}, y));  // two limbs
+  EXPECT_TRUE(rejected(c, {Integer(1) << 125, Integer(0)}));
+  EXPECT_TRUE(rejected(c, {Integer(0), -(Integer(1) << 125)}));
+  EXPECT_TRUE(rejected(c, {Integer(0), Integer(1) << 128}));  // three limbs
+  std::vector<Integer> big(17 * 17, Integer(1)), big_y(17, Integer(1));
+  EXPECT_FALSE(block_in_words(17, pointers(big), pointers(big_y), c_words, y_words));  // k > 16
+  EXPECT_FALSE(block_in_words(3, pointers(c), pointers(y), c_words, y_words));         // sizes not k
+}
+
+// C·digit ≡ rhs (mod p), by GMP.
+void expect_solves_mod_p(int k, const std::vector<Integer>& c, const std::vector<std::uint64_t>& rhs,
+                         const std::vector<mp_limb_t>& digit, std::uint64_t p) {
+  for (int a = 0; a < k; ++a) {
+    Integer sum = 0;
+    for (int j = 0; j < k; ++j) sum += c[static_cast<std::size_t>(a) * k + j] * Integer(digit[j]);
+    EXPECT_EQ(gmp_mod(sum, p), rhs[a]) << "row " << a;
+  }
+}
+
+GTEST_TEST(DixonWords, FactorsModuloPAndSolvesEveryRightHandSide) {
+  std::mt19937_64 rng(13);
+  const std::uint64_t p = dixon_primes()[0];
+  const nmod_t mod = modulus(p);
+  int solved = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    const int k = 1 + trial % 20;  // past 16: rows of more than 15 products
+    const bool small = trial % 2 == 0;
+    std::vector<Integer> c;
+    for (int e = 0; e < k * k; ++e)
+      c.push_back(rng() % 4 == 0 ? Integer(0) : random_integer(rng, small ? 58 : 130));  // zeros need swaps
+    ModularLu from_integers;
+    if (!from_integers.factor(k, pointers(c), mod)) continue;  // singular mod p: rare
+    std::vector<std::uint64_t> rhs(k);
+    for (std::uint64_t& x : rhs) x = rng() % p;
+    std::vector<mp_limb_t> work(rhs.begin(), rhs.end()), digit;
+    from_integers.solve(work, digit);
+    SCOPED_TRACE(trial);
+    expect_solves_mod_p(k, c, rhs, digit, p);
+    ++solved;
+    std::vector<std::int64_t> c_words;
+    std::vector<Int128> y_words;
+    std::vector<Integer> y(k, Integer(1));
+    if (small && block_in_words(k, pointers(c), pointers(y), c_words, y_words)) {
+      ModularLu from_words;
+      ASSERT_TRUE(from_words.factor(k, c_words, mod));
+      std::vector<mp_limb_t> work_words(rhs.begin(), rhs.end()), digit_words;
+      from_words.solve(work_words, digit_words);
+      EXPECT_EQ(digit_words, digit);
+    }
+  }
+  EXPECT_GT(solved, 110);
+}
+
+GTEST_TEST(DixonWords, SumsLongRowsOfLargestProductsWithoutOverflow) {
+  // C upper triangular with every entry −1 ≡ p − 1 and the solution
+  // digit_j = p − 1: row 0's back substitution sums 19 products of
+  // (p − 1)² ≈ 2^124, past 2^128, so it must reduce in parts.
+  const std::uint64_t p = dixon_primes()[0];
+  const int k = 20;
+  std::vector<Integer> c(k * k, Integer(0));
+  for (int a = 0; a < k; ++a)
+    for (int j = a; j < k; ++j) c[static_cast<std::size_t>(a) * k + j] = Integer(-1);
+  std::vector<std::uint64_t> rhs(k);
+  for (int a = 0; a < k; ++a) rhs[a] = gmp_mod(Integer(k - a) * Integer(p - 1) * Integer(-1), p);
+  ModularLu lu;
+  ASSERT_TRUE(lu.factor(k, pointers(c), modulus(p)));
+  std::vector<mp_limb_t> work(rhs.begin(), rhs.end()), digit;
+  lu.solve(work, digit);
+  EXPECT_EQ(digit, std::vector<mp_limb_t>(k, p - 1));
+  expect_solves_mod_p(k, c, rhs, digit, p);
+}
+
+GTEST_TEST(DixonWords, RefusesABlockSingularModuloP) {
+  const std::uint64_t p = dixon_primes()[0];
+  ModularLu lu;
+  const std::vector<Integer> multiple = {Integer(p), Integer(0), Integer(0), Integer(1)};  // det = p
+  EXPECT_FALSE(lu.factor(2, pointers(multiple), modulus(p)));
+  const std::vector<std::int64_t> rank_one = {2, -4, -3, 6};
+  EXPECT_FALSE(lu.factor(2, rank_one, modulus(p)));
+  EXPECT_TRUE(lu.factor(2, pointers(multiple), modulus(dixon_primes()[1])));
+}
+
+}  // namespace
+}  // namespace fixel::internal
