@@ -1,10 +1,12 @@
 #pragma once
 // The machine-word arithmetic of the p-adic lifting (src/lemke_dixon.cpp):
 // residues modulo a prime 2^61 < p < 2^62, 128-bit words, and the block
-// C triangularised modulo p (src/lemke_dixon_words.cpp). Each helper reads
-// its operands without a branch on their signs, sizes or zeros: those
-// follow no pattern a branch predictor could learn, and a mispredicted
-// branch costs more than the arithmetic here (docs/performance.md).
+// C triangularised modulo p (src/lemke_dixon_words.cpp). The word helpers
+// (low_128, low_bits, block_in_words, the Int128 residues) read their
+// operands without a branch on their signs, sizes or zeros: those follow
+// no pattern a branch predictor could learn, and a mispredicted branch
+// costs more than the arithmetic here (docs/performance.md). The GMP-path
+// residue and the factoring's skip of zero multipliers still branch.
 #include <flint/nmod.h>
 #include <gmp.h>
 
