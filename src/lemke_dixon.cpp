@@ -180,15 +180,16 @@ bool reconstruct_denominator_bounded(const Integer& a, double bound, Workspace& 
   if (m - 3 - b < 0) return false;
   Fmpz residue, modulus, num_bound, den_bound;
   Fmpq q;
-  fmpz_one(den_bound.v);
-  fmpz_mul_2exp(den_bound.v, den_bound.v, static_cast<ulong>(e));
-  fmpz_one(num_bound.v);
-  fmpz_mul_2exp(num_bound.v, num_bound.v, static_cast<ulong>(m - 2 - e));
+  fmpz_one_2exp(den_bound.v, static_cast<ulong>(e));  // a small fmpz (no allocation) below 2^62
+  fmpz_one_2exp(num_bound.v, static_cast<ulong>(m - 2 - e));
   fmpz_set_mpz(residue.v, mp(a));
   fmpz_set_mpz(modulus.v, mp(ws.modulus));
   if (!fmpq_reconstruct_fmpz_2(q.v, residue.v, modulus.v, num_bound.v, den_bound.v)) return false;
   fmpz_get_mpz(mp(den), fmpq_denref(q.v));
-  value = fmpq_get_d(q.v);
+  // Only the filter below reads the value: one division of the doubles when
+  // both parts are small fmpz (the usual case), else FLINT's conversion.
+  const fmpz n = *fmpq_numref(q.v), d = *fmpq_denref(q.v);
+  value = !COEFF_IS_MPZ(n) && !COEFF_IS_MPZ(d) ? static_cast<double>(n) / static_cast<double>(d) : fmpq_get_d(q.v);
   return true;
 }
 
@@ -200,14 +201,22 @@ bool within(double value, double lo, double hi, double magnitude) {
   return value >= lo - slack && value <= hi + slack;
 }
 
+// A denominator d as mantissa·2^exponent, converted once for all the x_j.
+struct Scaled {
+  double mantissa = 1;
+  long exponent = 0;
+  explicit Scaled(const Integer& d) { mantissa = mpz_get_d_2exp(&exponent, mp(d)); }
+};
+
 // Whether v/d lies in the hint's enclosure of x_j.
 // v/d is taken from both mantissas and exponents, so that it does not
 // overflow when v and d are beyond double range themselves.
-bool plausible(const Integer& v, const Integer& d, const DixonHint& hint, int j) {
+bool plausible(const Integer& v, const Scaled& d, const DixonHint& hint, int j) {
   const double lo = hint.lo[j], hi = hint.hi[j];
-  long v_exp = 0, d_exp = 0;
-  const double v_mantissa = mpz_get_d_2exp(&v_exp, mp(v)), d_mantissa = mpz_get_d_2exp(&d_exp, mp(d));
-  const double value = std::ldexp(v_mantissa / d_mantissa, static_cast<int>(std::clamp(v_exp - d_exp, -4000L, 4000L)));
+  long v_exp = 0;
+  const double v_mantissa = mpz_get_d_2exp(&v_exp, mp(v));
+  const double value =
+      std::ldexp(v_mantissa / d.mantissa, static_cast<int>(std::clamp(v_exp - d.exponent, -4000L, 4000L)));
   return within(value, lo, hi, std::max(std::abs(lo), std::abs(hi)));
 }
 
@@ -245,13 +254,14 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
     return false;
   }
   ws.candidate.resize(k);
+  Scaled d_scaled(d);
   for (int grown = 0, j = 0; j < k; ++j) {
     Integer& v = ws.candidate[j];
     mpz_mul(mp(v), mp(ws.lifted[j]), mp(d));
     mpz_mod(mp(v), mp(v), mp(ws.modulus));
     if (mpz_cmp(mp(v), mp(ws.half)) > 0) mpz_sub(mp(v), mp(v), mp(ws.modulus));
     if (hint != nullptr) {
-      if (plausible(v, d, *hint, j)) continue;
+      if (plausible(v, d_scaled, *hint, j)) continue;
     } else {
       // The 64-bit floor keeps a random residue from passing when d is
       // small (it then passes with odds below 2⁻⁶³).
@@ -280,6 +290,7 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
       mpz_mul(mp(d), mp(d), mp(ws.t));
       if (!small_denominator(d, ws)) return false;
     }
+    d_scaled = Scaled(d);
     j = -1;  // d changed: every u_j again
   }
   // C·u ≡ d·y (mod M) holds by construction: C·x̄ ≡ y and u ≡ d·x̄.
@@ -359,7 +370,10 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
         ws.rhs[a] = in_words ? residue(ws.residual_words[a], mod) : residue(ws.residual[a], mod);
       ws.lu.solve(ws.rhs, ws.digit);
       for (int a = 0; a < k; ++a) {
-        mpz_addmul_ui(mp(ws.lifted[a]), mp(ws.modulus), ws.digit[a]);
+        if (step == 0)
+          mpz_set_ui(mp(ws.lifted[a]), ws.digit[a]);  // the modulus is still 1
+        else
+          mpz_addmul_ui(mp(ws.lifted[a]), mp(ws.modulus), ws.digit[a]);
         const std::size_t row = static_cast<std::size_t>(a) * k;
         if (in_words) {
           // r ← (r − Σ_j C(a, j)·digit_j)/p, exact: times 1/p modulo 2^128.
