@@ -154,10 +154,17 @@ WrenchCone tight(const SegmentBounds& b, const Vec2& p_AoCm_A, const Vec2& ds, c
   return finish(std::move(gens), with_facets);
 }
 
+// in_cone (geometry.h) with each cross-product sign filtered.
+bool in_cone_filtered(const Vec2& d, const Vec2& a, const Vec2& b) {
+  using internal::orientation_filtered;
+  if (orientation_filtered(a, b) == 0) return orientation_filtered(a, d) == 0 && dot(a, d) > 0;
+  return orientation_filtered(a, d) >= 0 && orientation_filtered(d, b) >= 0;
+}
+
 std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& p_AoCm_A, const Vec2& ds, const Vec2& de,
                                 bool with_facets) {
   const Vec2 us = internal::unit_direction_outward(ds, true), ue = internal::unit_direction_outward(de, false);
-  const Rational span = cross(us, ue);
+  const int span = internal::orientation_filtered(us, ue);
   if (span < 0 || (span == 0 && dot(us, ue) < 0)) return std::nullopt;  // rounding reached π
   std::vector<Rational> X;
   for (const auto& p : b.hull) {
@@ -167,8 +174,8 @@ std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& p_AoCm_A, co
     // The extra ⊥ angle: X = r ⊗ d is ±|r| where d ⊥ r.
     if (!is_zero(r)) {
       const Rational bound = internal::sqrt_upper(dot(r, r));
-      if (in_cone(rot90(r), us, ue)) X.push_back(bound);
-      if (in_cone(Vec2{-rot90(r).x, -rot90(r).y}, us, ue)) X.push_back(-bound);
+      if (in_cone_filtered(rot90(r), us, ue)) X.push_back(bound);
+      if (in_cone_filtered(Vec2{-rot90(r).x, -rot90(r).y}, us, ue)) X.push_back(-bound);
     }
   }
   Rational xmin = X[0], xmax = X[0];
@@ -199,11 +206,13 @@ Vec2 unit_direction_outward(const Vec2& d_raw, bool cw) {
   Rational t = to_dyadic_floor(std::tan(half));
   const Rational step(1, 1048576);
   if (!cw) t += step;
+  const FVec2 fd = to_interval(d);
   for (int i = 0; i < 4096; ++i) {
     const Rational n = 1 + t * t;
     Vec2 u{(1 - t * t) / n, 2 * t / n};
     if (flip) u = {-u.x, -u.y};
-    if (cw ? cross(u, d) >= 0 : cross(d, u) >= 0) return u;
+    const FVec2 fu = to_interval(u);
+    if ((cw ? orientation_filtered(u, fu, d, fd) : orientation_filtered(d, fd, u, fu)) >= 0) return u;
     t += cw ? -step : step;  // tan(θ/2) is increasing: move the angle outward
   }
   throw InternalError("unit_direction_outward: no rational direction found within 4096 steps");

@@ -14,6 +14,7 @@
 #include "filter_test_util.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
@@ -229,6 +230,49 @@ GTEST_TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise)
   EXPECT_EQ(first.x, Rational(1, 3));
   // Anti-parallel thirds: spans π, found only by the exact zero.
   EXPECT_FALSE(direction_extremes({{Rational(1, 3), Rational(2, 3)}, {Rational(-1, 3), Rational(-2, 3)}}, first, last));
+}
+
+// The paper cone's rational unit directions: the side test of each
+// candidate u(t) is certified in intervals for random directions; a
+// direction exactly along a candidate with thirds and fifths in it, here
+// (3, 4) and u(1/2) = (3/5, 4/5), is an exact zero the intervals cannot
+// certify, so the exact cross product runs; either way the answer is that
+// of the exact path.
+GTEST_TEST(Filter, UnitDirectionsAreCertifiedExceptExactlyAlongACandidate) {
+  std::mt19937_64 rng(62);
+  std::vector<Vec2> directions;
+  for (int trial = 0; trial < 100; ++trial) {
+    const Vec2 d{test::random_rational(rng, -3, 3, 11), test::random_rational(rng, -3, 3, 11)};
+    if (!(d.x == 0 && d.y == 0)) directions.push_back(d);
+  }
+  std::vector<Vec2> filtered_answers;
+  {
+    ForceExactScope filtered(false);
+    reset_filter_stats();
+    for (const auto& d : directions)
+      for (const bool cw : {true, false}) filtered_answers.push_back(internal::unit_direction_outward(d, cw));
+    EXPECT_GT(filter_stats().at(FilterSite::kOrientation).certified, 0);
+    EXPECT_EQ(filter_stats().at(FilterSite::kOrientation).fallbacks, 0);
+  }
+  {
+    ForceExactScope exact;
+    std::size_t k = 0;
+    for (const auto& d : directions)
+      for (const bool cw : {true, false}) {
+        const Vec2 u = internal::unit_direction_outward(d, cw);
+        EXPECT_EQ(u.x, filtered_answers[k].x);
+        EXPECT_EQ(u.y, filtered_answers[k].y);
+        ++k;
+      }
+  }
+  ForceExactScope filtered(false);
+  reset_filter_stats();
+  const Vec2 along_cw = internal::unit_direction_outward({3, 4}, true);
+  const Vec2 along_ccw = internal::unit_direction_outward({3, 4}, false);
+  EXPECT_GE(filter_stats().at(FilterSite::kOrientation).fallbacks, 1);
+  const bool exact_candidate_returned = (along_cw.x == Rational(3, 5) && along_cw.y == Rational(4, 5)) ||
+                                        (along_ccw.x == Rational(3, 5) && along_ccw.y == Rational(4, 5));
+  EXPECT_TRUE(exact_candidate_returned);
 }
 
 // Membership in S and G: random impulses are decided by the interval
