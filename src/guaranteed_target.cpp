@@ -331,7 +331,22 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
 
   RegionStatus test_point(const std::vector<VectorQ>& gens, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
                           std::vector<Magnitudes>* set) override {
-    if (cross(d_first, d_last) == 0) {  // one ray: exact union of intervals
+    const bool one_ray = (d_first.x == d_last.x && d_first.y == d_last.y) ||  // the usual one: no product
+                         internal::orientation_filtered(d_first, d_last) == 0;
+    if (one_ray) {  // exact union of intervals
+      if (!force_exact() && gens[0].size() == 3) {
+        // A ray whose every piece certainly misses is OUT (G is the union
+        // of its pieces) with no exact test; otherwise the exact union.
+        const internal::FGen g{internal::to_interval(gens[0][0]), internal::to_interval(gens[0][1]),
+                               internal::to_interval(gens[0][2])};
+        const int hits = interval_ray_hits(g);
+        internal::record_filter(FilterSite::kRegionTest, hits != kUndecided);
+        if (hits == 0) {
+          if (set) set->clear();
+          if (out) *out = Magnitudes{};
+          return RegionStatus::kOut;
+        }
+      }
       const std::vector<Magnitudes> parts = ray_magnitudes(G_, S_, b0_, gens[0]);
       if (set) {
         // Report Euclidean |p| like every other magnitude: τ|d| with |d|

@@ -33,8 +33,11 @@ bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
   std::vector<internal::FVec2> f;
   f.reserve(v.size());
   for (const auto& x : v) f.push_back(internal::to_interval(x));
+  // Equal vectors (a frictionless push's fan repeats its one direction)
+  // are parallel without a product: no interval can certify that zero.
   auto orient = [&](std::size_t i, std::size_t j) {
-    return i == j ? 0 : internal::orientation_filtered(v[i], f[i], v[j], f[j]);
+    return i == j || (v[i].x == v[j].x && v[i].y == v[j].y) ? 0
+                                                            : internal::orientation_filtered(v[i], f[i], v[j], f[j]);
   };
   int s = -1, e = -1;
   for (std::size_t i = 0; i < v.size(); ++i) {

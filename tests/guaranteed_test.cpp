@@ -268,6 +268,53 @@ GTEST_TEST(GuaranteedRegion, ConeMissTestsAgreeWithTheExactLpAndMostAreCertified
   EXPECT_LT(out.fallbacks, met / 4);
 }
 
+GTEST_TEST(GuaranteedRegion, OneRayPointTestsAgreeWithTheExactUnionAndMissesAreCertified) {
+  // Second method: the same point test with the filters off (the exact
+  // union of S's interval minus the non-seating sets). Points along the
+  // boundary, pushed along the inward normal and along directions turned
+  // from it; the pre-test answers OUT only when every piece certainly
+  // misses, so the status, the reported magnitudes and their set agree.
+  const Scene scene = scene_file("nonunique_part");
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  const auto target = guaranteed_target(G, S, scene.background_impulse);
+  reset_filter_stats();
+  int out = 0, in = 0;
+  for (const auto& piece : scene.body.boundary->pieces)
+    for (int k = 0; k < 24; ++k) {
+      const Rational s(2 * k + 1, 48);
+      const Vec2 T = piece.derivative(s), x = piece.point(s);
+      const Vec2 r{x.x - scene.body.p_AoCm_A.x, x.y - scene.body.p_AoCm_A.y};
+      for (const Vec2& d :
+           {Vec2{-T.y, T.x}, Vec2{-T.y + T.x / 2, T.x + T.y / 2}, Vec2{-T.y - T.x / 2, T.x - T.y / 2}}) {
+        const std::vector<VectorQ> gens{contact_wrench(r, d, 3)};
+        Magnitudes filtered_out, exact_out;
+        std::vector<Magnitudes> filtered_set, exact_set;
+        const RegionStatus filtered = target->test_point(gens, d, d, &filtered_out, &filtered_set);
+        RegionStatus exact;
+        {
+          ForceExactScope scope(true);
+          exact = target->test_point(gens, d, d, &exact_out, &exact_set);
+        }
+        ASSERT_EQ(filtered, exact) << "piece at u0 = " << piece.u0 << ", s = " << s;
+        auto same = [](const Magnitudes& a, const Magnitudes& b) {
+          return a.empty == b.empty && a.lo == b.lo && a.lo_closed == b.lo_closed && a.hi == b.hi &&
+                 a.hi_closed == b.hi_closed;
+        };
+        EXPECT_TRUE(same(filtered_out, exact_out));
+        ASSERT_EQ(filtered_set.size(), exact_set.size());
+        for (std::size_t m = 0; m < exact_set.size(); ++m) EXPECT_TRUE(same(filtered_set[m], exact_set[m]));
+        (filtered == RegionStatus::kOut ? out : in) += 1;
+      }
+    }
+  const FilterCounts region = filter_stats().at(FilterSite::kRegionTest);
+  std::cout << "[ info     ] " << out << " rays miss G, " << in << " meet it; region test certified "
+            << region.certified << ", exact " << region.fallbacks << "\n";
+  EXPECT_GT(out, 0);
+  EXPECT_GT(in, 0);
+  EXPECT_GT(region.certified, out / 2);
+}
+
 GTEST_TEST(GuaranteedRegion, SampleMagnitudesAreCertifiedEuclideanSubsets) {
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
