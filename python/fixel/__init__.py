@@ -7,6 +7,7 @@ purpose). Doubles appear only in ``.approx`` views and in ``fixel.plot``.
 See docs/python.md.
 """
 
+import contextlib
 import json
 import os
 from types import SimpleNamespace
@@ -26,7 +27,7 @@ __all__ = [
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes", "AlgebraicEnd",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
     "to_off", "to_svg", "SustainedSet", "sustained_set", "push",
-    "design", "design_candidates", "Design", "Layout", "Candidate",
+    "design", "design_candidates", "Design", "Layout", "Candidate", "exact_only", "filter_stats",
 ]  # fmt: skip
 
 
@@ -301,4 +302,34 @@ def sustained_set(scene):
     """The sustained-push set J of a scene (``fixel seat --sustained``)."""
     scene = _scene(scene)
     return SustainedSet(scene, _fixel.sustained_set(scene._impl))
-# Each is a C++ call in python/src plus a wrapper here, following seating_set.
+
+
+@contextlib.contextmanager
+def exact_only(on=True):
+    """Every filtered decision in exact rationals inside the ``with`` block
+    (the CLI's ``--exact-only``, ``FIXEL_FORCE_EXACT=1``): the same answers,
+    more slowly. Process-wide, so other threads see it too; the previous
+    setting is restored on leaving the block, also on an exception.
+    ``exact_only(False)`` turns the filters back on inside the block."""
+    if not isinstance(on, bool):
+        raise TypeError(f"on: {on!r} is not a bool")
+    previous = _fixel.force_exact()
+    _fixel.set_force_exact(on)
+    try:
+        yield
+    finally:
+        _fixel.set_force_exact(previous)
+
+
+def filter_stats(reset=False):
+    """How often each interval filter decided ("certified") and how often it
+    could not and the exact path ran ("fallbacks"), per filter site, since
+    the last reset: the line ``FIXEL_FILTER_STATS=1`` prints. Runs under
+    ``exact_only()`` count neither. With ``reset=True`` the counters are set
+    to zero after reading."""
+    if not isinstance(reset, bool):
+        raise TypeError(f"reset: {reset!r} is not a bool")
+    stats = _fixel.filter_stats()
+    if reset:
+        _fixel.reset_filter_stats()
+    return stats

@@ -59,5 +59,6 @@ void bind_sets(py::module_& m);
 void bind_region(py::module_& m);
 void bind_sustained(py::module_& m);
 void bind_design(py::module_& m);
+void bind_filter(py::module_& m);
 
 }  // namespace fixel::python

@@ -80,4 +80,5 @@ PYBIND11_MODULE(_fixel, m) {
   fixel::python::bind_region(m);
   fixel::python::bind_sustained(m);
   fixel::python::bind_design(m);
+  fixel::python::bind_filter(m);
 }

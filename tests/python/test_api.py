@@ -273,3 +273,46 @@ def test_exact_region_has_algebraic_ends_that_match_the_cli():
         assert d["status"] == i.status and end(d["u0"], i.exact_u0, i.u0) and end(d["u1"], i.exact_u1, i.u1)
     with pytest.raises(fixel.UnsupportedError):
         fixel.region(fixel.Scene.load(SCENE_DIR / "nonunique_part.json"), exact=True, guaranteed=True)
+
+
+def _without_seconds(doc):
+    if isinstance(doc, dict):
+        return {k: _without_seconds(v) for k, v in doc.items() if k != "seconds"}
+    if isinstance(doc, list):
+        return [_without_seconds(v) for v in doc]
+    return doc
+
+
+def test_exact_only_gives_the_same_region_and_no_filter_counts():
+    # Second method: the same region with every decision in rationals.
+    scene = fixel.Scene.load(SCENE_DIR / "example2_rounded.json")
+    with fixel.exact_only(False):
+        fixel.filter_stats(reset=True)
+        filtered = fixel.region(scene, resolution="1/256")
+        filtered_counts = fixel.filter_stats(reset=True)
+    with fixel.exact_only():
+        exact = fixel.region(scene, resolution="1/256")
+        exact_counts = fixel.filter_stats()
+    assert _without_seconds(filtered.to_json()) == _without_seconds(exact.to_json())
+    assert set(filtered_counts) >= {"lemke", "ray test", "out test", "orientation", "region test"}
+    assert sum(c["certified"] for c in filtered_counts.values()) > 0
+    assert all(c == {"certified": 0, "fallbacks": 0} for c in exact_counts.values())
+
+
+def test_exact_only_restores_the_previous_setting_even_after_an_exception():
+    before = fixel._fixel.force_exact()
+    with pytest.raises(RuntimeError):
+        with fixel.exact_only():
+            assert fixel._fixel.force_exact()
+            raise RuntimeError("inside the block")
+    assert fixel._fixel.force_exact() == before
+    with fixel.exact_only():
+        with fixel.exact_only(False):
+            assert not fixel._fixel.force_exact()
+        assert fixel._fixel.force_exact()
+    assert fixel._fixel.force_exact() == before
+    with pytest.raises(TypeError):
+        with fixel.exact_only(1):
+            pass
+    with pytest.raises(TypeError):
+        fixel.filter_stats(reset="yes")
