@@ -1,6 +1,7 @@
 #pragma once
 // Seeded random convex polygon parts with 3 fixels (exact unit normals,
-// gaps up to 1/10, mu <= 1/8), shared by the physics studies.
+// gaps up to 1/10, mu <= 1/8), shared by the physics studies and the
+// filter tests (tests/filter_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <random>
 
+#include "../bench/random_parts.h"  // the physics studies' seeded random parts
 #include "filter_test_util.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/filtered.h"
@@ -131,6 +132,53 @@ GTEST_TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFi
     return masked(region_json(polygon, r)) + masked(sustained_json(polygon, J, std::nullopt));
   };
   EXPECT_EQ(run(false, sustained), run(true, sustained));
+}
+
+// J and G of seeded random parts (convex polygons with 3 fixels, the
+// physics studies' generator), not only of the bundled scenes: J's JSON and
+// its region, and G's JSON (with an impulse) and its region.
+GTEST_TEST(Filter, SustainedAndGuaranteedSetsOfSeededRandomPartsAreIdenticalJsonWithAndWithoutFilters) {
+  std::mt19937_64 rng(2027);
+  int parts = 0, with_j = 0;
+  for (int k = 0; k < 400 && parts < 4; ++k) {
+    const std::optional<Scene> part = bench::random_part(rng, k);
+    if (!part) continue;
+    ++parts;
+    SCOPED_TRACE(part->name);
+    bool j_empty = true;
+    auto sustained = [&]() -> std::string {
+      SustainedSet J;
+      try {
+        J = sustained_set(*part);
+      } catch (const Error& e) {  // e.g. two seated poses: the same error either way
+        return std::string("error: ") + e.what();
+      }
+      j_empty = J.empty;
+      std::string out = masked(sustained_json(*part, J, std::nullopt));
+      if (!J.empty) {
+        const auto target = sustained_target(J);
+        RegionOptions o;
+        o.resolution = Rational(1, 16);
+        out += masked(region_json(*part, compute_region(*part, *target, o)));
+      }
+      return out;
+    };
+    EXPECT_EQ(run(false, sustained), run(true, sustained));
+    with_j += !j_empty;
+    const SeatingSet S = seating_set(*part);
+    VectorQ p = S.apex;
+    for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+    auto guaranteed = [&] {
+      const GuaranteedSet G = guaranteed_set(*part, S);
+      RegionOptions o;
+      o.resolution = Rational(1, 16);
+      o.guaranteed = &G;
+      return masked(seat_json(*part, S, seat_report(*part, S, p, &G, false), &G)) + region_json_of(*part, S, o);
+    };
+    EXPECT_EQ(run(false, guaranteed), run(true, guaranteed));
+  }
+  EXPECT_EQ(parts, 4);
+  EXPECT_GT(with_j, 0);  // some J is non-empty, so its region ran
 }
 
 GTEST_TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFilters) {
