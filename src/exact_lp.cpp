@@ -27,8 +27,8 @@ Integer scaled(const Rational& q, const Integer& l) {
 
 }  // namespace
 
-LpResult solve_lp(int n, const std::vector<LinearConstraint>& constraints, const VectorQ& c) {
-  // All variables free: no lower or upper bounds. Each row is multiplied by
+LpResult solve_lp(int n, const std::vector<LinearConstraint>& constraints, const VectorQ& c, int unit_box_from) {
+  // Variables free unless boxed (below). Each row is multiplied by
   // the positive lcm of its denominators (the same feasible set, the same
   // simplex path), so the solver runs on integers: CGAL's fraction-free
   // updates in Gmpz-like integers instead of a gcd per rational operation.
@@ -43,6 +43,11 @@ LpResult solve_lp(int n, const std::vector<LinearConstraint>& constraints, const
     lp.set_r(r, row.rel == Relation::kLessEqual ? CGAL::SMALLER
                                                 : (row.rel == Relation::kEqual ? CGAL::EQUAL : CGAL::LARGER));
   }
+  if (unit_box_from >= 0)
+    for (int j = unit_box_from; j < n; ++j) {
+      lp.set_l(j, true, 0);
+      lp.set_u(j, true, 1);
+    }
   if (c.size()) {
     const Integer l = row_scale(c, nullptr);
     for (int j = 0; j < c.size(); ++j)

@@ -136,16 +136,42 @@ bool is_empty(const Polyhedron& P) {
 
 int affine_dimension(const Polyhedron& P) {
   if (is_empty(P)) return -1;
-  // P is non-empty, so a strict row is never tight everywhere; a closed row
-  // a·p >= c is an implicit equality iff P ∩ {a·p > c} is empty.
-  std::vector<VectorQ> equalities;
-  for (std::size_t k = 0; k < P.closed.size(); ++k) {
-    if (P.closed[k].a.isZero()) continue;
-    Polyhedron strict_here = P;
-    strict_here.closed.erase(strict_here.closed.begin() + static_cast<long>(k));
-    strict_here.strict.push_back(P.closed[k]);
-    if (is_empty(strict_here)) equalities.push_back(P.closed[k].a);
+  // P is non-empty, so no strict row is tight everywhere, and a closed row
+  // is an implicit equality iff it is tight on all of P's closure. One LP
+  // over the closure maximises Σ s_k with a_k·p − s_k ≥ c_k, 0 ≤ s_k ≤ 1,
+  // over the closed rows k still open to doubt: every row with s_k > 0 at
+  // the optimum is not an equality, and an optimum of 0 makes all of them
+  // equalities (docs/theory.md §9). Each LP that does not end the loop
+  // settles at least one row, so there are at most as many LPs as rows.
+  std::vector<std::size_t> doubtful;
+  for (std::size_t k = 0; k < P.closed.size(); ++k)
+    if (!P.closed[k].a.isZero()) doubtful.push_back(k);
+  while (!doubtful.empty()) {
+    const int m = static_cast<int>(doubtful.size()), n = P.dim + m;
+    std::vector<internal::LinearConstraint> rows;
+    auto add_row = [&](const Halfspace& h, int slack) {
+      VectorQ a = VectorQ::Zero(n);
+      a.head(P.dim) = h.a;
+      if (slack >= 0) a[P.dim + slack] = -1;
+      rows.push_back({a, internal::Relation::kGreaterEqual, h.c});
+    };
+    std::vector<int> slack_of(P.closed.size(), -1);
+    for (int j = 0; j < m; ++j) slack_of[doubtful[j]] = j;
+    for (std::size_t k = 0; k < P.closed.size(); ++k) add_row(P.closed[k], slack_of[k]);
+    for (const auto& h : P.strict) add_row(h, -1);  // the closure's rows
+    VectorQ objective = VectorQ::Zero(n);
+    for (int j = 0; j < m; ++j) objective[P.dim + j] = -1;  // minimise −Σ s
+    const internal::LpResult lp = internal::solve_lp(n, rows, objective, P.dim);  // 0 <= s <= 1
+    if (lp.status != internal::LpStatus::kOptimal)  // the closure of a non-empty P is feasible and s is bounded
+      throw InternalError("affine_dimension: the slack LP of a non-empty polyhedron is not optimal");
+    if (lp.value == 0) break;
+    std::vector<std::size_t> left;
+    for (int j = 0; j < m; ++j)
+      if (lp.x[P.dim + j] == 0) left.push_back(doubtful[j]);
+    doubtful = std::move(left);
   }
+  std::vector<VectorQ> equalities;
+  for (const std::size_t k : doubtful) equalities.push_back(P.closed[k].a);
   return P.dim - internal::exact_rank(equalities, P.dim);
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "fixel/error.h"
@@ -140,6 +141,80 @@ GTEST_TEST(Polyhedron, AffineDimensionCountsImplicitEqualities) {
   Polyhedron none = edge;
   none.strict.push_back({v2(1, 0), 0});  // x > 0 on the edge x = 0
   EXPECT_EQ(affine_dimension(none), -1);
+}
+
+// The definition, row by row: a closed row is an implicit equality iff P
+// with that row made strict is empty (the second method for the test below).
+int affine_dimension_row_by_row(const Polyhedron& P) {
+  if (is_empty(P)) return -1;
+  MatrixQ equalities(0, P.dim);
+  for (std::size_t k = 0; k < P.closed.size(); ++k) {
+    if (P.closed[k].a.isZero()) continue;
+    Polyhedron strict_here = P;
+    strict_here.closed.erase(strict_here.closed.begin() + static_cast<long>(k));
+    strict_here.strict.push_back(P.closed[k]);
+    if (!is_empty(strict_here)) continue;
+    equalities.conservativeResize(equalities.rows() + 1, P.dim);
+    equalities.row(equalities.rows() - 1) = P.closed[k].a.transpose();
+  }
+  // Rank by fraction-free elimination on the rows.
+  int rank = 0;
+  for (int col = 0; col < P.dim && rank < equalities.rows(); ++col) {
+    int pivot = rank;
+    while (pivot < equalities.rows() && equalities(pivot, col) == 0) ++pivot;
+    if (pivot == equalities.rows()) continue;
+    equalities.row(rank).swap(equalities.row(pivot));
+    for (int r = rank + 1; r < equalities.rows(); ++r)
+      equalities.row(r) = equalities(rank, col) * equalities.row(r) - equalities(r, col) * equalities.row(rank);
+    ++rank;
+  }
+  return P.dim - rank;
+}
+
+GTEST_TEST(Polyhedron, AffineDimensionAgreesWithTheRowByRowDefinitionOnRandomPolyhedra) {
+  // Around a point x0: 3 − d equalities hidden as rows whose sum is zero
+  // (each alone an inequality), random rows with slack at x0, random rows
+  // tight at x0 (not equalities in general position), strict rows with
+  // slack; every fifth one also gets a strict row no point can meet.
+  std::mt19937_64 rng(2026);
+  auto random_vector = [&] {
+    VectorQ v(3);
+    for (int j = 0; j < 3; ++j) v[j] = test::random_rational(rng, -3, 3, 5);
+    return v;
+  };
+  int by_dimension[5] = {0, 0, 0, 0, 0};
+  for (int trial = 0; trial < 60; ++trial) {
+    const int d = trial % 4;
+    const VectorQ x0 = random_vector();
+    Polyhedron P;
+    P.dim = 3;
+    VectorQ sum = VectorQ::Zero(3);
+    for (int e = 0; e < 3 - d; ++e) {
+      const VectorQ a = random_vector();
+      P.closed.push_back({a, a.dot(x0)});
+      sum += a;
+    }
+    if (d < 3) P.closed.push_back({VectorQ(-sum), Rational(-sum.dot(x0))});
+    for (int r = 0; r < 4; ++r) {
+      const VectorQ a = random_vector();
+      P.closed.push_back({a, a.dot(x0) - test::random_rational(rng, 1, 4, 3)});
+    }
+    const VectorQ tight = random_vector();
+    if (d > 0) P.closed.push_back({tight, tight.dot(x0)});
+    const VectorQ open = random_vector();
+    P.strict.push_back({open, open.dot(x0) - test::random_rational(rng, 1, 2, 3)});
+    int expected = d;
+    if (trial % 5 == 4) {
+      P.strict.push_back({VectorQ(-open), Rational(-open.dot(x0) + 3)});  // a·p < a·x0 − 3 with a·p > a·x0 − 2
+      expected = -1;
+    }
+    std::shuffle(P.closed.begin(), P.closed.end(), rng);
+    const int dimension = affine_dimension(P);
+    EXPECT_EQ(dimension, affine_dimension_row_by_row(P)) << "trial " << trial;
+    EXPECT_EQ(dimension, expected) << "trial " << trial;
+    ++by_dimension[dimension + 1];
+  }
+  for (int k = 0; k < 5; ++k) EXPECT_GT(by_dimension[k], 0) << "no polyhedron of dimension " << k - 1;
 }
 
 }  // namespace

@@ -24,8 +24,11 @@ struct LpResult {
   Rational value;  // objective value at x
 };
 
-// Minimises c·x over free variables x ∈ R^n subject to the constraints.
+// Minimises c·x over x ∈ R^n subject to the constraints. Variables are
+// free, except that with unit_box_from >= 0 each x_j with j >=
+// unit_box_from lies in [0, 1] (bounds the solver handles without rows).
 // An empty c (size 0) asks only for feasibility.
-LpResult solve_lp(int n, const std::vector<LinearConstraint>& constraints, const VectorQ& c = VectorQ());
+LpResult solve_lp(int n, const std::vector<LinearConstraint>& constraints, const VectorQ& c = VectorQ(),
+                  int unit_box_from = -1);
 
 }  // namespace fixel::internal
