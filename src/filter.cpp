@@ -44,6 +44,8 @@ std::string to_string(FilterSite site) {
       return "region test";
     case FilterSite::kInMagnitudes:
       return "in magnitudes";
+    case FilterSite::kFeasibility:
+      return "feasibility";
     case FilterSite::kCount:
       break;
   }

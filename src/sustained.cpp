@@ -23,7 +23,7 @@ void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed,
   std::vector<Row<NT>> rows = homogeneous(d.K_rows, true);
   for (const auto& r : homogeneous(closed, false)) rows.push_back(r);
   for (const auto& r : homogeneous(strict, true)) rows.push_back(r);
-  if (!feasible(rows)) return;
+  if (!feasible_filtered(rows)) return;
   if (jam == d.jams.size()) {
     typename Data<NT>::Piece p;
     p.closed = closed;
@@ -142,7 +142,8 @@ void fill_public(SustainedSet& J, const Data<NT>& d) {
     }
     std::vector<Row<NT>> rows = homogeneous(d.K_rows, true);
     for (const auto& r : homogeneous(jam.facets, false)) rows.push_back(r);
-    if (feasible(rows)) holders.push_back("(" + fixel_name(jam.fixels[0]) + ", " + fixel_name(jam.fixels[1]) + ")");
+    if (feasible_filtered(rows))
+      holders.push_back("(" + fixel_name(jam.fixels[0]) + ", " + fixel_name(jam.fixels[1]) + ")");
   }
   std::string list;
   for (std::size_t k = 0; k < holders.size(); ++k) list += (k ? ", " : "") + holders[k];

@@ -67,7 +67,7 @@ bool cone_in_J(const Data<NT>& d, const std::vector<VectorQ>& gens, RegionStats*
     std::vector<Row<NT>> rows = homogeneous(cone_rows, false);
     for (const auto& r : homogeneous(jam.facets, false)) rows.push_back(r);
     rows.push_back({d.normaliser, NT(1), false});
-    if (feasible(rows)) return false;
+    if (feasible_filtered(rows)) return false;
   }
   return true;
 }
@@ -91,7 +91,7 @@ bool cone_misses_J(const Data<NT>& d, const std::vector<VectorQ>& gens, RegionSt
   for (const auto& a : cone_facet_normals(gens, 3)) cone_rows.push_back(lift3<NT>(a));
   std::vector<Row<NT>> rows = homogeneous(cone_rows, false);
   for (const auto& r : homogeneous(d.K_rows, true)) rows.push_back(r);
-  return !feasible(rows);
+  return !feasible_filtered(rows);
 }
 
 // A polynomial with coefficients in Q(√d): A(s) + √d B(s).

@@ -13,7 +13,9 @@
 
 #include "../bench/random_parts.h"  // the physics studies' seeded random parts
 #include "filter_test_util.h"
+#include "fixel/design.h"
 #include "fixel/guaranteed.h"
+#include "fixel/internal/cone3.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/io.h"
@@ -381,6 +383,71 @@ GTEST_TEST(Filter, SustainedMembershipAgreesWithTheExactJamAndEscapeTests) {
   EXPECT_GT(in, 0);  // both answers occur
   EXPECT_LT(in, 200);
   EXPECT_GT(filter_stats().at(FilterSite::kJam).certified, 0);
+}
+
+// J's Fourier–Motzkin feasibility over Q(√2): random systems give the
+// exact run's answer on enclosures (or lazily), both answers occur, and a
+// system whose elimination makes an exact zero (a row and its negation)
+// cannot be decided on enclosures and falls back.
+GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin) {
+  using internal::Q2;
+  using internal::Row;
+  std::mt19937_64 rng(31);
+  const Rational root(2);
+  auto q2 = [&] { return Q2(test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -2, 2, 5), root); };
+  ForceExactScope filtered(false);
+  reset_filter_stats();
+  int feasible = 0;
+  const int systems = 300;
+  for (int k = 0; k < systems; ++k) {
+    std::vector<Row<Q2>> rows(3 + k % 5);
+    for (auto& r : rows) {
+      r.a = {q2(), q2(), q2()};
+      r.b = k % 3 == 0 ? q2() : Q2(0);
+      r.strict = rng() % 2 == 0;
+    }
+    const bool answer = internal::feasible_filtered(rows);
+    EXPECT_EQ(answer, internal::feasible(rows)) << "system " << k;
+    feasible += answer;
+  }
+  EXPECT_GT(feasible, 0);
+  EXPECT_LT(feasible, systems);
+  const FilterCounts random = filter_stats().at(FilterSite::kFeasibility);
+  EXPECT_EQ(random.certified + random.fallbacks, systems);
+  EXPECT_GT(random.certified, systems * 9 / 10);
+
+  // a·x > 0 and −a·x ≥ 0: eliminating x₃ combines them into the zero row,
+  // which no enclosure certifies. Infeasible, decided lazily.
+  reset_filter_stats();
+  const Q2 a0(Rational(1), Rational(1), root), a1(Rational(1, 3)), a2(Rational(0), Rational(1), root);
+  std::vector<Row<Q2>> opposite(2);
+  opposite[0].a = {a0, a1, a2};
+  opposite[0].b = Q2(0);
+  opposite[0].strict = true;
+  opposite[1].a = {-a0, -a1, -a2};
+  opposite[1].b = Q2(0);
+  EXPECT_FALSE(internal::feasible_filtered(opposite));
+  EXPECT_FALSE(internal::feasible(opposite));
+  opposite[0].strict = false;  // a·x = 0 is a plane: feasible
+  EXPECT_TRUE(internal::feasible_filtered(opposite));
+  EXPECT_EQ(filter_stats().at(FilterSite::kFeasibility).fallbacks, 2);
+}
+
+// Fixture design ranks layouts by J's region, built with the feasibility
+// filter thousands of times: the ranking's JSON is the exact run's.
+GTEST_TEST(Filter, DesignOfThePolygonIsIdenticalJsonWithAndWithoutFilters) {
+  const Scene polygon = test::scene_file("polygon");
+  std::vector<DesignCandidate> all = boundary_candidates(polygon, std::nullopt), candidates;
+  for (std::size_t k = 0; k < all.size(); k += 3) candidates.push_back(all[k]);  // 8 of the 24
+  DesignOptions options;
+  options.resolution = Rational(1, 64);
+  options.jobs = 1;
+  auto json = [&] { return masked(design_json(polygon, design(polygon, candidates, options), options, std::nullopt)); };
+  reset_filter_stats();
+  const std::string filtered = run(false, json);
+  EXPECT_NE(filtered.find("\"rank\""), std::string::npos);  // layouts were ranked
+  EXPECT_GT(filter_stats().at(FilterSite::kFeasibility).certified, 0);
+  EXPECT_EQ(filtered, run(true, json));
 }
 
 // IN answers certified on enclosures keep their exact magnitudes waiting

@@ -31,11 +31,13 @@ enum class FilterSite {
   kInMagnitudes,  ///< The magnitudes of a region IN answer the pre-test certified: settled from their
                   ///< enclosures (certainly empty, or unable to change their merged run's), or
                   ///< computed on the exact path (fallback).
+  kFeasibility,   ///< Fourier–Motzkin feasibility of a cone system over Q(√d) at an exact seated pose
+                  ///< (J's pieces, and the J region's IN and OUT tests), run on enclosures first.
   kCount,
 };
 
 /// "lemke", "lemke tie", "ray test", "out test", "orientation", "cone", "membership", "jam test",
-/// "region test", "in magnitudes".
+/// "region test", "in magnitudes", "feasibility".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and

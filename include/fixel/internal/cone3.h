@@ -13,9 +13,16 @@
 #include "fixel/internal/interval_arith.h"
 #include "fixel/internal/quadratic_field.h"
 
+#include <CGAL/Lazy_exact_nt.h>
+
 namespace fixel::internal {
 
 inline Q2 lift_number(const Rational& x, const Q2*) { return Q2(x); }
+
+// Q(√d) with CGAL's lazy evaluation: intervals, and the exact value of a
+// node computed only when its interval cannot give a sign.
+using LazyQ2 = CGAL::Lazy_exact_nt<Q2>;
+inline int sign(const LazyQ2& x) { return static_cast<int>(CGAL::sign(x)); }
 inline IV lift_number(const Rational& x, const IV*) { return enclose(x); }
 
 template <class NT>
@@ -115,6 +122,47 @@ bool feasible(std::vector<Row<NT>> rows) {
     rows = std::move(next);
   }
   return true;
+}
+
+// feasible() decided on enclosures first (docs/theory.md §10.2): each row
+// over Q(√d) enclosed entry by entry, then the same Fourier–Motzkin on the
+// enclosures. Every sign it takes is certified, so it makes the exact run's
+// choices and combines enclosures of the exact run's rows: its answer is
+// the exact one. An uncertain sign (an exact zero of a combination, say)
+// sends the system to the exact run. Over intervals it is feasible().
+inline bool feasible_filtered(std::vector<Row<IV>> rows) { return feasible(std::move(rows)); }
+inline bool feasible_filtered(const std::vector<Row<Q2>>& rows) {
+  if (!force_exact()) {
+    std::vector<Row<IV>> enclosed(rows.size());
+    {
+      Protect guard;
+      auto enclose_q2 = [](const Q2& x) {
+        const FI f = to_interval_q2(x);
+        return IV(f.inf(), f.sup());
+      };
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        for (int k = 0; k < 3; ++k) enclosed[r].a[k] = enclose_q2(rows[r].a[k]);
+        enclosed[r].b = enclose_q2(rows[r].b);
+        enclosed[r].strict = rows[r].strict;
+      }
+    }
+    try {
+      const bool answer = feasible(std::move(enclosed));
+      record_filter(FilterSite::kFeasibility, true);
+      return answer;
+    } catch (const Undecided&) {
+      record_filter(FilterSite::kFeasibility, false);
+    }
+    // The same run on lazy numbers: an exact value only where a sign needs it.
+    std::vector<Row<LazyQ2>> lazy(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      for (int k = 0; k < 3; ++k) lazy[r].a[k] = LazyQ2(rows[r].a[k]);
+      lazy[r].b = LazyQ2(rows[r].b);
+      lazy[r].strict = rows[r].strict;
+    }
+    return feasible(std::move(lazy));
+  }
+  return feasible(rows);
 }
 
 template <class NT>
