@@ -160,7 +160,7 @@ int affine_dimension(const Polyhedron& P) {
     for (std::size_t k = 0; k < P.closed.size(); ++k) add_row(P.closed[k], slack_of[k]);
     for (const auto& h : P.strict) add_row(h, -1);  // the closure's rows
     VectorQ objective = VectorQ::Zero(n);
-    for (int j = 0; j < m; ++j) objective[P.dim + j] = -1;  // minimise −Σ s
+    for (int j = 0; j < m; ++j) objective[P.dim + j] = -1;                        // minimise −Σ s
     const internal::LpResult lp = internal::solve_lp(n, rows, objective, P.dim);  // 0 <= s <= 1
     if (lp.status != internal::LpStatus::kOptimal)  // the closure of a non-empty P is feasible and s is bounded
       throw InternalError("affine_dimension: the slack LP of a non-empty polyhedron is not optimal");
