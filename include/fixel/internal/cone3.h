@@ -23,6 +23,12 @@ inline Q2 lift_number(const Rational& x, const Q2*) { return Q2(x); }
 // node computed only when its interval cannot give a sign.
 using LazyQ2 = CGAL::Lazy_exact_nt<Q2>;
 inline int sign(const LazyQ2& x) { return static_cast<int>(CGAL::sign(x)); }
+// The certified sign of a CGAL interval; throws Undecided when it straddles 0.
+inline int sign(const FI& x) {
+  const int s = certain_sign(x);
+  if (s == kUndecided) throw Undecided();
+  return s;
+}
 inline IV lift_number(const Rational& x, const IV*) { return enclose(x); }
 
 template <class NT>
@@ -133,20 +139,14 @@ bool feasible(std::vector<Row<NT>> rows) {
 inline bool feasible_filtered(std::vector<Row<IV>> rows) { return feasible(std::move(rows)); }
 inline bool feasible_filtered(const std::vector<Row<Q2>>& rows) {
   if (!force_exact()) {
-    std::vector<Row<IV>> enclosed(rows.size());
-    {
-      Protect guard;
-      auto enclose_q2 = [](const Q2& x) {
-        const FI f = to_interval_q2(x);
-        return IV(f.inf(), f.sup());
-      };
+    try {
+      Protect guard;  // the whole run in CGAL's intervals, one rounding-mode switch
+      std::vector<Row<FI>> enclosed(rows.size());
       for (std::size_t r = 0; r < rows.size(); ++r) {
-        for (int k = 0; k < 3; ++k) enclosed[r].a[k] = enclose_q2(rows[r].a[k]);
-        enclosed[r].b = enclose_q2(rows[r].b);
+        for (int k = 0; k < 3; ++k) enclosed[r].a[k] = to_interval_q2(rows[r].a[k]);
+        enclosed[r].b = to_interval_q2(rows[r].b);
         enclosed[r].strict = rows[r].strict;
       }
-    }
-    try {
       const bool answer = feasible(std::move(enclosed));
       record_filter(FilterSite::kFeasibility, true);
       return answer;
