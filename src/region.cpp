@@ -102,6 +102,7 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
   // IN with enclosed magnitudes waits for the merge; the rest: exact.
   if (ctx.method == ConeMethod::kTight && !force_exact())
     if (internal::IntervalTarget* it = ctx.target.interval_target()) {
+      const long lp_before = ctx.stats.lp_tests;  // what the pre-test counted goes if the exact path runs
       std::optional<internal::MagnitudeBounds> bounds;
       const internal::Quick q =
           internal::quick_segment(seg.enclosures(), seg.leg_enclosures(), ctx.scene.body.p_AoCm_A, ctx.mu,
@@ -130,6 +131,7 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
         return out;
       }
       if (q == internal::Quick::kIn && ctx.deferred) internal::record_filter(FilterSite::kInMagnitudes, false);
+      ctx.stats.lp_tests = lp_before;
     }
   return classify_exact(ctx, seg.exact());
 }

@@ -137,6 +137,7 @@ bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, con
 // cone with no certain hit (the exact path's OUT test, and its LP count,
 // depend on it).
 Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
+  target.paired_generators = segment;  // a segment's cones: (d, lo), (d, hi) per force part d
   boost::container::small_vector<boost::container::small_vector<int, 8>, 2> hits(cones.size());
   FGens all;
   boost::container::small_vector<int, 16> all_hits;
@@ -168,6 +169,12 @@ Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
 // first to last), when certified.
 void in_bounds(const Cones& cones, const FVec2& first, const FVec2& last, const IntervalTarget& target,
                std::optional<MagnitudeBounds>* bounds) {
+  if (!target.in_answers_have_magnitudes()) {  // a cone target: no magnitudes, as the exact answer says
+    MagnitudeBounds none;
+    none.empty = true;
+    *bounds = none;
+    return;
+  }
   FGens gens;
   for (const auto& cone : cones) gens.insert(gens.end(), cone.begin(), cone.end());
   MagnitudeBounds m;
@@ -308,7 +315,10 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclo
         forces.push_back(ds);
         if (!same) forces.push_back(de);     // equal vectors: no undecidable cross product below
         FGens& gens = cones.emplace_back();  // filled in place: no small_vector move
+        // de = ds exactly (one leg): its two generators would repeat ds's,
+        // the same cone, and make cross products no enclosure shows nonzero.
         for (const FVec2& d : {ds, de}) {
+          if (same && gens.size() == 2) break;
           FI lo, hi;
           moment_range(r, d, lo, hi);
           gens.push_back({d.x, d.y, lo});

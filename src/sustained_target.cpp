@@ -3,12 +3,14 @@
 // friction), and J as the pushing region's target (exact, or undecided
 // with an enclosed q*).
 #include <algorithm>
+#include <optional>
 #include <variant>
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/sustained_data.h"
+#include "fixel/internal/sustained_filter.h"
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
 
@@ -170,11 +172,36 @@ std::vector<Polynomial> j_polynomials(const Data<IV>&, const std::vector<std::ar
 
 // The J target of the region. An undecided sign (enclosed q*) makes the
 // question's answer "no", so the segment stays PARTIAL: never a wrong in/out.
-class SustainedTarget final : public RegionTarget {
+class SustainedTarget final : public RegionTarget, public IntervalTarget {
  public:
-  explicit SustainedTarget(std::shared_ptr<const SustainedData> d) : d_(std::move(d)) {}
+  explicit SustainedTarget(std::shared_ptr<const SustainedData> d) : d_(std::move(d)) {
+    if (const auto* exact = std::get_if<Data<Q2>>(&d_->data)) enclosed_.emplace(*exact);
+  }
   const char* push_model() const override { return "sustained"; }
   const char* name() const override { return "J"; }
+
+  // The region's interval pre-test (exact q* only): segments decided on
+  // enclosures of J's rows and of the segment's cone, with the exact
+  // test's steps and LP count; points take the exact path. An IN answer
+  // has no magnitudes (J is a cone), so nothing waits for the exact path.
+  IntervalTarget* interval_target() override { return enclosed_ ? this : nullptr; }
+  bool answers_points() const override { return false; }
+  bool in_answers_have_magnitudes() const override { return false; }
+  bool interval_magnitudes(const FGen&, FMagnitudes&) const override { return false; }
+  int interval_ray_hits(const FGen&) const override { return kUndecided; }  // unused: the tests below take cones
+  bool out_test_sees_hits() const override { return true; }
+  int interval_contains(const FGen* gens, const int*, std::size_t n) const override {
+    long lp = 0;
+    const int in = enclosed_->cone_in(gens, n, paired_generators, lp);
+    if (in != kUndecided && stats) stats->lp_tests += lp;
+    return in;
+  }
+  int certify_out_test(const FGen* gens, std::size_t n) override {
+    long lp = 0;
+    const int missed = enclosed_->cone_misses(gens, n, paired_generators, lp);
+    if (missed != kUndecided && stats) stats->lp_tests += lp;
+    return missed;
+  }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
     bool in = false;
@@ -215,6 +242,7 @@ class SustainedTarget final : public RegionTarget {
 
  private:
   std::shared_ptr<const SustainedData> d_;
+  std::optional<JEnclosure> enclosed_;
 };
 
 }  // namespace

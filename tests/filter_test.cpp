@@ -450,6 +450,47 @@ GTEST_TEST(Filter, DesignOfThePolygonIsIdenticalJsonWithAndWithoutFilters) {
   EXPECT_EQ(filtered, run(true, json));
 }
 
+// J's region pre-test (src/sustained_filter.cpp) on designed layouts of a
+// B-spline part (curved pieces: full-rank cones) and of the polygon
+// (straight pieces: a frictionless push gives a planar cone), with and
+// without pusher friction: the region JSON, LP test counts included, is
+// the exact path's, and the pre-test decides most segments.
+GTEST_TEST(Filter, SustainedRegionsOfDesignedLayoutsAreIdenticalJsonAndMostSegmentsArePreTested) {
+  for (const char* name : {"blob", "polygon"}) {
+    SCOPED_TRACE(name);
+    const Scene part = test::scene_file(name);
+    const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
+    const long n = static_cast<long>(candidates.size());
+    DesignOptions options;
+    reset_filter_stats();
+    int layouts = 0;
+    for (long index = 0; index < triple_count(n) && layouts < 3; index += 37) {
+      SustainedSet J;
+      const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
+      try {
+        J = sustained_set(scene, false);
+      } catch (const Error&) {  // a singular layout: no J to test
+        continue;
+      }
+      if (J.empty) continue;
+      ++layouts;
+      for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+        auto region = [&] {
+          const auto target = sustained_target(J);
+          RegionOptions o;
+          o.resolution = Rational(1, 64);
+          o.pusher_mu = mu;
+          return masked(region_json(scene, compute_region(scene, *target, o)));
+        };
+        EXPECT_EQ(run(false, region), run(true, region)) << "triple " << index << ", pusher mu " << to_string(mu);
+      }
+    }
+    EXPECT_EQ(layouts, 3);
+    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+    EXPECT_GT(pre.certified, 4 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
+  }
+}
+
 // IN answers certified on enclosures keep their exact magnitudes waiting
 // until the merge, which computes only those that can decide a run's ends:
 // a polyline ellipse (long IN runs of straight pieces and corners) gives

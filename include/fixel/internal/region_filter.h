@@ -62,6 +62,15 @@ class IntervalTarget {
   // Whether test_point is contains_cone (IN or OUT), so that the point
   // pre-test applies; false for a target whose points can be partial.
   virtual bool answers_points() const { return true; }
+  // Set by the pre-test before it asks interval_contains and
+  // certify_out_test: whether the generators come in pairs (2k, 2k + 1)
+  // with the same exact force part and two moments (a segment's tight
+  // cone), so that a target may use that structure (a cross product of a
+  // pair has an exactly zero moment part, which no enclosure shows).
+  bool paired_generators = false;
+  // False for a cone target (J): its IN answers carry no magnitudes
+  // (half_line, Magnitudes{}), so a certified IN is the whole answer.
+  virtual bool in_answers_have_magnitudes() const { return true; }
 };
 
 // Enclosure of the magnitudes an IN answer reports: certified non-empty,

@@ -1,0 +1,191 @@
+#include "fixel/internal/sustained_filter.h"
+
+namespace fixel::internal {
+
+namespace {
+
+FI dot(const FGen& a, const FGen& x) { return a[0] * x[0] + a[1] * x[1] + a[2] * x[2]; }
+
+FGen cross(const FGen& a, const FGen& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+FGen enclose(const std::array<Q2, 3>& v) { return {to_interval_q2(v[0]), to_interval_q2(v[1]), to_interval_q2(v[2])}; }
+
+// Whether every generator satisfies a·x ≥ 0 (closed) or a·x > 0 (strict):
+// 1, 0, kUndecided. A conjunction: one certain failure decides it.
+int all_satisfy(const FGen& a, const FGen* gens, std::size_t n, bool strict) {
+  bool undecided = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    const int s = certain_sign(dot(a, gens[k]));
+    if (s == kUndecided)
+      undecided = true;
+    else if (strict ? s <= 0 : s < 0)
+      return 0;
+  }
+  return undecided ? kUndecided : 1;
+}
+
+// Whether every generator has a·x < 0 (the exact test's "strictly outside"),
+// or a·x <= 0 (`closed`): 1, 0, kUndecided.
+int all_outside(const FGen& a, const FGen* gens, std::size_t n, bool closed) {
+  bool undecided = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    const int s = certain_sign(dot(a, gens[k]));
+    if (s == kUndecided)
+      undecided = true;
+    else if (closed ? s > 0 : s >= 0)
+      return 0;
+  }
+  return undecided ? kUndecided : 1;
+}
+
+// g_i × g_j; for a pair (d, m_i), (d, m_j) with one exact force part d, the
+// exact form ((m_j − m_i) d_y, −(m_j − m_i) d_x, 0), whose zero is a point.
+FGen pair_cross(const FGen* gens, std::size_t i, std::size_t j, bool paired) {
+  if (!paired || i / 2 != j / 2) return cross(gens[i], gens[j]);
+  const FI dm = gens[j][2] - gens[i][2];
+  return {dm * gens[i][1], -(dm * gens[i][0]), FI(0)};
+}
+
+// Closed rows of cone(gens) when it certainly has full rank: every pair's
+// cross product that supports the cone, as cone_facet_normals takes them
+// (duplicates do no harm to the elimination). False when the rank, a cross
+// product's being nonzero or a side is not certain.
+bool facets(const FGen* gens, std::size_t n, bool paired, std::vector<FGen>& out) {
+  bool full_rank = false;
+  for (std::size_t i = 0; i < n && !full_rank; ++i)
+    for (std::size_t j = i + 1; j < n && !full_rank; ++j) {
+      const FGen c = pair_cross(gens, i, j, paired);
+      for (std::size_t k = j + 1; k < n && !full_rank; ++k) {
+        const int s = certain_sign(dot(c, gens[k]));
+        full_rank = s == 1 || s == -1;
+      }
+    }
+  if (!full_rank) return false;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const FGen c = pair_cross(gens, i, j, paired);
+      if (certain_sign(c[0]) == kUndecided && certain_sign(c[1]) == kUndecided && certain_sign(c[2]) == kUndecided)
+        return false;  // possibly the zero vector, which the exact path skips
+      bool nonneg = true, nonpos = true;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (k == i || k == j) continue;  // on the plane by construction
+        const int s = certain_sign(dot(c, gens[k]));
+        if (s == kUndecided) return false;
+        nonneg = nonneg && s >= 0;
+        nonpos = nonpos && s <= 0;
+      }
+      if (nonneg && nonpos) return false;  // every generator on one plane: not full rank after all
+      if (nonneg) out.push_back(c);
+      if (nonpos) out.push_back({-c[0], -c[1], -c[2]});
+    }
+  return true;
+}
+
+// Whether some x ≠ 0 of cone(gens) meets the constraints (rows over x):
+// 1, 0, kUndecided. Up to three generators, over the weights λ ≥ 0 of
+// x = Σ λ_k g_k (no facets needed, whatever the cone's rank); more, over x
+// with the cone's facets when its full rank is certain. Either is the same
+// question as the exact test's Fourier–Motzkin system.
+int cone_meets(const FGen* gens, std::size_t n, bool paired, const std::vector<Row<FI>>& constraints) {
+  std::vector<Row<FI>> rows;
+  if (n <= 3) {
+    for (const auto& c : constraints) {
+      Row<FI> r{{FI(0), FI(0), FI(0)}, c.b, c.strict};
+      for (std::size_t k = 0; k < n; ++k) r.a[k] = dot(c.a, gens[k]);
+      rows.push_back(r);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      Row<FI> r{{FI(0), FI(0), FI(0)}, FI(0), false};
+      r.a[k] = FI(1);
+      rows.push_back(r);
+    }
+  } else {
+    std::vector<FGen> cone_rows;
+    if (!facets(gens, n, paired, cone_rows)) return kUndecided;
+    for (const FGen& a : cone_rows) rows.push_back({a, FI(0), false});
+    rows.insert(rows.end(), constraints.begin(), constraints.end());
+  }
+  try {
+    return feasible(std::move(rows)) ? 1 : 0;
+  } catch (const Undecided&) {
+    return kUndecided;
+  }
+}
+
+}  // namespace
+
+JEnclosure::JEnclosure(const Data<Q2>& d) {
+  Protect guard;
+  for (const auto& a : d.K_rows) k_rows_.push_back(enclose(a));
+  normaliser_ = enclose(d.normaliser);
+  for (const auto& jam : d.jams) {
+    auto& f = jam_facets_.emplace_back();
+    for (const auto& a : jam.facets) f.push_back(enclose(a));
+  }
+}
+
+// cone_in_J (sustained_target.cpp), step by step.
+int JEnclosure::cone_in(const FGen* gens, std::size_t n, bool paired, long& lp_tests) const {
+  Protect guard;
+  bool undecided = false;
+  for (const FGen& a : k_rows_) {  // every generator strictly inside K
+    const int s = all_satisfy(a, gens, n, true);
+    if (s == 0) return 0;
+    undecided = undecided || s == kUndecided;
+  }
+  if (undecided) return kUndecided;
+  for (const auto& jam : jam_facets_) {
+    // Separated: some facet of the jam cone with the whole cone strictly outside.
+    bool separated = false, open = false;
+    for (const FGen& a : jam) {
+      const int s = all_outside(a, gens, n, false);
+      separated = separated || s == 1;
+      open = open || s == kUndecided;
+    }
+    if (separated) continue;
+    if (open) return kUndecided;
+    ++lp_tests;  // the exact test's system: the cone, the jam cone, normaliser·x ≥ 1
+    std::vector<Row<FI>> rows;
+    for (const FGen& a : jam) rows.push_back({a, FI(0), false});
+    rows.push_back({normaliser_, FI(1), false});
+    const int meets = cone_meets(gens, n, paired, rows);
+    if (meets != 0) return meets == 1 ? 0 : kUndecided;
+  }
+  return 1;
+}
+
+// cone_misses_J (sustained_target.cpp), step by step.
+int JEnclosure::cone_misses(const FGen* gens, std::size_t n, bool paired, long& lp_tests) const {
+  Protect guard;
+  bool undecided = false;
+  for (const FGen& a : k_rows_) {  // the cone outside int K
+    const int s = all_outside(a, gens, n, true);
+    if (s == 1) return 1;
+    undecided = undecided || s == kUndecided;
+  }
+  for (const auto& jam : jam_facets_) {  // the cone inside one jam cone
+    bool inside = true, open = false;
+    for (const FGen& a : jam) {
+      const int s = all_satisfy(a, gens, n, false);
+      inside = inside && s == 1;
+      open = open || s == kUndecided;
+      if (s == 0) {
+        inside = false;
+        open = false;
+        break;
+      }
+    }
+    if (inside) return 1;
+    undecided = undecided || open;
+  }
+  if (undecided) return kUndecided;
+  ++lp_tests;  // the exact test's system: the cone and int K
+  std::vector<Row<FI>> rows;
+  for (const FGen& a : k_rows_) rows.push_back({a, FI(0), true});
+  const int meets = cone_meets(gens, n, paired, rows);
+  return meets == kUndecided ? kUndecided : (meets == 1 ? 0 : 1);
+}
+
+}  // namespace fixel::internal
