@@ -3,6 +3,8 @@
 // Q(√d), or Boost.Interval for certified enclosures): facets and extreme
 // rays of cones, and Fourier–Motzkin feasibility with strict rows
 // (docs/theory.md §10.2). `sign(NT)` must be exact, or throw Undecided.
+// (Over CGAL's Interval_nt, src/sustained_filter.cpp: the certified sign,
+// Undecided when the interval straddles 0.)
 
 #include <array>
 #include <string>
@@ -13,26 +15,20 @@
 #include "fixel/internal/interval_arith.h"
 #include "fixel/internal/quadratic_field.h"
 
-#include <CGAL/Lazy_exact_nt.h>
-
 namespace fixel::internal {
 
 inline Q2 lift_number(const Rational& x, const Q2*) { return Q2(x); }
+inline IV lift_number(const Rational& x, const IV*) { return enclose(x); }
 
-// Q(√d) with CGAL's lazy evaluation: intervals, and the exact value of a
-// node computed only when its interval cannot give a sign.
-using LazyQ2 = CGAL::Lazy_exact_nt<Q2>;
-inline int sign(const LazyQ2& x) { return static_cast<int>(CGAL::sign(x)); }
+template <class NT>
+using A3 = std::array<NT, 3>;
+
 // The certified sign of a CGAL interval; throws Undecided when it straddles 0.
 inline int sign(const FI& x) {
   const int s = certain_sign(x);
   if (s == kUndecided) throw Undecided();
   return s;
 }
-inline IV lift_number(const Rational& x, const IV*) { return enclose(x); }
-
-template <class NT>
-using A3 = std::array<NT, 3>;
 
 template <class NT>
 NT dot3(const A3<NT>& a, const A3<NT>& b) {
@@ -130,40 +126,14 @@ bool feasible(std::vector<Row<NT>> rows) {
   return true;
 }
 
-// feasible() decided on enclosures first (docs/theory.md §10.2): each row
-// over Q(√d) enclosed entry by entry, then the same Fourier–Motzkin on the
-// enclosures. Every sign it takes is certified, so it makes the exact run's
-// choices and combines enclosures of the exact run's rows: its answer is
-// the exact one. An uncertain sign (an exact zero of a combination, say)
-// sends the system to the exact run. Over intervals it is feasible().
+// feasible() decided on enclosures first (src/cone3.cpp, docs/theory.md
+// §10.2): the same elimination on enclosures of the rows, each sign
+// certified by its enclosure or, where that cannot tell (an exact zero
+// the elimination makes), by the exact row, computed then from the exact
+// rows it combines. Every choice is the exact run's, so the answer is the
+// exact one. Over intervals it is feasible().
 inline bool feasible_filtered(std::vector<Row<IV>> rows) { return feasible(std::move(rows)); }
-inline bool feasible_filtered(const std::vector<Row<Q2>>& rows) {
-  if (!force_exact()) {
-    try {
-      Protect guard;  // the whole run in CGAL's intervals, one rounding-mode switch
-      std::vector<Row<FI>> enclosed(rows.size());
-      for (std::size_t r = 0; r < rows.size(); ++r) {
-        for (int k = 0; k < 3; ++k) enclosed[r].a[k] = to_interval_q2(rows[r].a[k]);
-        enclosed[r].b = to_interval_q2(rows[r].b);
-        enclosed[r].strict = rows[r].strict;
-      }
-      const bool answer = feasible(std::move(enclosed));
-      record_filter(FilterSite::kFeasibility, true);
-      return answer;
-    } catch (const Undecided&) {
-      record_filter(FilterSite::kFeasibility, false);
-    }
-    // The same run on lazy numbers: an exact value only where a sign needs it.
-    std::vector<Row<LazyQ2>> lazy(rows.size());
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      for (int k = 0; k < 3; ++k) lazy[r].a[k] = LazyQ2(rows[r].a[k]);
-      lazy[r].b = LazyQ2(rows[r].b);
-      lazy[r].strict = rows[r].strict;
-    }
-    return feasible(std::move(lazy));
-  }
-  return feasible(rows);
-}
+bool feasible_filtered(const std::vector<Row<Q2>>& rows);
 
 template <class NT>
 bool is_zero3(const A3<NT>& a) {

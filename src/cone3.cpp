@@ -1,0 +1,142 @@
+// Fourier–Motzkin feasibility over Q(√d) on enclosures, with exact rows
+// computed only where a sign needs them (internal/cone3.h).
+#include <deque>
+
+#include "fixel/internal/cone3.h"
+
+namespace fixel::internal {
+
+namespace {
+
+// A row of the elimination: its enclosure, and how its exact form is made
+// (an input row, or wp·P + wn·N eliminating unknown j), computed on demand.
+struct Node {
+  A3<FI> a;
+  FI b;
+  bool strict = false;
+  int p = -1, n = -1, j = -1;  // parents and the unknown eliminated (−1: an input row)
+  int exact = -1;              // index of the exact row, once computed
+};
+
+class Elimination {
+ public:
+  explicit Elimination(const std::vector<Row<Q2>>& rows) : input_(rows) {
+    nodes_.reserve(4 * rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      Node x;
+      for (int k = 0; k < 3; ++k) x.a[k] = to_interval_q2(rows[r].a[k]);
+      x.b = to_interval_q2(rows[r].b);
+      x.strict = rows[r].strict;
+      x.p = static_cast<int>(r);  // an input row: p indexes input_
+      nodes_.push_back(std::move(x));
+    }
+  }
+
+  bool used_exact() const { return used_exact_; }
+
+  // feasible() (cone3.h), step for step, on nodes.
+  bool run() {
+    std::vector<int> rows(nodes_.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) rows[r] = static_cast<int>(r);
+    for (int j = 2; j >= -1; --j) {
+      std::vector<int> pos, neg, next;
+      for (const int r : rows) {
+        bool zero = true;
+        for (int k = 0; k <= std::max(j, 0) && zero; ++k) zero = sign_of(r, k) == 0;
+        if (j < 0 || zero) {
+          bool all_zero = true;
+          for (int k = 0; k < 3; ++k) all_zero = all_zero && sign_of(r, k) == 0;
+          if (all_zero) {
+            const int sb = sign_of(r, 3);
+            if (nodes_[r].strict ? sb >= 0 : sb > 0) return false;
+            continue;
+          }
+        }
+        if (j < 0) continue;
+        const int s = sign_of(r, j);
+        (s > 0 ? pos : (s < 0 ? neg : next)).push_back(r);
+      }
+      if (j < 0) return true;
+      if (pos.size() * neg.size() + next.size() > kMaxRows)
+        throw InternalError("sustained set: Fourier-Motzkin exceeded " + std::to_string(kMaxRows) + " rows");
+      for (const int P : pos)
+        for (const int N : neg) {
+          Node x;
+          const FI wp = -nodes_[N].a[j], wn = nodes_[P].a[j];
+          for (int k = 0; k < 3; ++k) x.a[k] = wp * nodes_[P].a[k] + wn * nodes_[N].a[k];
+          x.a[j] = FI(0);
+          x.b = wp * nodes_[P].b + wn * nodes_[N].b;
+          x.strict = nodes_[P].strict || nodes_[N].strict;
+          x.p = P;
+          x.n = N;
+          x.j = j;
+          next.push_back(static_cast<int>(nodes_.size()));
+          nodes_.push_back(std::move(x));
+        }
+      rows = std::move(next);
+    }
+    return true;
+  }
+
+ private:
+  // Sign of coefficient k (3: the right side) of row r: its enclosure's
+  // when certain, else the exact row's.
+  int sign_of(int r, int k) {
+    const FI& x = k < 3 ? nodes_[r].a[k] : nodes_[r].b;
+    const int s = certain_sign(x);
+    if (s != kUndecided) return s;
+    const Row<Q2>& e = exact(r);
+    const Protect_nearest nearest(CGAL_FE_TONEAREST);  // exact signs in the default rounding mode
+    return sign(k < 3 ? e.a[k] : e.b);
+  }
+
+  // The exact row r, from its parents' exact rows (memoised); its
+  // enclosure is then narrowed to the exact values' (a zero becomes a
+  // point), so that rows made from it later are tighter.
+  const Row<Q2>& exact(int r) {
+    if (nodes_[r].exact >= 0) return exact_[nodes_[r].exact];
+    used_exact_ = true;
+    const Node x = nodes_[r];  // a copy: the parents' exact rows are made first
+    if (x.j < 0) {
+      exact_.push_back(input_[x.p]);
+    } else {
+      const Row<Q2>& P = exact(x.p);  // exact_ is a deque: references stay valid
+      const Row<Q2>& N = exact(x.n);
+      const int j = x.j;
+      const Protect_nearest nearest(CGAL_FE_TONEAREST);  // exact arithmetic in the default rounding mode
+      const Q2 wp = -N.a[j], wn = P.a[j];
+      Row<Q2> out;
+      for (int k = 0; k < 3; ++k) out.a[k] = wp * P.a[k] + wn * N.a[k];
+      out.a[j] = Q2(0);
+      out.b = wp * P.b + wn * N.b;
+      out.strict = P.strict || N.strict;
+      exact_.push_back(std::move(out));
+    }
+    Node& y = nodes_[r];
+    y.exact = static_cast<int>(exact_.size()) - 1;
+    const Row<Q2>& e = exact_.back();
+    for (int k = 0; k < 3; ++k) y.a[k] = to_interval_q2(e.a[k]);
+    y.b = to_interval_q2(e.b);
+    return e;
+  }
+
+  using Protect_nearest = CGAL::Protect_FPU_rounding<true>;
+
+  const std::vector<Row<Q2>>& input_;
+  std::vector<Node> nodes_;
+  std::deque<Row<Q2>> exact_;
+  bool used_exact_ = false;
+};
+
+}  // namespace
+
+bool feasible_filtered(const std::vector<Row<Q2>>& rows) {
+  if (force_exact()) return feasible(rows);
+  Protect guard;  // the enclosures' arithmetic; exact rows switch back to nearest
+  Elimination e(rows);
+  const bool answer = e.run();
+  record_filter(FilterSite::kFeasibility, !e.used_exact());
+  return answer;
+}
+
+}  // namespace fixel::internal
