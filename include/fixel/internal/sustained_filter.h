@@ -1,7 +1,7 @@
 #pragma once
 // J's region questions on enclosures (src/sustained_filter.cpp): the
 // interval pre-test of the sustained target, so that a region segment's
-// cone is tested against J without one exact number (docs/theory.md §10.2).
+// cone is tested against J without one exact number (docs/theory.md §10.5).
 // Each answer replays the exact test's steps (sustained_target.cpp) on a
 // certified sign, and counts the LP tests it stands for; any sign the
 // enclosures leave open gives kUndecided and the exact test runs.
