@@ -1,6 +1,7 @@
 // Fourier–Motzkin feasibility over Q(√d) on enclosures, with exact rows
 // computed only where a sign needs them (internal/cone3.h).
 #include <deque>
+#include <optional>
 
 #include "fixel/internal/cone3.h"
 
@@ -18,17 +19,38 @@ struct Node {
   int exact = -1;              // index of the exact row, once computed
 };
 
+// An enclosure of x: CGAL's, kept in x (rows copied from J's data bring
+// it along, so each entry of J is enclosed once).
+FI enclosure(const Q2& x) {
+  const std::pair<double, double> i = x.to_interval();
+  return FI(i.first, i.second);
+}
+
+// The elimination's vectors, reused from call to call (one per thread; a
+// call does not nest another).
+struct Storage {
+  std::vector<Node> nodes;
+  std::deque<Row<Q2>> exact;
+  std::vector<int> rows, pos, neg, next;
+};
+
+Storage& storage() {
+  thread_local Storage s;
+  return s;
+}
+
 class Elimination {
  public:
   explicit Elimination(const std::vector<Row<Q2>>& rows) : input_(rows) {
-    nodes_.reserve(4 * rows.size());
+    nodes_.clear();
+    exact_.clear();
     for (std::size_t r = 0; r < rows.size(); ++r) {
       Node x;
-      for (int k = 0; k < 3; ++k) x.a[k] = to_interval_q2(rows[r].a[k]);
-      x.b = to_interval_q2(rows[r].b);
+      for (int k = 0; k < 3; ++k) x.a[k] = enclosure(rows[r].a[k]);
+      x.b = enclosure(rows[r].b);
       x.strict = rows[r].strict;
       x.p = static_cast<int>(r);  // an input row: p indexes input_
-      nodes_.push_back(std::move(x));
+      nodes_.push_back(x);
     }
   }
 
@@ -36,10 +58,13 @@ class Elimination {
 
   // feasible() (cone3.h), step for step, on nodes.
   bool run() {
-    std::vector<int> rows(nodes_.size());
+    std::vector<int>&rows = storage_.rows, &pos = storage_.pos, &neg = storage_.neg, &next = storage_.next;
+    rows.resize(nodes_.size());
     for (std::size_t r = 0; r < rows.size(); ++r) rows[r] = static_cast<int>(r);
     for (int j = 2; j >= -1; --j) {
-      std::vector<int> pos, neg, next;
+      pos.clear();
+      neg.clear();
+      next.clear();
       for (const int r : rows) {
         bool zero = true;
         for (int k = 0; k <= std::max(j, 0) && zero; ++k) zero = sign_of(r, k) == 0;
@@ -71,9 +96,9 @@ class Elimination {
           x.n = N;
           x.j = j;
           next.push_back(static_cast<int>(nodes_.size()));
-          nodes_.push_back(std::move(x));
+          nodes_.push_back(x);
         }
-      rows = std::move(next);
+      rows.swap(next);
     }
     return true;
   }
@@ -94,15 +119,14 @@ class Elimination {
   // enclosure is then narrowed to the exact values' (a zero becomes a
   // point), so that rows made from it later are tighter.
   const Row<Q2>& exact(int r) {
-    if (nodes_[r].exact >= 0) return exact_[nodes_[r].exact];
     used_exact_ = true;
     const Node x = nodes_[r];  // a copy: the parents' exact rows are made first
-    if (x.j < 0) {
-      exact_.push_back(input_[x.p]);
-    } else {
-      const Row<Q2>& P = exact(x.p);  // exact_ is a deque: references stay valid
-      const Row<Q2>& N = exact(x.n);
-      const int j = x.j;
+    if (x.j < 0) return input_[x.p];
+    if (x.exact >= 0) return exact_[x.exact];
+    const Row<Q2>& P = exact(x.p);  // exact_ is a deque: references stay valid
+    const Row<Q2>& N = exact(x.n);
+    const int j = x.j;
+    {
       const Protect_nearest nearest(CGAL_FE_TONEAREST);  // exact arithmetic in the default rounding mode
       const Q2 wp = -N.a[j], wn = P.a[j];
       Row<Q2> out;
@@ -123,12 +147,52 @@ class Elimination {
   using Protect_nearest = CGAL::Protect_FPU_rounding<true>;
 
   const std::vector<Row<Q2>>& input_;
-  std::vector<Node> nodes_;
-  std::deque<Row<Q2>> exact_;
+  Storage& storage_ = storage();
+  std::vector<Node>& nodes_ = storage_.nodes;
+  std::deque<Row<Q2>>& exact_ = storage_.exact;
   bool used_exact_ = false;
 };
 
 }  // namespace
+
+std::vector<A3<Q2>> rays_of(const std::vector<A3<Q2>>& rows) {
+  if (force_exact()) return rays_of<Q2>(rows);
+  std::vector<A3<FI>> enclosed;
+  for (const auto& a : rows) enclosed.push_back({enclosure(a[0]), enclosure(a[1]), enclosure(a[2])});
+  std::vector<A3<Q2>> out;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      A3<FI> c_enclosed;
+      bool nonzero = false;
+      {
+        Protect guard;
+        c_enclosed = cross3(enclosed[i], enclosed[j]);
+        for (const FI& x : c_enclosed) nonzero = nonzero || (certain_sign(x) != kUndecided && certain_sign(x) != 0);
+      }
+      std::optional<A3<Q2>> c;  // the exact product, made when needed
+      auto exact = [&]() -> const A3<Q2>& {
+        if (!c) c = cross3(rows[i], rows[j]);
+        return *c;
+      };
+      if (!nonzero && is_zero3(exact())) continue;
+      for (const int side : {1, -1}) {
+        bool ok = true;
+        for (std::size_t k = 0; k < rows.size() && ok; ++k) {
+          if (k == i || k == j) continue;
+          int s = kUndecided;
+          {
+            Protect guard;
+            s = certain_sign(dot3(enclosed[k], c_enclosed));
+          }
+          record_filter(FilterSite::kJam, s != kUndecided);
+          if (s == kUndecided) s = sign(dot3(rows[k], exact()));
+          ok = side * s >= 0;
+        }
+        if (ok) add_unique(out, side > 0 ? exact() : neg3(exact()));
+      }
+    }
+  return out;
+}
 
 bool feasible_filtered(const std::vector<Row<Q2>>& rows) {
   if (force_exact()) return feasible(rows);

@@ -40,6 +40,7 @@ void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed,
     const std::size_t c0 = closed.size();
     for (std::size_t s = 0; s < r; ++s) closed.push_back(facets[s]);
     strict.push_back(neg3(facets[r]));  // violate row r: a·x < 0
+    cache_enclosures(strict.back());
     enumerate_pieces(d, jam + 1, closed, strict);
     strict.pop_back();
     closed.resize(c0);
@@ -110,6 +111,10 @@ Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, cons
       jam.facets = facets_of(jam.gens, mu[i] == 0 && mu[j] == 0);
       d.jams.push_back(std::move(jam));
     }
+  for (const auto& a : d.K_rows) cache_enclosures(a);
+  cache_enclosures(d.normaliser);
+  for (const auto& jam : d.jams)
+    for (const auto& a : jam.facets) cache_enclosures(a);
   std::vector<A3<NT>> closed, strict;
   try {
     enumerate_pieces(d, 0, closed, strict);

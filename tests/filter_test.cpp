@@ -433,6 +433,33 @@ GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin
   EXPECT_EQ(filter_stats().at(FilterSite::kFeasibility).fallbacks, 2);
 }
 
+// J's pieces' extreme rays over Q(√2): the filtered rays_of (enclosures
+// first, exact products for the rays kept) gives the exact one's rays in
+// its order, for random pointed cones (rows around a random axis) with
+// parallel and repeated rows among them.
+GTEST_TEST(Filter, ExtremeRaysOverQuadraticFieldAreTheExactOnesInTheirOrder) {
+  using internal::A3;
+  using internal::Q2;
+  std::mt19937_64 rng(37);
+  const Rational root(2);
+  auto q2 = [&] { return Q2(test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -2, 2, 5), root); };
+  int rays = 0;
+  for (int k = 0; k < 100; ++k) {
+    std::vector<A3<Q2>> rows;
+    for (int r = 0; r < 4 + k % 3; ++r) rows.push_back({q2(), q2(), Q2(Rational(8)) + q2()});  // around +z
+    if (k % 4 == 0) rows.push_back(rows[1]);                                                   // a repeated row
+    if (k % 4 == 1)
+      rows.push_back({rows[0][0] * Q2(Rational(2)), rows[0][1] * Q2(Rational(2)), rows[0][2] * Q2(Rational(2))});
+    const auto filtered = run(false, [&] { return internal::rays_of(rows); });
+    const auto exact = run(true, [&] { return internal::rays_of(rows); });
+    ASSERT_EQ(filtered.size(), exact.size()) << "cone " << k;
+    for (std::size_t r = 0; r < exact.size(); ++r)
+      for (int c = 0; c < 3; ++c) EXPECT_TRUE(filtered[r][c] == exact[r][c]) << "cone " << k << " ray " << r;
+    rays += static_cast<int>(exact.size());
+  }
+  EXPECT_GT(rays, 200);  // the cones have rays to compare
+}
+
 // Fixture design ranks layouts by J's region, built with the feasibility
 // filter thousands of times: the ranking's JSON is the exact run's.
 GTEST_TEST(Filter, DesignOfThePolygonIsIdenticalJsonWithAndWithoutFilters) {

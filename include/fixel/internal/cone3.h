@@ -69,6 +69,13 @@ A3<NT> neg3(const A3<NT>& a) {
   return {-a[0], -a[1], -a[2]};
 }
 
+// Computes and keeps each entry's interval enclosure (Sqrt_extension
+// caches it, and copies carry it): rows enclosed once, not per system.
+inline void cache_enclosures(const A3<Q2>& v) {
+  for (const Q2& x : v) (void)x.to_interval();
+}
+inline void cache_enclosures(const A3<IV>&) {}
+
 template <class NT>
 A3<NT> lift3(const VectorQ& v) {
   const NT* tag = nullptr;
@@ -215,6 +222,11 @@ std::vector<A3<NT>> rays_of(const std::vector<A3<NT>>& rows) {
     }
   return out;
 }
+
+// The same over Q(√d) (src/cone3.cpp): the pairs' cross products and the
+// side tests on enclosures first, exact products only for the rays kept and
+// for signs the enclosures leave open. The same rays in the same order.
+std::vector<A3<Q2>> rays_of(const std::vector<A3<Q2>>& rows);
 
 template <class NT>
 std::vector<Row<NT>> homogeneous(const std::vector<A3<NT>>& rows, bool strict) {
