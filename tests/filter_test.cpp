@@ -385,16 +385,21 @@ GTEST_TEST(Filter, SustainedMembershipAgreesWithTheExactJamAndEscapeTests) {
   EXPECT_GT(filter_stats().at(FilterSite::kJam).certified, 0);
 }
 
+// a + b√2 with small random rationals a and b.
+internal::Q2 random_q2(std::mt19937_64& rng) {
+  return internal::Q2(test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -2, 2, 5), Rational(2));
+}
+
 // J's Fourier–Motzkin feasibility over Q(√2): random systems give the
-// exact run's answer on enclosures (or lazily), both answers occur, and a
-// system whose elimination makes an exact zero (a row and its negation)
-// cannot be decided on enclosures and falls back.
+// exact run's answer (on enclosures, with exact rows where a sign needs
+// one), both answers occur, and a system whose elimination makes an exact
+// zero (a row and its negation) needs exact rows, counted as a fallback.
 GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin) {
   using internal::Q2;
   using internal::Row;
   std::mt19937_64 rng(31);
   const Rational root(2);
-  auto q2 = [&] { return Q2(test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -2, 2, 5), root); };
+  auto q2 = [&] { return random_q2(rng); };
   ForceExactScope filtered(false);
   reset_filter_stats();
   int feasible = 0;
@@ -435,14 +440,13 @@ GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin
 
 // J's pieces' extreme rays over Q(√2): the filtered rays_of (enclosures
 // first, exact products for the rays kept) gives the exact one's rays in
-// its order, for random pointed cones (rows around a random axis) with
-// parallel and repeated rows among them.
+// its order, for random cones (rows around +z) with repeated and parallel
+// rows among them.
 GTEST_TEST(Filter, ExtremeRaysOverQuadraticFieldAreTheExactOnesInTheirOrder) {
   using internal::A3;
   using internal::Q2;
   std::mt19937_64 rng(37);
-  const Rational root(2);
-  auto q2 = [&] { return Q2(test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -2, 2, 5), root); };
+  auto q2 = [&] { return random_q2(rng); };
   int rays = 0;
   for (int k = 0; k < 100; ++k) {
     std::vector<A3<Q2>> rows;
