@@ -186,6 +186,7 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
     };
     if (!force_exact())
       if (internal::IntervalTarget* it = ctx.target.interval_target(); it && it->answers_points()) {
+        const long lp_before = ctx.stats.lp_tests;  // what the pre-test counted goes if the exact path runs
         std::optional<internal::MagnitudeBounds> bounds;
         const internal::FVec2 ft = j ? internal::FVec2{} : internal::to_interval(t);
         const internal::Quick q =
@@ -223,6 +224,7 @@ RegionStatus status_at(Context& ctx, const Boundary& b, const std::vector<intern
                }});
           return RegionStatus::kIn;
         }
+        ctx.stats.lp_tests = lp_before;
       }
     Vec2 t_in, t_out;
     tangents(t_in, t_out);

@@ -180,12 +180,11 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
   const char* push_model() const override { return "sustained"; }
   const char* name() const override { return "J"; }
 
-  // The region's interval pre-test (exact q* only): segments decided on
-  // enclosures of J's rows and of the segment's cone, with the exact
-  // test's steps and LP count; points take the exact path. An IN answer
-  // has no magnitudes (J is a cone), so nothing waits for the exact path.
+  // The region's interval pre-test (exact q* only): segments and points
+  // decided on enclosures of J's rows and of the wrench cone, with the
+  // exact test's steps and LP count. An IN answer has no magnitudes (J is
+  // a cone), so nothing waits for the exact path.
   IntervalTarget* interval_target() override { return enclosed_ ? this : nullptr; }
-  bool answers_points() const override { return false; }
   bool in_answers_have_magnitudes() const override { return false; }
   bool interval_magnitudes(const FGen&, FMagnitudes&) const override { return false; }
   int interval_ray_hits(const FGen&) const override { return kUndecided; }  // unused: the tests below take cones
