@@ -139,8 +139,8 @@ class Elimination {
     Node& y = nodes_[r];
     y.exact = static_cast<int>(exact_.size()) - 1;
     const Row<Q2>& e = exact_.back();
-    for (int k = 0; k < 3; ++k) y.a[k] = to_interval_q2(e.a[k]);
-    y.b = to_interval_q2(e.b);
+    for (int k = 0; k < 3; ++k) y.a[k] = enclosure(e.a[k]);
+    y.b = enclosure(e.b);
     return e;
   }
 

@@ -4,12 +4,6 @@ namespace fixel::internal {
 
 namespace {
 
-FI dot(const FGen& a, const FGen& x) { return a[0] * x[0] + a[1] * x[1] + a[2] * x[2]; }
-
-FGen cross(const FGen& a, const FGen& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 FGen enclose(const std::array<Q2, 3>& v) { return {to_interval_q2(v[0]), to_interval_q2(v[1]), to_interval_q2(v[2])}; }
 
 // Whether every generator satisfies a·x ≥ 0 (closed) or a·x > 0 (strict):
@@ -17,7 +11,7 @@ FGen enclose(const std::array<Q2, 3>& v) { return {to_interval_q2(v[0]), to_inte
 int all_satisfy(const FGen& a, const FGen* gens, std::size_t n, bool strict) {
   bool undecided = false;
   for (std::size_t k = 0; k < n; ++k) {
-    const int s = certain_sign(dot(a, gens[k]));
+    const int s = certain_sign(dot3(a, gens[k]));
     if (s == kUndecided)
       undecided = true;
     else if (strict ? s <= 0 : s < 0)
@@ -31,7 +25,7 @@ int all_satisfy(const FGen& a, const FGen* gens, std::size_t n, bool strict) {
 int all_outside(const FGen& a, const FGen* gens, std::size_t n, bool closed) {
   bool undecided = false;
   for (std::size_t k = 0; k < n; ++k) {
-    const int s = certain_sign(dot(a, gens[k]));
+    const int s = certain_sign(dot3(a, gens[k]));
     if (s == kUndecided)
       undecided = true;
     else if (closed ? s > 0 : s >= 0)
@@ -43,7 +37,7 @@ int all_outside(const FGen& a, const FGen* gens, std::size_t n, bool closed) {
 // g_i × g_j; for a pair (d, m_i), (d, m_j) with one exact force part d, the
 // exact form ((m_j − m_i) d_y, −(m_j − m_i) d_x, 0), whose zero is a point.
 FGen pair_cross(const FGen* gens, std::size_t i, std::size_t j, bool paired) {
-  if (!paired || i / 2 != j / 2) return cross(gens[i], gens[j]);
+  if (!paired || i / 2 != j / 2) return cross3(gens[i], gens[j]);
   const FI dm = gens[j][2] - gens[i][2];
   return {dm * gens[i][1], -(dm * gens[i][0]), FI(0)};
 }
@@ -58,7 +52,7 @@ bool facets(const FGen* gens, std::size_t n, bool paired, std::vector<FGen>& out
     for (std::size_t j = i + 1; j < n && !full_rank; ++j) {
       const FGen c = pair_cross(gens, i, j, paired);
       for (std::size_t k = j + 1; k < n && !full_rank; ++k) {
-        const int s = certain_sign(dot(c, gens[k]));
+        const int s = certain_sign(dot3(c, gens[k]));
         full_rank = s == 1 || s == -1;
       }
     }
@@ -71,7 +65,7 @@ bool facets(const FGen* gens, std::size_t n, bool paired, std::vector<FGen>& out
       bool nonneg = true, nonpos = true;
       for (std::size_t k = 0; k < n; ++k) {
         if (k == i || k == j) continue;  // on the plane by construction
-        const int s = certain_sign(dot(c, gens[k]));
+        const int s = certain_sign(dot3(c, gens[k]));
         if (s == kUndecided) return false;
         nonneg = nonneg && s >= 0;
         nonpos = nonpos && s <= 0;
@@ -93,7 +87,7 @@ int cone_meets(const FGen* gens, std::size_t n, bool paired, const std::vector<R
   if (n <= 3) {
     for (const auto& c : constraints) {
       Row<FI> r{{FI(0), FI(0), FI(0)}, c.b, c.strict};
-      for (std::size_t k = 0; k < n; ++k) r.a[k] = dot(c.a, gens[k]);
+      for (std::size_t k = 0; k < n; ++k) r.a[k] = dot3(c.a, gens[k]);
       rows.push_back(r);
     }
     for (std::size_t k = 0; k < n; ++k) {
