@@ -199,26 +199,46 @@ std::optional<WrenchCone> paper(const SegmentBounds& b, const Vec2& p_AoCm_A, co
 
 namespace internal {
 
-Vec2 unit_direction_outward(const Vec2& d_raw, bool cw) {
-  // u(t) = ((1 − t²), 2t) / (1 + t²) covers angles (−π, π) with t = tan(θ/2);
-  // directions near π use −u(t) with θ − π instead.
-  const Vec2 d = normalised(d_raw);
-  const double theta = std::atan2(to_double(d.y), to_double(d.x));
-  const bool flip = std::abs(theta) > M_PI / 2;
+long unit_grid_guess(double x, double y, bool flip) {
+  const double theta = std::atan2(y, x);
   const double half = (flip ? (theta > 0 ? theta - M_PI : theta + M_PI) : theta) / 2;
-  Rational t = to_dyadic_floor(std::tan(half));
-  const Rational step(1, 1048576);
-  if (!cw) t += step;
+  const double k = std::floor(std::tan(half) * 1048576.0);  // 2^20
+  // Only a start: NaN (from NaN input) and values far off the grid's
+  // useful range (|τ| <= 1 give the whole half-plane) are clamped.
+  return !(k > -kUnitGridLimit) ? -kUnitGridLimit : k > kUnitGridLimit ? kUnitGridLimit : static_cast<long>(k);
+}
+
+Vec2 unit_direction_outward(const Vec2& d_raw, bool cw) {
+  // u(τ) = ((1 − τ²), 2τ) / (1 + τ²) covers the angles (−π, π) with
+  // τ = tan(θ/2), and is monotone in τ; a direction of the left half-plane
+  // uses −u(τ) with θ − π instead. The answer is the grid point τ = k/2^20
+  // nearest d on the requested side (d itself when it is on the grid),
+  // found from a guess in doubles by exact side tests, so it does not
+  // depend on how the platform rounds atan2 and tan.
+  const Vec2 d = normalised(d_raw);
+  const bool flip = d.x < 0;
   const FVec2 fd = to_interval(d);
-  for (int i = 0; i < 4096; ++i) {
+  const long outward = cw ? -1 : 1;  // τ increases counter-clockwise
+  long k = unit_grid_guess(to_double(d.x), to_double(d.y), flip);
+  Vec2 u;
+  auto on_side = [&](long j, Vec2& out) {
+    const Rational t(j, 1048576);
     const Rational n = 1 + t * t;
-    Vec2 u{(1 - t * t) / n, 2 * t / n};
-    if (flip) u = {-u.x, -u.y};
-    const FVec2 fu = to_interval(u);
-    if ((cw ? orientation_filtered(u, fu, d, fd) : orientation_filtered(d, fd, u, fu)) >= 0) return u;
-    t += cw ? -step : step;  // tan(θ/2) is increasing: move the angle outward
+    out = {(1 - t * t) / n, 2 * t / n};
+    if (flip) out = {-out.x, -out.y};
+    const FVec2 fu = to_interval(out);
+    return (cw ? orientation_filtered(out, fu, d, fd) : orientation_filtered(d, fd, out, fu)) >= 0;
+  };
+  int steps = 0;
+  for (; !on_side(k, u); k += outward)  // outward until on the side
+    if (++steps > kUnitGridSteps)
+      throw InternalError("unit_direction_outward: no grid direction within the step bound");
+  for (Vec2 inner; on_side(k - outward, inner); k -= outward) {  // inward while still on it
+    u = inner;
+    if (++steps > kUnitGridSteps)
+      throw InternalError("unit_direction_outward: no grid direction within the step bound");
   }
-  throw InternalError("unit_direction_outward: no rational direction found within 4096 steps");
+  return u;
 }
 
 Rational cos_half_angle_lower(const Vec2& a_raw, const Vec2& b_raw) {

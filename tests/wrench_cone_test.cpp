@@ -207,5 +207,48 @@ GTEST_TEST(UnitDirection, IsExactlyUnitAndOnTheRequestedSide) {
   EXPECT_LE(internal::sqrt_lower(Rational(2)) * internal::sqrt_lower(Rational(2)), Rational(2));
 }
 
+// The grid point τ = k/2^20 of u: tan(θ/2) = sin θ/(1 + cos θ), of −u when
+// d points left (d.x < 0).
+Rational grid_tau(const Vec2& u, bool flip) { return flip ? -u.y / (1 - u.x) : u.y / (1 + u.x); }
+
+Vec2 grid_point(const Rational& tau, bool flip) {
+  const Rational n = 1 + tau * tau;
+  const Vec2 u{(1 - tau * tau) / n, 2 * tau / n};
+  return flip ? Vec2{-u.x, -u.y} : u;
+}
+
+GTEST_TEST(UnitDirection, IsTheNearestGridPointOnItsSideAndDItselfWhenOnTheGrid) {
+  // On the grid: the axes (τ = 0 and ±1, flipped or not) and (3, 4)/5 = u(1/2).
+  const std::pair<Vec2, Vec2> on_grid[] = {{{2, 0}, {1, 0}},
+                                           {{0, 5}, {0, 1}},
+                                           {{-1, 0}, {-1, 0}},
+                                           {{0, -3}, {0, -1}},
+                                           {{3, 4}, {Rational(3, 5), Rational(4, 5)}},
+                                           {{-6, -8}, {Rational(-3, 5), Rational(-4, 5)}},
+                                           {{3, -4}, {Rational(3, 5), Rational(-4, 5)}}};
+  for (const auto& [d, unit] : on_grid)
+    for (bool cw : {true, false}) {
+      const Vec2 u = internal::unit_direction_outward(d, cw);
+      EXPECT_EQ(u.x, unit.x) << to_string(d.x) << ", " << to_string(d.y) << (cw ? " cw" : " ccw");
+      EXPECT_EQ(u.y, unit.y) << to_string(d.x) << ", " << to_string(d.y) << (cw ? " cw" : " ccw");
+    }
+  std::mt19937_64 rng(63);
+  const Rational step(1, 1048576);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec2 d{test::random_rational(rng, -3, 3, 11), test::random_rational(rng, -3, 3, 11)};
+    if (d.x == 0 && d.y == 0) continue;
+    const bool flip = d.x < 0;
+    for (bool cw : {true, false}) {
+      const Vec2 u = internal::unit_direction_outward(d, cw);
+      const Rational tau = grid_tau(u, flip);
+      EXPECT_EQ(boost::multiprecision::denominator(Rational(tau / step)), 1);  // on the grid
+      EXPECT_EQ(grid_point(tau, flip).x, u.x);
+      // The next grid point inward is on the other side of d (strictly).
+      const Vec2 inner = grid_point(cw ? tau + step : tau - step, flip);
+      EXPECT_LT(cw ? cross(inner, d) : cross(d, inner), 0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fixel

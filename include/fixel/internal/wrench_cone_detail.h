@@ -31,10 +31,18 @@ WrenchCone corner_cone(const Vec2& r, const Vec2& d_in, const Vec2& d_out);
 
 // A rational c in [0, cos(Δ/2)], Δ the angle between non-zero a and b (< π).
 Rational cos_half_angle_lower(const Vec2& a, const Vec2& b);
-// Rational points on the unit circle near the direction of d, on its
-// clockwise (cw = true) or counter-clockwise side: cross(u, d) >= 0 or
-// cross(d, u) >= 0.
+// The rational point of the unit circle nearest the direction of d (not
+// zero) on its clockwise (cw = true) or counter-clockwise side, among
+// u(τ) = ((1 − τ²), 2τ)/(1 + τ²), τ = k/2^20 (−u(τ) when d.x < 0): the one
+// with cross(u, d) >= 0 (or cross(d, u) >= 0) whose next grid point inward
+// fails that test. d itself when it is on the grid (docs/theory.md §7).
 Vec2 unit_direction_outward(const Vec2& d, bool cw);
+// The grid search's start, k with τ = k/2^20 near tan(θ/2) (θ − π when
+// flip), from doubles; clamped to ±kUnitGridLimit. Only a guess: the
+// answer does not depend on it while it is within kUnitGridSteps of it.
+constexpr long kUnitGridLimit = 1L << 21;
+constexpr int kUnitGridSteps = 4096;
+long unit_grid_guess(double x, double y, bool flip);
 // A rational q >= sqrt(x), x >= 0.
 Rational sqrt_upper(const Rational& x);
 // A rational q in [0, sqrt(x)], x >= 0.
