@@ -100,13 +100,13 @@ RegionInterval classify(Context& ctx, const internal::LazyPiece& seg) {
   RegionInterval out{seg.curve(), seg.u0(), seg.u1(), RegionStatus::kPartial, false, Magnitudes{}, {}, {}, {}};
   // OUT and partial from enclosures alone when the target answers on them;
   // IN with enclosed magnitudes waits for the merge; the rest: exact.
-  if (ctx.method == ConeMethod::kTight && !force_exact())
+  if (!force_exact())
     if (internal::IntervalTarget* it = ctx.target.interval_target()) {
       const long lp_before = ctx.stats.lp_tests;  // what the pre-test counted goes if the exact path runs
       std::optional<internal::MagnitudeBounds> bounds;
       const internal::Quick q =
           internal::quick_segment(seg.enclosures(), seg.leg_enclosures(), ctx.scene.body.p_AoCm_A, ctx.mu,
-                                  families(ctx.mu), *it, ctx.deferred ? &bounds : nullptr);
+                                  families(ctx.mu), ctx.method, *it, ctx.deferred ? &bounds : nullptr);
       internal::record_filter(FilterSite::kRegionTest, q != internal::Quick::kUnknown);
       if (q == internal::Quick::kPartial) return out;
       if (q == internal::Quick::kOut) {
@@ -307,7 +307,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
       target.stats = &ctx.stats;  // the point tests reset it
     } else {
       if (!widths.empty()) ctx.resolution = widths[k];
-      const bool enclose = ctx.method == ConeMethod::kTight && !force_exact() && target.interval_target();
+      const bool enclose = !force_exact() && target.interval_target();
       subdivide(ctx, internal::LazyPiece(piece, enclose), 0, raw);
     }
   }

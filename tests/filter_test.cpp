@@ -136,6 +136,50 @@ GTEST_TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFi
   EXPECT_EQ(run(false, sustained), run(true, sustained));
 }
 
+GTEST_TEST(Filter, PaperConeRegionsAreIdenticalJsonAndMostSegmentsArePreTested) {
+  // The ⊥-angle term is the notch edge's extreme moment: at its end
+  // r = (2, −1), X_min = −sqrt_upper(5) (a push there turns the part
+  // clockwise as far as a push can).
+  const Scene notched = test::notched_square();
+  ASSERT_EQ(notched.body.p_AoCm_A.x, 0);
+  ASSERT_EQ(notched.body.p_AoCm_A.y, 0);
+  const BezierPiece& notch_edge = notched.body.boundary->pieces[2];
+  ASSERT_EQ(notch_edge.control.front().x, 2);
+  ASSERT_EQ(notch_edge.control.front().y, -1);
+  const auto cone = segment_wrench_cone(notch_edge, notched.body.p_AoCm_A, EdgeFamily::kNormal, 0, ConeMethod::kPaper);
+  ASSERT_TRUE(cone);
+  Rational least = cone->generators[0][2];
+  for (const auto& g : cone->generators) least = std::min<Rational>(least, g[2]);
+  EXPECT_EQ(least, -internal::sqrt_upper(Rational(5)));
+
+  // The notched square's region ends sit on its corners and its axis-
+  // parallel edges: the tight cone falls back there too. The bundled
+  // scenes show the share of segments the pre-test decides.
+  long certified = 0, fallbacks = 0;
+  auto compare = [&](const Scene& scene, const Rational& resolution, bool count) {
+    const SeatingSet S = seating_set(scene);
+    for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+      RegionOptions opt;
+      opt.resolution = resolution;
+      opt.pusher_mu = mu;
+      opt.cone = ConeMethod::kPaper;
+      reset_filter_stats();
+      const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+      if (count) {
+        certified += filter_stats().at(FilterSite::kRegionTest).certified;
+        fallbacks += filter_stats().at(FilterSite::kRegionTest).fallbacks;
+      }
+      EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); }))
+          << scene.name << " mu " << to_string(mu);
+    }
+  };
+  compare(notched, Rational(1, 65536), false);
+  for (const char* name : {"example2_rounded", "blob", "polygon", "blob32", "nonunique_part"})
+    compare(test::scene_file(name), Rational(1, 4096), true);
+  EXPECT_GT(certified, 1000);
+  EXPECT_LT(fallbacks * 20, certified) << fallbacks << " fallbacks, " << certified << " certified";
+}
+
 // J and G of seeded random parts (convex polygons with 3 fixels, the
 // physics studies' generator), not only of the bundled scenes: J's JSON and
 // its region, and G's JSON (with an impulse) and its region.

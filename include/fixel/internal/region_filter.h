@@ -1,6 +1,6 @@
 #pragma once
 // Interval pre-tests of the pushing region (docs/performance.md, issue 12):
-// a segment's tight wrench cone and a point's push wrenches are built as
+// a segment's wrench cone (tight or paper) and a point's push wrenches are built as
 // interval enclosures straight from the control points, with every decision
 // of the exact construction (zero legs, direction extremes, spans) taken on a
 // certified sign. A target that answers ray and OUT tests on enclosures then
@@ -126,14 +126,24 @@ class LazyPiece {
   mutable bool asked_ = false;
 };
 
-// The tight-cone segment test of classify (region.cpp) for `families` of
-// push directions with pusher friction mu, centre of mass c, from the
-// enclosures of the segment's control points and legs. On kIn,
-// `bounds` (if given) gets the enclosure of the answer's magnitudes when it
-// can be certified.
+// The segment test of classify (region.cpp) with the tight or the paper
+// cone (`method`) for `families` of push directions with pusher friction
+// mu, centre of mass c, from the enclosures of the segment's control
+// points and legs. On kIn, `bounds` (if given) gets the enclosure of the
+// answer's magnitudes when it can be certified.
 Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclosures& legs, const Vec2& c,
-                    const Rational& mu, const std::vector<EdgeFamily>& families, IntervalTarget& target,
-                    std::optional<MagnitudeBounds>* bounds = nullptr);
+                    const Rational& mu, const std::vector<EdgeFamily>& families, ConeMethod method,
+                    IntervalTarget& target, std::optional<MagnitudeBounds>* bounds = nullptr);
+
+// The paper cone (segment_wrench_cone with ConeMethod::kPaper) of one edge
+// family's push directions enclosed by ds and de, for a segment with
+// control points and legs enclosed and centre of mass c, as the pre-test
+// builds it: 1 with `gens` enclosing the exact generators in their order
+// (the two of û_s only, when û_e = û_s exactly), 0 when the exact
+// construction finds no cone (its unit directions span π), kUndecided when
+// a sign it needs is not certified.
+int paper_cone_enclosure(const FVec2& ds, const FVec2& de, const LazyPiece::Enclosures& control,
+                         const LazyPiece::Enclosures& legs, const Vec2& c, std::vector<FGen>& gens);
 
 // cos_half_angle_lower(a, b) (internal/wrench_cone_detail.h) of the exact
 // directions enclosed by a and b, enclosed; false when not certified (then
