@@ -386,8 +386,16 @@ LazyPiece::LazyPiece(const BezierPiece& root, bool enclose) : root_(&root), u0_(
   for (const auto& p : root.control) ctrl_.push_back(to_interval(p));
   // A whole piece is long, so the difference of enclosures is tight enough
   // and spares an exact subtraction per leg (polylines have many pieces).
+  // A coordinate whose difference may be zero is subtracted exactly: an
+  // exact zero (an axis-parallel leg) is then a point, as the exact path's
+  // signs and the paper cone's grid directions need.
   Protect guard;
-  for (std::size_t k = 1; k < ctrl_.size(); ++k) legs_.push_back(fsub(ctrl_[k], ctrl_[k - 1]));
+  for (std::size_t k = 1; k < ctrl_.size(); ++k) {
+    FVec2 leg = fsub(ctrl_[k], ctrl_[k - 1]);
+    if (leg.x.inf() <= 0 && leg.x.sup() >= 0) leg.x = to_interval(Rational(root.control[k].x - root.control[k - 1].x));
+    if (leg.y.inf() <= 0 && leg.y.sup() >= 0) leg.y = to_interval(Rational(root.control[k].y - root.control[k - 1].y));
+    legs_.push_back(leg);
+  }
 }
 
 const BezierPiece& LazyPiece::exact() const {

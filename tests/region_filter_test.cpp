@@ -44,6 +44,40 @@ GTEST_TEST(RegionFilter, StraightEdgesWithNonDyadicEndsPassTheRegionPreTestWitho
   EXPECT_EQ(c.fallbacks, 0) << c.certified << " certified";
 }
 
+GTEST_TEST(RegionFilter, AxisParallelLegsOfWholePiecesAreExactZeros) {
+  // Eight end legs of nonunique_part's twelve cubic pieces are parallel to
+  // an axis; each zero coordinate is a difference of two equal non-dyadic
+  // rationals. As a difference of enclosures it straddled zero, and the
+  // paper cone's grid direction along that axis could not be certified (8
+  // of the 12 pieces fell back). Taken exactly, it is a point.
+  const Scene scene = test::scene_file("nonunique_part");
+  int axis_parallel = 0;
+  for (const BezierPiece& piece : scene.body.boundary->pieces) {
+    const internal::LazyPiece lazy(piece, true);
+    const std::vector<Vec2> legs = piece.legs();
+    ASSERT_EQ(lazy.leg_enclosures().size(), legs.size());
+    for (std::size_t k = 0; k < legs.size(); ++k)
+      for (const auto& [exact, enclosed] :
+           {std::pair{legs[k].x, lazy.leg_enclosures()[k].x}, std::pair{legs[k].y, lazy.leg_enclosures()[k].y}}) {
+        if (exact != 0) continue;
+        ++axis_parallel;
+        EXPECT_EQ(enclosed.inf(), 0);
+        EXPECT_EQ(enclosed.sup(), 0);
+      }
+  }
+  EXPECT_EQ(axis_parallel, 8);
+  const SeatingSet S = seating_set(scene);
+  for (const ConeMethod method : {ConeMethod::kPaper, ConeMethod::kTight}) {
+    RegionOptions opt;
+    opt.resolution = Rational(1, 4096);
+    opt.cone = method;
+    reset_filter_stats();
+    const Region r = run(false, [&] { return compute_region(scene, S, opt); });
+    EXPECT_EQ(filter_stats().at(FilterSite::kRegionTest).fallbacks, 0) << to_string(method);
+    EXPECT_EQ(filter_stats().at(FilterSite::kRegionTest).certified, r.stats.cone_tests) << to_string(method);
+  }
+}
+
 GTEST_TEST(RegionFilter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePreTest) {
   // A straight piece gives each edge family one push direction, so its
   // first and last directions are one vector; as two enclosures their cross
