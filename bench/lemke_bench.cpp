@@ -280,8 +280,9 @@ void report_filtered_agreement() {
 void report_per_problem_times() {
   constexpr int reps = 100;
   using clock = std::chrono::steady_clock;
-  std::vector<double> filtered, doubles, siconos, ratios;
+  std::vector<double> filtered, reused, doubles, siconos, ratios, reused_ratios;
   Eigen::VectorXd z;
+  fixel::LemkeResult result;  // solve_lcp_lemke into a caller's result, as the stepper does
   for (const auto& pr : problems()) {
     fixel::ForceExactScope filter(false);
     auto time = [&](auto&& solve) {
@@ -290,10 +291,15 @@ void report_per_problem_times() {
       return std::chrono::duration<double, std::micro>(clock::now() - t0).count() / reps;
     };
     filtered.push_back(time([&] { benchmark::DoNotOptimize(fixel::solve_lcp_lemke(pr.B, pr.b)); }));
+    reused.push_back(time([&] {
+      fixel::solve_lcp_lemke(pr.B, pr.b, result);
+      benchmark::DoNotOptimize(result);
+    }));
     doubles.push_back(time([&] { benchmark::DoNotOptimize(double_lemke(pr.Bd, pr.bd, z)); }));
 #ifdef FIXEL_HAVE_SICONOS
     siconos.push_back(time([&] { benchmark::DoNotOptimize(siconos_lemke(pr.Bd, pr.bd, z)); }));
     ratios.push_back(filtered.back() / siconos.back());
+    reused_ratios.push_back(reused.back() / siconos.back());
 #endif
   }
   auto median = [](std::vector<double> v) {
@@ -315,13 +321,17 @@ void report_per_problem_times() {
             << " solves each in a row), median over the 64 problems [min, max]; mean:\n"
             << "  filtered exact Lemke  " << median(filtered) << " us " << range(filtered) << "; " << mean(filtered)
             << " us\n"
+            << "  the same into a reused result  " << median(reused) << " us " << range(reused) << "; " << mean(reused)
+            << " us\n"
             << "  double Lemke          " << median(doubles) << " us " << range(doubles) << "; " << mean(doubles)
             << " us\n";
 #ifdef FIXEL_HAVE_SICONOS
   std::cout << "  Siconos lexicolemke   " << median(siconos) << " us " << range(siconos) << "; " << mean(siconos)
             << " us\n"
             << "  filtered / Siconos: median of the ratios " << median(ratios) << ", range " << range(ratios)
-            << "; ratio of the medians " << median(filtered) / median(siconos) << "\n";
+            << "; ratio of the medians " << median(filtered) / median(siconos) << "\n"
+            << "  into a reused result / Siconos: median of the ratios " << median(reused_ratios) << ", range "
+            << range(reused_ratios) << "; ratio of the medians " << median(reused) / median(siconos) << "\n";
 #endif
 }
 
