@@ -7,6 +7,7 @@
 #include "fixel/design.h"
 #include "fixel/error.h"
 #include "fixel/internal/design_detail.h"
+#include "fixel/internal/sustained_core.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
@@ -134,16 +135,27 @@ double j_width(const Scene& part, const SustainedSet& J) {
 
 // The sustained score of a scene with three fixels: J and, if J is not
 // empty, the region against it.
-void score_sustained(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out) {
-  const SustainedSet J = sustained_set(scene, false);  // strong stability: by the theorem
-  out.sustained_empty = J.empty;
-  if (J.empty) {
-    out.sustained_score = Rational(0);
+// With `width` false (ranking every triple) J is built without its pieces'
+// rays and public form, which only J's width (display) reads; the reported
+// layouts get it in complete_layouts.
+void score_sustained(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out, bool width) {
+  std::shared_ptr<const internal::SustainedData> data;
+  if (width) {
+    const SustainedSet J = sustained_set(scene, false);  // strong stability: by the theorem
+    out.sustained_empty = J.empty;
+    out.j_width = J.empty ? 0 : j_width(scene, J);
+    data = J.data;
+  } else {
+    const internal::SustainedCore J = internal::sustained_core(scene);
+    out.sustained_empty = J.empty;
     out.j_width = 0;
+    data = J.data;
+  }
+  if (*out.sustained_empty) {
+    out.sustained_score = Rational(0);
     return;
   }
-  out.j_width = j_width(scene, J);
-  const auto target = sustained_target(J);
+  const auto target = internal::sustained_target(data);
   out.sustained_score = in_fraction(compute_region(scene, *target, region_options(o, o.pusher_mu)), total);
 }
 
@@ -179,7 +191,7 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
   }
   if (!closure) return Verdict::kNoFormClosure;
   if (o.push == DesignPush::kSustained) {
-    score_sustained(scene, o, total, out);
+    score_sustained(scene, o, total, out, false);
     out.score = *out.sustained_score;
     return *out.sustained_empty ? Verdict::kJEmpty : Verdict::kScored;
   }
@@ -201,7 +213,11 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
   const Rational total = total_length(boundary_of(part));
   for (auto& l : layouts) {
     try {
-      if (!l.sustained_score) score_sustained(layout_scene(part, cands, l.fixels, o, false), o, total, l);
+      const Scene s = layout_scene(part, cands, l.fixels, o, false);
+      if (!l.sustained_score)
+        score_sustained(s, o, total, l, true);
+      else if (!*l.sustained_empty)  // ranked without J's width
+        l.j_width = j_width(s, sustained_set(s, false));
     } catch (const Error& e) {
       l.note += std::string(l.note.empty() ? "" : "; ") + "sustained score: " + e.what();
     }
@@ -243,7 +259,7 @@ DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& o) {
   DesignLayout out;
   out.index = -1;
   try {
-    score_sustained(s, o, total, out);
+    score_sustained(s, o, total, out, true);
   } catch (const InputError& e) {
     out.note = std::string("no sustained score: ") + e.what();
   }

@@ -7,6 +7,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/cone3.h"
+#include "fixel/internal/sustained_core.h"
 #include "fixel/internal/sustained_data.h"
 
 namespace fixel {
@@ -19,7 +20,8 @@ namespace {
 // the first facet it violates (so the pieces are disjoint); empty ones are
 // pruned as soon as a prefix is infeasible.
 template <class NT>
-void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed, std::vector<A3<NT>>& strict) {
+void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed, std::vector<A3<NT>>& strict,
+                      bool with_rays) {
   std::vector<Row<NT>> rows = homogeneous(d.K_rows, true);
   for (const auto& r : homogeneous(closed, false)) rows.push_back(r);
   for (const auto& r : homogeneous(strict, true)) rows.push_back(r);
@@ -29,9 +31,11 @@ void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed,
     p.closed = closed;
     p.strict = d.K_rows;
     for (const auto& a : strict) p.strict.push_back(a);
-    std::vector<A3<NT>> all = p.closed;
-    for (const auto& a : p.strict) all.push_back(a);
-    p.rays = rays_of(all);
+    if (with_rays) {
+      std::vector<A3<NT>> all = p.closed;
+      for (const auto& a : p.strict) all.push_back(a);
+      p.rays = rays_of(all);
+    }
     d.pieces.push_back(std::move(p));
     return;
   }
@@ -41,7 +45,7 @@ void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed,
     for (std::size_t s = 0; s < r; ++s) closed.push_back(facets[s]);
     strict.push_back(neg3(facets[r]));  // violate row r: a·x < 0
     cache_enclosures(strict.back());
-    enumerate_pieces(d, jam + 1, closed, strict);
+    enumerate_pieces(d, jam + 1, closed, strict, with_rays);
     strict.pop_back();
     closed.resize(c0);
   }
@@ -77,7 +81,7 @@ AlgebraicCone cone_public(const Data<NT>& d, const std::vector<A3<NT>>& rays, co
 // Builds J's data from the columns W_n*, W_t* (frame B) and the rotation.
 template <class NT>
 Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, const std::vector<A3<NT>>& Wt,
-               const std::vector<Rational>& mu) {
+               const std::vector<Rational>& mu, bool with_rays) {
   Data<NT> d;
   d.cos = cos;
   d.sin = sin;
@@ -117,7 +121,7 @@ Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, cons
     for (const auto& a : jam.facets) cache_enclosures(a);
   std::vector<A3<NT>> closed, strict;
   try {
-    enumerate_pieces(d, 0, closed, strict);
+    enumerate_pieces(d, 0, closed, strict, with_rays);
   } catch (const Undecided&) {
     d.pieces.clear();
     d.pieces_decided = false;
@@ -163,45 +167,85 @@ void fill_public(SustainedSet& J, const Data<NT>& d) {
 using internal::IV;
 using internal::Q2;
 
-SustainedSet sustained_set(const Scene& scene, bool check_stability) {
+namespace {
+
+void check_scene(const Scene& scene) {
   if (scene.body.dof != 3) throw SceneError("body.dof", "2", "the sustained-push set needs a rigid body (dof 3)");
   const int nc = scene.num_contacts();
   if (nc != 3) throw SceneError("fixels", std::to_string(nc) + " fixels", "the sustained-push set needs exactly 3");
-  SustainedSet J;
-  J.pose = seated_pose(scene);
-  for (int i = 0; i < nc; ++i) J.mu.push_back(scene.fixels[i].mu_upper());
+}
+
+// J's data at the seated pose, in the body frame; the pieces' extreme
+// rays only `with_rays`.
+std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const SeatedPose& pose,
+                                                   const std::vector<Rational>& mu, bool with_rays) {
+  const int nc = scene.num_contacts();
   auto d = std::make_shared<internal::SustainedData>();
   const Vec2& c = scene.body.p_AoCm_A;
-  if (J.pose.exact) {
+  if (pose.exact) {
     std::vector<internal::A3<Q2>> Wn, Wt;
     for (int i = 0; i < nc; ++i) {
-      const Q2 rx = internal::from_public(J.pose.p_BoG_B[i][0]) - Q2(c.x);
-      const Q2 ry = internal::from_public(J.pose.p_BoG_B[i][1]) - Q2(c.y);
-      const Vec2& n = J.pose.n_B[i];
+      const Q2 rx = internal::from_public(pose.p_BoG_B[i][0]) - Q2(c.x);
+      const Q2 ry = internal::from_public(pose.p_BoG_B[i][1]) - Q2(c.y);
+      const Vec2& n = pose.n_B[i];
       const Vec2 t{-n.y, n.x};
       Wn.push_back({Q2(n.x), Q2(n.y), rx * Q2(n.y) - ry * Q2(n.x)});
       Wt.push_back({Q2(t.x), Q2(t.y), rx * Q2(t.y) - ry * Q2(t.x)});
     }
-    d->data = internal::build<Q2>(internal::from_public((*J.pose.exact)[2]), internal::from_public((*J.pose.exact)[3]),
-                                  Wn, Wt, J.mu);
+    d->data = internal::build<Q2>(internal::from_public((*pose.exact)[2]), internal::from_public((*pose.exact)[3]), Wn,
+                                  Wt, mu, with_rays);
   } else {
     auto iv = [](const std::array<double, 2>& e) { return IV(e[0], e[1]); };
     std::vector<internal::A3<IV>> Wn, Wt;
     for (int i = 0; i < nc; ++i) {
-      const IV rx = iv(J.pose.p_BoG_B_enclosure[i][0]) - internal::enclose(c.x);
-      const IV ry = iv(J.pose.p_BoG_B_enclosure[i][1]) - internal::enclose(c.y);
-      const IV Tx = iv(J.pose.tangent_B_enclosure[i][0]), Ty = iv(J.pose.tangent_B_enclosure[i][1]);
+      const IV rx = iv(pose.p_BoG_B_enclosure[i][0]) - internal::enclose(c.x);
+      const IV ry = iv(pose.p_BoG_B_enclosure[i][1]) - internal::enclose(c.y);
+      const IV Tx = iv(pose.tangent_B_enclosure[i][0]), Ty = iv(pose.tangent_B_enclosure[i][1]);
       const IV nx = -Ty, ny = Tx;   // n = rot90(T): inward on a counter-clockwise loop
       const IV tx = -Tx, ty = -Ty;  // t = rot90(n)
       Wn.push_back({nx, ny, rx * ny - ry * nx});
       Wt.push_back({tx, ty, rx * ty - ry * tx});
     }
-    d->data = internal::build<IV>(iv(J.pose.cos_sin_enclosure[0]), iv(J.pose.cos_sin_enclosure[1]), Wn, Wt, J.mu);
+    d->data = internal::build<IV>(iv(pose.cos_sin_enclosure[0]), iv(pose.cos_sin_enclosure[1]), Wn, Wt, mu, with_rays);
   }
+  return d;
+}
+
+std::vector<Rational> fixel_mu(const Scene& scene) {
+  std::vector<Rational> mu;
+  for (int i = 0; i < scene.num_contacts(); ++i) mu.push_back(scene.fixels[i].mu_upper());
+  return mu;
+}
+
+}  // namespace
+
+SustainedSet sustained_set(const Scene& scene, bool check_stability) {
+  check_scene(scene);
+  SustainedSet J;
+  J.pose = seated_pose(scene);
+  J.mu = fixel_mu(scene);
+  auto d = make_data(scene, J.pose, J.mu, true);
   std::visit([&](const auto& data) { internal::fill_public(J, data); }, d->data);
   J.data = d;
   J.stability_checks = check_stability ? check_strong_stability(scene, J) : 0;
   return J;
 }
+
+namespace internal {
+
+SustainedCore sustained_core(const Scene& scene) {
+  check_scene(scene);
+  SustainedCore out;
+  out.data = make_data(scene, seated_pose(scene), fixel_mu(scene), false);
+  std::visit(
+      [&](const auto& data) {
+        out.pieces_decided = data.pieces_decided;
+        out.empty = data.pieces_decided && data.pieces.empty();
+      },
+      out.data->data);
+  return out;
+}
+
+}  // namespace internal
 
 }  // namespace fixel

@@ -9,6 +9,7 @@
 #include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/polynomial.h"
+#include "fixel/internal/sustained_core.h"
 #include "fixel/internal/sustained_data.h"
 #include "fixel/internal/sustained_filter.h"
 #include "fixel/region_target.h"
@@ -251,6 +252,11 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
 std::unique_ptr<RegionTarget> sustained_target(const SustainedSet& J) {
   if (!J.data) throw InputError("J", "", "has no data (default-constructed SustainedSet)");
   return std::make_unique<internal::SustainedTarget>(J.data);
+}
+
+std::unique_ptr<RegionTarget> internal::sustained_target(std::shared_ptr<const SustainedData> data) {
+  if (!data) throw InputError("J", "", "has no data");
+  return std::make_unique<SustainedTarget>(std::move(data));
 }
 
 bool SustainedSet::contains(const VectorQ& w_W) const { return why_not(w_W).empty(); }

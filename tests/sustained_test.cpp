@@ -5,8 +5,11 @@
 #include <random>
 #include <sstream>
 
+#include "filter_test_util.h"
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/sustained_core.h"
+#include "fixel/io.h"
 #include "fixel/physics.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
@@ -110,13 +113,10 @@ GTEST_TEST(SeatedPose, RejectsAFixelOffThePolygon) {
   EXPECT_THROW(seated_pose(scene), SceneError);
 }
 
-GTEST_TEST(SeatedPose, NeedsABoundary) { EXPECT_THROW(seated_pose(scene_file("example2")), SceneError); }
-
-// The same hand-built seat with the bottom edge given as a cubic B-spline
-// whose control points are collinear: the curved path (interval Newton,
-// Krawczyk) must enclose the exact answer of the polyline path.
-GTEST_TEST(SeatedPose, CertifiedEnclosureOnACurvedEdgeHoldsTheExactSeat) {
-  const Scene scene = parse_scene(R"({"name": "square", "time_step": "1",
+// The hand-built seat with the bottom edge given as a cubic B-spline whose
+// control points are collinear: contacts on a curved piece.
+Scene curved_square() {
+  return parse_scene(R"({"name": "square", "time_step": "1",
     "body": {"dof": "3", "mass": "1", "center_of_mass": ["0", "0"],
              "boundary": [
                {"type": "bspline", "degree": "3", "knots": ["0","0","0","0","1","1","1","1"],
@@ -126,6 +126,15 @@ GTEST_TEST(SeatedPose, CertifiedEnclosureOnACurvedEdgeHoldsTheExactSeat) {
       {"point": ["-1", "-12/25"], "normal": ["1", "0"], "mu": "0", "gap": "3/50"},
       {"point": ["-3/10", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "3/10"},
       {"point": ["33/50", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "1/50"}]})");
+}
+
+GTEST_TEST(SeatedPose, NeedsABoundary) { EXPECT_THROW(seated_pose(scene_file("example2")), SceneError); }
+
+// The same hand-built seat with the bottom edge given as a cubic B-spline
+// whose control points are collinear: the curved path (interval Newton,
+// Krawczyk) must enclose the exact answer of the polyline path.
+GTEST_TEST(SeatedPose, CertifiedEnclosureOnACurvedEdgeHoldsTheExactSeat) {
+  const Scene scene = curved_square();
   const SeatedPose q = seated_pose(scene);
   EXPECT_FALSE(q.exact.has_value());
   auto holds = [](const std::array<double, 2>& e, const Rational& x) {
@@ -268,6 +277,33 @@ GTEST_TEST(SustainedSet, EmptyWhenAPairHoldsEveryInwardPushAndSaysWhich) {
   const SustainedSet J = sustained_set(square("\"3\""));
   EXPECT_TRUE(J.empty);
   EXPECT_FALSE(J.empty_reason.empty());
+}
+
+GTEST_TEST(SustainedSet, CoreWithoutThePublicFormHasTheSameEmptinessAndRegion) {
+  // internal::sustained_core (design's ranking) skips the pieces' rays and
+  // the public cones: the same J for every decision. Squares with random
+  // friction (J empty or not, exact q*), the polygon, and a square with a
+  // curved bottom edge (an enclosed q*).
+  std::vector<Scene> scenes{square("\"3\""), scene_file("polygon"), curved_square()};
+  std::mt19937_64 rng(21);
+  for (int trial = 0; trial < 6; ++trial)
+    scenes.push_back(square("\"" + to_string(random_rational(rng, 0, 2, 8)) + "\""));
+  int empty = 0;
+  for (const Scene& scene : scenes) {
+    const SustainedSet J = sustained_set(scene, false);
+    const internal::SustainedCore core = internal::sustained_core(scene);
+    EXPECT_EQ(core.empty, J.empty);
+    EXPECT_EQ(core.pieces_decided, J.pieces_decided);
+    empty += J.empty;
+    if (J.empty) continue;
+    RegionOptions opt;
+    opt.resolution = Rational(1, 64);
+    const Region full = compute_region(scene, *sustained_target(J), opt);
+    const Region ranked = compute_region(scene, *internal::sustained_target(core.data), opt);
+    EXPECT_EQ(test::masked(region_json(scene, full)), test::masked(region_json(scene, ranked)));
+  }
+  EXPECT_GE(empty, 1);
+  EXPECT_LT(empty, static_cast<int>(scenes.size()));
 }
 
 GTEST_TEST(SustainedRegion, IsSoundByExactSamplingOnThePolygon) {

@@ -1,0 +1,31 @@
+#pragma once
+// J's data and emptiness without its pieces' extreme rays and its public
+// form (sustained.cpp), for ranking many layouts (design.cpp); no CGAL here.
+#include <memory>
+
+#include "fixel/scene.h"
+
+namespace fixel {
+class RegionTarget;
+}
+
+namespace fixel::internal {
+
+struct SustainedData;
+
+// What design's ranking needs of J for each triple: its data (for the region
+// against J) and whether it is empty, at about 3/4 of the cost of
+// sustained_set, which also makes the pieces' extreme rays and the public
+// cones (read only by J's width, a display value). Same validation and
+// errors as sustained_set.
+struct SustainedCore {
+  std::shared_ptr<const SustainedData> data;
+  bool empty = false;          // J.empty of sustained_set
+  bool pieces_decided = true;  // J.pieces_decided
+};
+SustainedCore sustained_core(const Scene& scene);
+
+// sustained_target(J) (region_target.h) from J's data alone.
+std::unique_ptr<RegionTarget> sustained_target(std::shared_ptr<const SustainedData> data);
+
+}  // namespace fixel::internal
