@@ -41,17 +41,13 @@ Storage& storage() {
 
 class Elimination {
  public:
-  explicit Elimination(const std::vector<Row<Q2>>& rows) : input_(rows) {
-    nodes_.clear();
-    exact_.clear();
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      Node x;
-      for (int k = 0; k < 3; ++k) x.a[k] = enclosure(rows[r].a[k]);
-      x.b = enclosure(rows[r].b);
-      x.strict = rows[r].strict;
-      x.p = static_cast<int>(r);  // an input row: p indexes input_
-      nodes_.push_back(x);
-    }
+  explicit Elimination(const std::vector<Row<Q2>>& rows) : input_(&rows) {
+    start();
+    for (std::size_t r = 0; r < rows.size(); ++r) add_input(rows[r].a, enclosure(rows[r].b), rows[r].strict);
+  }
+  explicit Elimination(const std::vector<RowRef<Q2>>& refs) : refs_(&refs) {
+    start();
+    for (const auto& r : refs) add_input(*r.a, FI(0), r.strict);
   }
 
   bool used_exact() const { return used_exact_; }
@@ -121,8 +117,14 @@ class Elimination {
   const Row<Q2>& exact(int r) {
     used_exact_ = true;
     const Node x = nodes_[r];  // a copy: the parents' exact rows are made first
-    if (x.j < 0) return input_[x.p];
+    if (x.j < 0 && input_) return (*input_)[x.p];
     if (x.exact >= 0) return exact_[x.exact];
+    if (x.j < 0) {  // an input row by reference: copied once, now
+      const RowRef<Q2>& ref = (*refs_)[x.p];
+      exact_.push_back(Row<Q2>{*ref.a, Q2(0), ref.strict});
+      nodes_[r].exact = static_cast<int>(exact_.size()) - 1;
+      return exact_.back();
+    }
     const Row<Q2>& P = exact(x.p);  // exact_ is a deque: references stay valid
     const Row<Q2>& N = exact(x.n);
     const int j = x.j;
@@ -144,9 +146,23 @@ class Elimination {
     return e;
   }
 
+  void start() {
+    nodes_.clear();
+    exact_.clear();
+  }
+  void add_input(const A3<Q2>& a, const FI& b, bool strict) {
+    Node x;
+    for (int k = 0; k < 3; ++k) x.a[k] = enclosure(a[k]);
+    x.b = b;
+    x.strict = strict;
+    x.p = static_cast<int>(nodes_.size());  // an input row: p indexes the input
+    nodes_.push_back(x);
+  }
+
   using Protect_nearest = CGAL::Protect_FPU_rounding<true>;
 
-  const std::vector<Row<Q2>>& input_;
+  const std::vector<Row<Q2>>* input_ = nullptr;    // the input rows, when given as rows
+  const std::vector<RowRef<Q2>>* refs_ = nullptr;  // or by reference
   Storage& storage_ = storage();
   std::vector<Node>& nodes_ = storage_.nodes;
   std::deque<Row<Q2>>& exact_ = storage_.exact;
@@ -198,6 +214,19 @@ bool feasible_filtered(const std::vector<Row<Q2>>& rows) {
   if (force_exact()) return feasible(rows);
   Protect guard;  // the enclosures' arithmetic; exact rows switch back to nearest
   Elimination e(rows);
+  const bool answer = e.run();
+  record_filter(FilterSite::kFeasibility, !e.used_exact());
+  return answer;
+}
+
+bool feasible_filtered(const std::vector<RowRef<Q2>>& refs) {
+  if (force_exact()) {
+    std::vector<Row<Q2>> rows;
+    for (const auto& r : refs) rows.push_back({*r.a, Q2(0), r.strict});
+    return feasible(std::move(rows));
+  }
+  Protect guard;
+  Elimination e(refs);
   const bool answer = e.run();
   record_filter(FilterSite::kFeasibility, !e.used_exact());
   return answer;

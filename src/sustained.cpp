@@ -22,9 +22,10 @@ namespace {
 template <class NT>
 void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed, std::vector<A3<NT>>& strict,
                       bool with_rays) {
-  std::vector<Row<NT>> rows = homogeneous(d.K_rows, true);
-  for (const auto& r : homogeneous(closed, false)) rows.push_back(r);
-  for (const auto& r : homogeneous(strict, true)) rows.push_back(r);
+  std::vector<RowRef<NT>> rows;
+  append_refs(d.K_rows, true, rows);
+  append_refs(closed, false, rows);
+  append_refs(strict, true, rows);
   if (!feasible_filtered(rows)) return;
   if (jam == d.jams.size()) {
     typename Data<NT>::Piece p;
@@ -149,8 +150,9 @@ void fill_public(SustainedSet& J, const Data<NT>& d) {
                        fixel_name(jam.fixels[0]) + " and " + fixel_name(jam.fixels[1]) + " with friction";
       return;
     }
-    std::vector<Row<NT>> rows = homogeneous(d.K_rows, true);
-    for (const auto& r : homogeneous(jam.facets, false)) rows.push_back(r);
+    std::vector<RowRef<NT>> rows;
+    append_refs(d.K_rows, true, rows);
+    append_refs(jam.facets, false, rows);
     if (feasible_filtered(rows))
       holders.push_back("(" + fixel_name(jam.fixels[0]) + ", " + fixel_name(jam.fixels[1]) + ")");
   }

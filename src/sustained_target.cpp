@@ -92,8 +92,9 @@ bool cone_misses_J(const Data<NT>& d, const std::vector<VectorQ>& gens, RegionSt
   if (stats) ++stats->lp_tests;
   std::vector<A3<NT>> cone_rows;
   for (const auto& a : cone_facet_normals(gens, 3)) cone_rows.push_back(lift3<NT>(a));
-  std::vector<Row<NT>> rows = homogeneous(cone_rows, false);
-  for (const auto& r : homogeneous(d.K_rows, true)) rows.push_back(r);
+  std::vector<RowRef<NT>> rows;
+  append_refs(cone_rows, false, rows);
+  append_refs(d.K_rows, true, rows);
   return !feasible_filtered(rows);
 }
 

@@ -142,6 +142,28 @@ bool feasible(std::vector<Row<NT>> rows) {
 inline bool feasible_filtered(std::vector<Row<IV>> rows) { return feasible(std::move(rows)); }
 bool feasible_filtered(const std::vector<Row<Q2>>& rows);
 
+// A homogeneous row a·x ≥ 0 (> 0 when strict) by reference: J's systems
+// are made of rows J keeps (its K rows and jam facets), so they need not
+// be copied (a copy of a Q(√d) row is nine rationals). The rows must
+// outlive the call.
+template <class NT>
+struct RowRef {
+  const A3<NT>* a;
+  bool strict;
+};
+template <class NT>
+void append_refs(const std::vector<A3<NT>>& rows, bool strict, std::vector<RowRef<NT>>& out) {
+  for (const auto& a : rows) out.push_back({&a, strict});
+}
+// feasible_filtered of the rows referred to: over Q(√d) an exact input row
+// is copied only when a sign needs it.
+bool feasible_filtered(const std::vector<RowRef<Q2>>& rows);
+inline bool feasible_filtered(const std::vector<RowRef<IV>>& rows) {
+  std::vector<Row<IV>> copies;
+  for (const auto& r : rows) copies.push_back({*r.a, IV(0), r.strict});
+  return feasible(std::move(copies));
+}
+
 template <class NT>
 bool is_zero3(const A3<NT>& a) {
   return sign(a[0]) == 0 && sign(a[1]) == 0 && sign(a[2]) == 0;
