@@ -446,7 +446,7 @@ GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin
   auto q2 = [&] { return random_q2(rng); };
   ForceExactScope filtered(false);
   reset_filter_stats();
-  int feasible = 0;
+  int feasible = 0, by_reference = 0;
   const int systems = 300;
   for (int k = 0; k < systems; ++k) {
     std::vector<Row<Q2>> rows(3 + k % 5);
@@ -458,11 +458,18 @@ GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin
     const bool answer = internal::feasible_filtered(rows);
     EXPECT_EQ(answer, internal::feasible(rows)) << "system " << k;
     feasible += answer;
+    if (k % 3 != 0) {  // homogeneous: the same system by reference
+      std::vector<internal::RowRef<Q2>> refs;
+      for (const auto& r : rows) refs.push_back({&r.a, r.strict});
+      EXPECT_EQ(internal::feasible_filtered(refs), answer) << "system " << k << " by reference";
+      ++by_reference;
+    }
   }
+  EXPECT_GT(by_reference, 100);
   EXPECT_GT(feasible, 0);
   EXPECT_LT(feasible, systems);
   const FilterCounts random = filter_stats().at(FilterSite::kFeasibility);
-  EXPECT_EQ(random.certified + random.fallbacks, systems);
+  EXPECT_EQ(random.certified + random.fallbacks, systems + by_reference);
   EXPECT_GT(random.certified, systems * 9 / 10);
 
   // a·x > 0 and −a·x ≥ 0: eliminating x₃ combines them into the zero row,
@@ -477,9 +484,11 @@ GTEST_TEST(Filter, FeasibilityOverQuadraticFieldAgreesWithTheExactFourierMotzkin
   opposite[1].b = Q2(0);
   EXPECT_FALSE(internal::feasible_filtered(opposite));
   EXPECT_FALSE(internal::feasible(opposite));
-  opposite[0].strict = false;  // a·x = 0 is a plane: feasible
+  const std::vector<internal::RowRef<Q2>> opposite_refs{{&opposite[0].a, true}, {&opposite[1].a, false}};
+  EXPECT_FALSE(internal::feasible_filtered(opposite_refs));  // its input rows copied when asked
+  opposite[0].strict = false;                                // a·x = 0 is a plane: feasible
   EXPECT_TRUE(internal::feasible_filtered(opposite));
-  EXPECT_EQ(filter_stats().at(FilterSite::kFeasibility).fallbacks, 2);
+  EXPECT_EQ(filter_stats().at(FilterSite::kFeasibility).fallbacks, 3);
 }
 
 // J's pieces' extreme rays over Q(√2): the filtered rays_of (enclosures
