@@ -19,12 +19,9 @@ struct Node {
   int exact = -1;              // index of the exact row, once computed
 };
 
-// An enclosure of x: CGAL's, kept in x (rows copied from J's data bring
-// it along, so each entry of J is enclosed once).
-FI enclosure(const Q2& x) {
-  const std::pair<double, double> i = x.to_interval();
-  return FI(i.first, i.second);
-}
+// An enclosure of x (to_interval_q2: an irrational's is kept in x, and
+// rows copied from J's data bring it along).
+FI enclosure(const Q2& x) { return to_interval_q2(x); }
 
 // The elimination's vectors, reused from call to call (one per thread; a
 // call does not nest another).

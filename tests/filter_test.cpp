@@ -434,6 +434,30 @@ internal::Q2 random_q2(std::mt19937_64& rng) {
   return internal::Q2(test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -2, 2, 5), Rational(2));
 }
 
+// to_interval_q2 (J's enclosures): rationals (fixel's conversion) and
+// a + b√2 (CGAL's, cached in the value), made in every rounding mode,
+// hold the exact value, compared in Q(√2).
+GTEST_TEST(Filter, QuadraticFieldEnclosuresHoldTheirValuesInEveryRoundingMode) {
+  using internal::Q2;
+  std::mt19937_64 rng(33);
+  const int modes[] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+  const int old_mode = std::fegetround();
+  int irrational = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Q2 x = trial % 3 == 0 ? Q2(test::random_rational(rng, -3, 3, 40)) : random_q2(rng);
+    irrational += x.is_extended() && x.a1() != 0;
+    for (const int mode : modes) {
+      const Q2 copy = x;  // a fresh value: its enclosure is made in this mode
+      std::fesetround(mode);
+      const internal::FI e = internal::to_interval_q2(copy);
+      std::fesetround(old_mode);
+      ASSERT_LE(Q2(Rational(e.inf())), x) << "trial " << trial << " mode " << mode;
+      ASSERT_GE(Q2(Rational(e.sup())), x) << "trial " << trial << " mode " << mode;
+    }
+  }
+  EXPECT_GT(irrational, 200);
+}
+
 // J's Fourier–Motzkin feasibility over Q(√2): random systems give the
 // exact run's answer (on enclosures, with exact rows where a sign needs
 // one), both answers occur, and a system whose elimination makes an exact

@@ -40,9 +40,13 @@ NT dot3(const A3<NT>& a, const A3<NT>& b) {
 // the interval's own sign (which throws Undecided when it straddles 0).
 inline int sign_dot3(const A3<IV>& a, const A3<IV>& x) { return sign(dot3(a, x)); }
 
-inline FI to_interval_q2(const Q2& x) {  // needs a Protect scope
+// An enclosure of x in any rounding mode: a rational's from fixel's
+// conversion (CGAL's for a rational is slower and not cached), else CGAL's
+// a0 + a1·√root, which x caches.
+inline FI to_interval_q2(const Q2& x) {
   if (!x.is_extended() || x.a1() == 0) return to_interval(x.a0());
-  return to_interval(x.a0()) + to_interval(x.a1()) * CGAL::sqrt(to_interval(x.root()));
+  const std::pair<double, double> i = x.to_interval();
+  return FI(i.first, i.second);
 }
 
 inline int sign_dot3(const A3<Q2>& a, const A3<Q2>& x) {
@@ -69,10 +73,12 @@ A3<NT> neg3(const A3<NT>& a) {
   return {-a[0], -a[1], -a[2]};
 }
 
-// Computes and keeps each entry's interval enclosure (Sqrt_extension
-// caches it, and copies carry it): rows enclosed once, not per system.
+// Computes and keeps each irrational entry's interval enclosure
+// (Sqrt_extension caches it, and copies carry it): rows enclosed once, not
+// per system. A rational's is not cached (to_interval_q2 makes it).
 inline void cache_enclosures(const A3<Q2>& v) {
-  for (const Q2& x : v) (void)x.to_interval();
+  for (const Q2& x : v)
+    if (x.is_extended() && x.a1() != 0) (void)x.to_interval();
 }
 inline void cache_enclosures(const A3<IV>&) {}
 
