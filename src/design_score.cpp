@@ -7,6 +7,7 @@
 #include "fixel/design.h"
 #include "fixel/error.h"
 #include "fixel/internal/design_detail.h"
+#include "fixel/internal/region_filter.h"
 #include "fixel/internal/sustained_core.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
@@ -49,9 +50,12 @@ bool in_open_k(const std::array<VectorQ, 3>& rows, const VectorQ& w) {
 // finger, a point is IN when its push and the three fixels' normal wrenches
 // are in form closure. `misses` is conservative (one separating row), so an
 // undecided stretch stays PARTIAL and is never counted as OUT.
-class FormClosureTarget final : public RegionTarget {
+class FormClosureTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
-  explicit FormClosureTarget(const std::array<VectorQ, 3>& rows) : rows_(rows) {}
+  explicit FormClosureTarget(const std::array<VectorQ, 3>& rows) : rows_(rows) {
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) rows_enclosed_[i][k] = internal::to_interval(rows[i][k]);
+  }
   const char* push_model() const override { return "form closure"; }
   const char* name() const override { return "K"; }
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
@@ -69,8 +73,48 @@ class FormClosureTarget final : public RegionTarget {
     return false;
   }
 
+  // The region's interval pre-test (internal/region_filter.h): the same
+  // signs of a·g on enclosures. K is a cone: an IN answer has no magnitudes.
+  internal::IntervalTarget* interval_target() override { return this; }
+  bool in_answers_have_magnitudes() const override { return false; }
+  int interval_ray_hits(const internal::FGen& g) const override {
+    bool open = false;
+    for (const auto& a : rows_enclosed_) {
+      const int s = sign_of_dot(a, g);
+      if (s == internal::kUndecided)
+        open = true;
+      else if (s <= 0)
+        return 0;
+    }
+    return open ? internal::kUndecided : 1;
+  }
+  // misses(): a row with a·g ≤ 0 for every generator (no LP: none counted).
+  int certify_out_test(const internal::FGen* gens, std::size_t n) override {
+    bool open = false;
+    for (const auto& a : rows_enclosed_) {
+      bool outside = true, row_open = false;
+      for (std::size_t k = 0; k < n && outside; ++k) {
+        const int s = sign_of_dot(a, gens[k]);
+        if (s == internal::kUndecided)
+          row_open = true;
+        else if (s > 0)
+          outside = false;
+      }
+      if (outside && !row_open) return 1;
+      open = open || (outside && row_open);
+    }
+    return open ? internal::kUndecided : 0;
+  }
+  bool interval_magnitudes(const internal::FGen&, internal::FMagnitudes&) const override { return false; }
+
  private:
+  static int sign_of_dot(const internal::FGen& a, const internal::FGen& g) {
+    internal::Protect guard;
+    return internal::certain_sign(a[0] * g[0] + a[1] * g[1] + a[2] * g[2]);
+  }
+
   std::array<VectorQ, 3> rows_;
+  std::array<internal::FGen, 3> rows_enclosed_;
 };
 
 Rational in_fraction(const Region& r, const Rational& total) {
@@ -167,6 +211,12 @@ void score_step(const Scene& scene, const DesignOptions& o, const Rational& tota
 }  // namespace
 
 namespace internal {
+
+std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& Wn) {
+  const auto rows = k_rows(Wn);
+  if (!rows) return nullptr;
+  return std::make_unique<FormClosureTarget>(*rows);
+}
 
 // Filters and scores one triple by the ranking push model.
 Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,

@@ -4,8 +4,13 @@
 
 #include <chrono>
 
+#include "filter_test_util.h"
 #include "fixel/error.h"
+#include "fixel/filter.h"
+#include "fixel/internal/design_detail.h"
+#include "fixel/io.h"
 #include "fixel/progress.h"
+#include "fixel/region.h"
 #include "fixel/scene_json.h"
 #include "test_util.h"
 
@@ -180,6 +185,33 @@ GTEST_TEST(Design, BatchesMergeToTheWholeRun) {
     EXPECT_EQ(merged[k].score, whole.layouts[k].score);
   }
   EXPECT_EQ(stats.pruned(), whole.stats.pruned());
+}
+
+GTEST_TEST(Design, TheFormClosureRegionIsTheExactOneAndMostlyPreTested) {
+  // The form-closure filter's target on the blob (curved pieces) for three
+  // of its boundary candidates as fixels: the region JSON is the forced
+  // exact path's, and its interval pre-test decides most tests.
+  const Scene blob = scene_file("blob");
+  const std::vector<DesignCandidate> c = boundary_candidates(blob, std::nullopt);
+  ASSERT_GE(c.size(), 24u);
+  int with_in = 0;
+  for (const std::array<std::size_t, 3> f : {std::array<std::size_t, 3>{0, 8, 16}, {2, 9, 19}, {1, 12, 13}}) {
+    std::array<VectorQ, 3> Wn;
+    for (int i = 0; i < 3; ++i) Wn[i] = contact_wrench(sub(c[f[i]].point, blob.body.p_AoCm_A), c[f[i]].normal, 3);
+    const auto target = internal::form_closure_target(Wn);
+    ASSERT_TRUE(target);
+    RegionOptions opt;
+    opt.resolution = Rational(1, 1024);
+    reset_filter_stats();
+    const std::string filtered =
+        test::run(false, [&] { return test::masked(region_json(blob, compute_region(blob, *target, opt))); });
+    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+    EXPECT_EQ(filtered,
+              test::run(true, [&] { return test::masked(region_json(blob, compute_region(blob, *target, opt))); }));
+    EXPECT_GT(pre.certified, 20 * pre.fallbacks) << pre.certified << " / " << pre.fallbacks;
+    with_in += filtered.find("\"status\": \"in\"") != std::string::npos;
+  }
+  EXPECT_GE(with_in, 1);  // some point of some layout is in form closure
 }
 
 GTEST_TEST(Design, FewerThanThreeCandidatesIsNoLayoutWithAReason) {

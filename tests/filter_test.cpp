@@ -543,19 +543,27 @@ GTEST_TEST(Filter, ExtremeRaysOverQuadraticFieldAreTheExactOnesInTheirOrder) {
 
 // Fixture design ranks layouts by J's region, built with the feasibility
 // filter thousands of times: the ranking's JSON is the exact run's.
-GTEST_TEST(Filter, DesignOfThePolygonIsIdenticalJsonWithAndWithoutFilters) {
-  const Scene polygon = test::scene_file("polygon");
-  std::vector<DesignCandidate> all = boundary_candidates(polygon, std::nullopt), candidates;
-  for (std::size_t k = 0; k < all.size(); k += 3) candidates.push_back(all[k]);  // 8 of the 24
-  DesignOptions options;
-  options.resolution = Rational(1, 64);
-  options.jobs = 1;
-  auto json = [&] { return masked(design_json(polygon, design(polygon, candidates, options), options, std::nullopt)); };
-  reset_filter_stats();
-  const std::string filtered = run(false, json);
-  EXPECT_NE(filtered.find("\"rank\""), std::string::npos);  // layouts were ranked
-  EXPECT_GT(filter_stats().at(FilterSite::kFeasibility).certified, 0);
-  EXPECT_EQ(filtered, run(true, json));
+// Fixture design, filtered against forced exact: J's construction and
+// region, and the form-closure filter's region (its own pre-test), on the
+// polygon (8 of its 24 candidates) and the blob (6: curved pieces).
+GTEST_TEST(Filter, DesignOfThePolygonAndTheBlobIsIdenticalJsonWithAndWithoutFilters) {
+  for (const auto& [name, step] : {std::pair{"polygon", 3}, std::pair{"blob", 4}}) {
+    SCOPED_TRACE(name);
+    const Scene part = test::scene_file(name);
+    std::vector<DesignCandidate> all = boundary_candidates(part, std::nullopt), candidates;
+    for (std::size_t k = 0; k < all.size(); k += step) candidates.push_back(all[k]);
+    DesignOptions options;
+    options.resolution = Rational(1, 64);
+    options.jobs = 1;
+    auto json = [&] { return masked(design_json(part, design(part, candidates, options), options, std::nullopt)); };
+    reset_filter_stats();
+    const std::string filtered = run(false, json);
+    EXPECT_NE(filtered.find("\"rank\""), std::string::npos);  // layouts were ranked
+    EXPECT_GT(filter_stats().at(FilterSite::kFeasibility).certified, 0);
+    const FilterCounts region = filter_stats().at(FilterSite::kRegionTest);
+    EXPECT_GT(region.certified, 20 * region.fallbacks) << region.certified << " / " << region.fallbacks;
+    EXPECT_EQ(filtered, run(true, json));
+  }
 }
 
 // J's region pre-test (src/sustained_filter.cpp) on designed layouts of a

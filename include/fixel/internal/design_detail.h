@@ -4,9 +4,11 @@
 // filter and score of one triple.
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "fixel/design.h"
+#include "fixel/region_target.h"
 
 namespace fixel::internal {
 
@@ -18,6 +20,12 @@ Rational total_length(const Boundary& b);
 
 // A rational unit vector near the direction of n, and the angle between them.
 Vec2 unit_near(const Vec2& n, double* angle_error);
+
+// The form-closure filter's region target for the fixels' normal wrenches
+// W_n (each fixel's (n, r ⊗ n)): a boundary point is IN when a frictionless
+// push there and W_n are in form closure. Null when W_n is singular. It
+// answers the region's interval pre-test too.
+std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& Wn);
 
 enum class Verdict { kSingular, kNoFormClosure, kJEmpty, kScored };
 
