@@ -229,4 +229,65 @@ bool feasible_filtered(const std::vector<RowRef<Q2>>& refs) {
   return answer;
 }
 
+std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar) {
+  if (force_exact() || planar) return facets_of<Q2>(gens, planar);
+  std::vector<A3<FI>> enclosed;
+  for (const auto& g : gens) enclosed.push_back({enclosure(g[0]), enclosure(g[1]), enclosure(g[2])});
+  std::vector<A3<Q2>> out;
+  std::vector<A3<FI>> out_enclosed;
+  for (std::size_t i = 0; i < gens.size(); ++i)
+    for (std::size_t j = i + 1; j < gens.size(); ++j) {
+      A3<FI> c_enclosed;
+      {
+        Protect guard;
+        c_enclosed = cross3(enclosed[i], enclosed[j]);
+      }
+      std::optional<A3<Q2>> c;  // the exact product, made when needed
+      auto exact = [&]() -> const A3<Q2>& {
+        if (!c) c = cross3(gens[i], gens[j]);
+        return *c;
+      };
+      // supporting_side (cone3.h), each sign on enclosures first.
+      bool nonneg = true, nonpos = true;
+      for (std::size_t k = 0; k < gens.size() && (nonneg || nonpos); ++k) {
+        if (k == i || k == j) continue;
+        int s = kUndecided;
+        {
+          Protect guard;
+          s = certain_sign(dot3(c_enclosed, enclosed[k]));
+        }
+        record_filter(FilterSite::kJam, s != kUndecided);
+        if (s == kUndecided) s = sign(dot3(exact(), gens[k]));
+        nonneg = nonneg && s >= 0;
+        nonpos = nonpos && s <= 0;
+      }
+      const int side = nonneg ? 1 : (nonpos ? -1 : 0);
+      if (side == 0) continue;
+      const A3<Q2> a = side > 0 ? exact() : neg3(exact());
+      const A3<FI> a_enclosed = side > 0 ? c_enclosed : A3<FI>{-c_enclosed[0], -c_enclosed[1], -c_enclosed[2]};
+      // add_unique (cone3.h): a repeat is a positive multiple of a facet
+      // kept; a certainly nonzero cross product rules one out.
+      bool repeat = false;
+      for (std::size_t q = 0; q < out.size() && !repeat; ++q) {
+        bool apart = false;
+        {
+          Protect guard;
+          for (const FI& x : cross3(out_enclosed[q], a_enclosed)) {
+            const int sx = certain_sign(x);
+            apart = apart || (sx != kUndecided && sx != 0);
+          }
+        }
+        if (apart) continue;
+        try {
+          repeat = is_zero3(cross3(out[q], a)) && sign_dot3(out[q], a) > 0;
+        } catch (const Undecided&) {
+        }
+      }
+      if (repeat) continue;
+      out.push_back(a);
+      out_enclosed.push_back(a_enclosed);
+    }
+  return out;
+}
+
 }  // namespace fixel::internal

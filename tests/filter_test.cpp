@@ -541,8 +541,34 @@ GTEST_TEST(Filter, ExtremeRaysOverQuadraticFieldAreTheExactOnesInTheirOrder) {
   EXPECT_GT(rays, 200);  // the cones have rays to compare
 }
 
-// Fixture design ranks layouts by J's region, built with the feasibility
-// filter thousands of times: the ranking's JSON is the exact run's.
+// The jam cones' facets over Q(√2): the filtered facets_of (enclosures
+// first for each pair's side tests and for the duplicate test) gives the
+// exact one's facets in its order, for cones of 3 to 5 generators around
+// +z with repeated, scaled and interior generators among them.
+GTEST_TEST(Filter, FacetsOverQuadraticFieldAreTheExactOnesInTheirOrder) {
+  using internal::A3;
+  using internal::Q2;
+  std::mt19937_64 rng(39);
+  auto q2 = [&] { return random_q2(rng); };
+  int facets = 0;
+  for (int k = 0; k < 100; ++k) {
+    std::vector<A3<Q2>> gens;
+    for (int r = 0; r < 3 + k % 3; ++r) gens.push_back({q2(), q2(), Q2(Rational(8)) + q2()});
+    if (k % 4 == 0) gens.push_back(gens[1]);  // a repeated generator
+    if (k % 4 == 1)
+      gens.push_back({gens[0][0] * Q2(Rational(3)), gens[0][1] * Q2(Rational(3)), gens[0][2] * Q2(Rational(3))});
+    if (k % 4 == 2)  // the sum of two: inside the cone
+      gens.push_back({gens[0][0] + gens[1][0], gens[0][1] + gens[1][1], gens[0][2] + gens[1][2]});
+    const auto filtered = run(false, [&] { return internal::facets_of(gens, false); });
+    const auto exact = run(true, [&] { return internal::facets_of(gens, false); });
+    ASSERT_EQ(filtered.size(), exact.size()) << "cone " << k;
+    for (std::size_t r = 0; r < exact.size(); ++r)
+      for (int c = 0; c < 3; ++c) EXPECT_TRUE(filtered[r][c] == exact[r][c]) << "cone " << k << " facet " << r;
+    facets += static_cast<int>(exact.size());
+  }
+  EXPECT_GT(facets, 250);  // the cones have facets to compare
+}
+
 // Fixture design, filtered against forced exact: J's construction and
 // region, and the form-closure filter's region (its own pre-test), on the
 // polygon (8 of its 24 candidates) and the blob (6: curved pieces).

@@ -256,6 +256,11 @@ std::vector<A3<NT>> rays_of(const std::vector<A3<NT>>& rows) {
 // for signs the enclosures leave open. The same rays in the same order.
 std::vector<A3<Q2>> rays_of(const std::vector<A3<Q2>>& rows);
 
+// facets_of over Q(√d) (src/cone3.cpp), filtered the same way: each pair's
+// cross product and side tests, and the duplicate test of add_unique, on
+// enclosures first. The same facets in the same order.
+std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar);
+
 template <class NT>
 std::vector<Row<NT>> homogeneous(const std::vector<A3<NT>>& rows, bool strict) {
   std::vector<Row<NT>> out;
