@@ -1,5 +1,6 @@
 // Fourier–Motzkin feasibility over Q(√d) on enclosures, with exact rows
 // computed only where a sign needs them (internal/cone3.h).
+#include <array>
 #include <deque>
 #include <optional>
 
@@ -10,13 +11,14 @@ namespace fixel::internal {
 namespace {
 
 // A row of the elimination: its enclosure, and how its exact form is made
-// (an input row, or wp·P + wn·N eliminating unknown j), computed on demand.
+// (an input row, or wp·P + wn·N eliminating unknown j), computed on demand
+// coefficient by coefficient (k = 0..2 the a's, 3 the right side b).
 struct Node {
   A3<FI> a;
   FI b;
   bool strict = false;
-  int p = -1, n = -1, j = -1;  // parents and the unknown eliminated (−1: an input row)
-  int exact = -1;              // index of the exact row, once computed
+  int p = -1, n = -1, j = -1;                // parents and the unknown eliminated (−1: an input row)
+  std::array<int, 4> exact{-1, -1, -1, -1};  // index of each exact coefficient, once computed
 };
 
 // An enclosure of x (to_interval_q2: an irrational's is kept in x, and
@@ -27,7 +29,7 @@ FI enclosure(const Q2& x) { return to_interval_q2(x); }
 // call does not nest another).
 struct Storage {
   std::vector<Node> nodes;
-  std::deque<Row<Q2>> exact;
+  std::deque<Q2> exact;  // the exact coefficients computed (a deque: references stay valid)
   std::vector<int> rows, pos, neg, next;
 };
 
@@ -98,49 +100,47 @@ class Elimination {
 
  private:
   // Sign of coefficient k (3: the right side) of row r: its enclosure's
-  // when certain, else the exact row's.
+  // when certain, else the exact coefficient's.
   int sign_of(int r, int k) {
     const FI& x = k < 3 ? nodes_[r].a[k] : nodes_[r].b;
     const int s = certain_sign(x);
     if (s != kUndecided) return s;
-    const Row<Q2>& e = exact(r);
+    const Q2& e = exact(r, k);
     const Protect_nearest nearest(CGAL_FE_TONEAREST);  // exact signs in the default rounding mode
-    return sign(k < 3 ? e.a[k] : e.b);
+    return sign(e);
   }
 
-  // The exact row r, from its parents' exact rows (memoised); its
-  // enclosure is then narrowed to the exact values' (a zero becomes a
-  // point), so that rows made from it later are tighter.
-  const Row<Q2>& exact(int r) {
+  // Coefficient k of the exact row r: an input row's own, or
+  // wp·P_k + wn·N_k with wp = −N_j, wn = P_j from its parents' exact
+  // coefficients (memoised, so each is computed once); its enclosure is
+  // then narrowed to the exact value's (a zero becomes a point), so that
+  // rows made from it later are tighter. Row r's coefficient j is zero by
+  // construction.
+  const Q2& exact(int r, int k) {
     used_exact_ = true;
-    const Node x = nodes_[r];  // a copy: the parents' exact rows are made first
-    if (x.j < 0 && input_) return (*input_)[x.p];
-    if (x.exact >= 0) return exact_[x.exact];
-    if (x.j < 0) {  // an input row by reference: copied once, now
-      const RowRef<Q2>& ref = (*refs_)[x.p];
-      exact_.push_back(Row<Q2>{*ref.a, Q2(0), ref.strict});
-      nodes_[r].exact = static_cast<int>(exact_.size()) - 1;
-      return exact_.back();
-    }
-    const Row<Q2>& P = exact(x.p);  // exact_ is a deque: references stay valid
-    const Row<Q2>& N = exact(x.n);
-    const int j = x.j;
-    {
+    const Node x = nodes_[r];  // a copy: nodes_ may not grow here, but exact() recurses
+    if (x.j < 0) return input_coefficient(x.p, k);
+    if (x.exact[k] >= 0) return exact_[x.exact[k]];
+    if (k == x.j) {
+      exact_.push_back(Q2(0));
+    } else {
+      const Q2& pj = exact(x.p, x.j);
+      const Q2& nj = exact(x.n, x.j);
+      const Q2& pk = exact(x.p, k);
+      const Q2& nk = exact(x.n, k);
       const Protect_nearest nearest(CGAL_FE_TONEAREST);  // exact arithmetic in the default rounding mode
-      const Q2 wp = -N.a[j], wn = P.a[j];
-      Row<Q2> out;
-      for (int k = 0; k < 3; ++k) out.a[k] = wp * P.a[k] + wn * N.a[k];
-      out.a[j] = Q2(0);
-      out.b = wp * P.b + wn * N.b;
-      out.strict = P.strict || N.strict;
-      exact_.push_back(std::move(out));
+      exact_.push_back(-nj * pk + pj * nk);
     }
-    Node& y = nodes_[r];
-    y.exact = static_cast<int>(exact_.size()) - 1;
-    const Row<Q2>& e = exact_.back();
-    for (int k = 0; k < 3; ++k) y.a[k] = enclosure(e.a[k]);
-    y.b = enclosure(e.b);
+    nodes_[r].exact[k] = static_cast<int>(exact_.size()) - 1;
+    const Q2& e = exact_.back();
+    (k < 3 ? nodes_[r].a[k] : nodes_[r].b) = enclosure(e);
     return e;
+  }
+
+  const Q2& input_coefficient(int p, int k) {
+    if (input_) return k < 3 ? (*input_)[p].a[k] : (*input_)[p].b;
+    static const Q2 zero(0);  // rows by reference are homogeneous
+    return k < 3 ? (*(*refs_)[p].a)[k] : zero;
   }
 
   void start() {
@@ -162,7 +162,7 @@ class Elimination {
   const std::vector<RowRef<Q2>>* refs_ = nullptr;  // or by reference
   Storage& storage_ = storage();
   std::vector<Node>& nodes_ = storage_.nodes;
-  std::deque<Row<Q2>>& exact_ = storage_.exact;
+  std::deque<Q2>& exact_ = storage_.exact;
   bool used_exact_ = false;
 };
 
