@@ -136,13 +136,30 @@ struct FilteredHalfspaces {
     return !T.has_hi || T.hi.inf() > T.lo.sup();
   }
 
-  // A Farkas certificate that no μ >= 0 has a_k·(b0 + Σ μ_j g_j) ≥ c_k for
-  // every k: y >= 0 with Σ_k y_k a_k·g_j <= 0 for every j and y·β > 0. A
-  // candidate y is found in doubles (three halfspaces: the vertices of the
-  // feasible polygon on the simplex Σ y = 1, then its centre at half the best
-  // y·β) and checked in intervals. True only when certified.
+  // A Farkas certificate that no μ >= 0 with Σ μ_j > 0 has
+  // a_k·(b0 + Σ μ_j g_j) ≥ c_k for every k: y >= 0 with Σ_k y_k a_k·g_j <= 0
+  // for every j and y·β > 0; or, for b0 on the facets with y_k > 0 (β_k = 0,
+  // as at the apex of a cone S), Σ_k y_k a_k·g_j < 0 for every j and
+  // y·β >= 0 (docs/theory.md §8). y is supported on three facets: all of
+  // them for a set of three, else each triple in turn (a certificate for
+  // the set those three bound is one for S, which lies inside it). A
+  // candidate is found in doubles (the vertices of the feasible polygon on
+  // the simplex Σ y = 1, then its centre at half the best y·β, or the
+  // centre of its vertices) and checked in intervals. True only when
+  // certified.
   bool certify_infeasible(const std::array<FI, 3>* gens, std::size_t n) const {
-    if (a.size() != 3) return false;
+    const std::size_t m = a.size();
+    if (m < 3 || m > kMaxFarkasFacets) return false;
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = i + 1; j < m; ++j)
+        for (std::size_t k = j + 1; k < m; ++k)
+          if (certify_on({i, j, k}, gens, n)) return true;
+    return false;
+  }
+
+  static constexpr std::size_t kMaxFarkasFacets = 12;  // 220 triples at most
+
+  bool certify_on(const std::array<std::size_t, 3>& f, const std::array<FI, 3>* gens, std::size_t n) const {
     using V3 = std::array<double, 3>;
     using V3s = boost::container::small_vector<V3, 24>;  // no allocation for small cones
     V3s u;                                               // constraints u·y <= 0
@@ -150,12 +167,12 @@ struct FilteredHalfspaces {
       internal::Protect guard;
       for (const auto& g : boost::make_iterator_range(gens, gens + n)) {
         V3 c;
-        for (int k = 0; k < 3; ++k) c[k] = CGAL::to_double(alpha(k, g));
+        for (int k = 0; k < 3; ++k) c[k] = CGAL::to_double(alpha(f[k], g));
         u.push_back(c);
       }
     }
     for (int k = 0; k < 3; ++k) u.push_back({k == 0 ? -1.0 : 0.0, k == 1 ? -1.0 : 0.0, k == 2 ? -1.0 : 0.0});
-    const V3 b{CGAL::to_double(beta[0]), CGAL::to_double(beta[1]), CGAL::to_double(beta[2])};
+    const V3 b{CGAL::to_double(beta[f[0]]), CGAL::to_double(beta[f[1]]), CGAL::to_double(beta[f[2]])};
     auto dot3 = [](const V3& x, const V3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
     // Vertices: u_p·y = u_q·y = 0, Σ y = 1.
     auto vertices = [&](const V3s& cons) {
@@ -174,25 +191,36 @@ struct FilteredHalfspaces {
         }
       return out;
     };
+    auto centre = [](const V3s& vs) {
+      V3 y{0, 0, 0};
+      for (const auto& v : vs)
+        for (int k = 0; k < 3; ++k) y[k] += v[k] / static_cast<double>(vs.size());
+      for (auto& x : y) x = std::max(x, 0.0);
+      return y;
+    };
+    const V3s corners = vertices(u);
+    if (corners.empty()) return false;
     double best = 0;
-    for (const auto& y : vertices(u)) best = std::max(best, dot3(b, y));
-    if (!(best > 0)) return false;
-    V3s cons = u;
-    cons.push_back({best / 2 - b[0], best / 2 - b[1], best / 2 - b[2]});  // y·β >= best/2
-    const auto vs = vertices(cons);
-    if (vs.empty()) return false;
-    V3 y{0, 0, 0};
-    for (const auto& v : vs)
-      for (int k = 0; k < 3; ++k) y[k] += v[k] / static_cast<double>(vs.size());
-    for (auto& x : y) x = std::max(x, 0.0);
+    for (const auto& y : corners) best = std::max(best, dot3(b, y));
+    const bool strict = !(best > 0);  // no y·β > 0: try the other alternative
+    V3 y;
+    if (strict) {
+      y = centre(corners);
+    } else {
+      V3s cons = u;
+      cons.push_back({best / 2 - b[0], best / 2 - b[1], best / 2 - b[2]});  // y·β >= best/2
+      const auto vs = vertices(cons);
+      if (vs.empty()) return false;
+      y = centre(vs);
+    }
     // Certify with the data's enclosures; y is taken as exact.
     internal::Protect guard;
     for (const auto& g : boost::make_iterator_range(gens, gens + n)) {
-      const FI t = FI(y[0]) * alpha(0, g) + FI(y[1]) * alpha(1, g) + FI(y[2]) * alpha(2, g);
-      if (!(t.sup() <= 0)) return false;
+      const FI t = FI(y[0]) * alpha(f[0], g) + FI(y[1]) * alpha(f[1], g) + FI(y[2]) * alpha(f[2], g);
+      if (!(strict ? t.sup() < 0 : t.sup() <= 0)) return false;
     }
-    const FI t = FI(y[0]) * beta[0] + FI(y[1]) * beta[1] + FI(y[2]) * beta[2];
-    return t.inf() > 0;
+    const FI t = FI(y[0]) * beta[f[0]] + FI(y[1]) * beta[f[1]] + FI(y[2]) * beta[f[2]];
+    return strict ? t.inf() >= 0 : t.inf() > 0;
   }
 
   // A witness that some μ >= 0 with Σμ > 0 puts b0 + Σ μ_j g_j in the set: a
