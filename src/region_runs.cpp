@@ -109,10 +109,34 @@ std::vector<RegionInterval> merge_runs(std::vector<RegionInterval> in) {
 
 Magnitudes neutral_magnitudes() { return Magnitudes::make(Rational(0), true, std::nullopt, false); }
 
+namespace {
+
+// The exact magnitudes of a deferred IN answer. When its lower end's
+// enclosure is a point and it has no upper end, that is the answer
+// common_magnitudes gives (lo the point, the conjunction of the lower
+// ends' closedness, as the bounds hold it), with no exact work; this is
+// the rule where b0 is the apex of S, every lower end 0. Else the exact path.
+Magnitudes exact_magnitudes(const Deferred& d, long& computed) {
+  const MagnitudeBounds& b = d.bounds;
+  if (!b.has_hi && b.lo.inf() == b.lo.sup()) {
+    Magnitudes m;
+    m.empty = false;
+    m.lo = Rational(b.lo.inf());
+    m.lo_closed = b.lo_closed;
+    m.hi_closed = true;  // as common_magnitudes leaves it without an upper end
+    return m;
+  }
+  ++computed;
+  return d.exact();
+}
+
+}  // namespace
+
 void settle(std::vector<RegionInterval>& raw, const std::vector<Deferred>& deferred, bool merging) {
   if (!merging) {
-    for (const auto& d : deferred) raw[d.index].magnitudes = d.exact();
-    record_filter(FilterSite::kInMagnitudes, 0, static_cast<long>(deferred.size()));
+    long computed = 0;
+    for (const auto& d : deferred) raw[d.index].magnitudes = exact_magnitudes(d, computed);
+    record_filter(FilterSite::kInMagnitudes, static_cast<long>(deferred.size()) - computed, computed);
     return;
   }
   long computed = 0;
@@ -139,10 +163,8 @@ void settle(std::vector<RegionInterval>& raw, const std::vector<Deferred>& defer
       if (m.hi) min_hi = std::min(min_hi, to_interval(*m.hi).sup());
     }
     for (std::size_t k = i; k < j; ++k)
-      if (of[k] && (of[k]->bounds.lo.sup() >= max_lo || (of[k]->bounds.has_hi && of[k]->bounds.hi.inf() <= min_hi))) {
-        raw[k].magnitudes = of[k]->exact();
-        ++computed;
-      }
+      if (of[k] && (of[k]->bounds.lo.sup() >= max_lo || (of[k]->bounds.has_hi && of[k]->bounds.hi.inf() <= min_hi)))
+        raw[k].magnitudes = exact_magnitudes(*of[k], computed);
   }
   record_filter(FilterSite::kInMagnitudes, static_cast<long>(deferred.size()) - computed, computed);
 }

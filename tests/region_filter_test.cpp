@@ -240,6 +240,29 @@ GTEST_TEST(RegionFilter, PaperConeEnclosuresHoldTheExactGeneratorsOfRandomSegmen
   EXPECT_LT(undecided * 20, built) << undecided << " undecided, " << none << " without a cone";
 }
 
+GTEST_TEST(RegionFilter, InMagnitudesWhoseLowerEndIsAPointAndNoUpperEndNeedNoExactPath) {
+  // The polygon with every gap 0: S is the cone −Σ FC_i and b0 = 0 its
+  // apex, so every IN answer's magnitudes are a half-line from exactly 0,
+  // which the enclosures show (a point lower end, no upper end). They are
+  // settled without the exact path, merged or not, and the JSON is the
+  // exact path's.
+  Scene scene = test::scene_file("polygon");
+  for (auto& f : scene.fixels) f.gap = 0;
+  const SeatingSet S = seating_set(scene);
+  for (const bool merge : {false, true}) {
+    RegionOptions opt;
+    opt.resolution = Rational(1, 1024);
+    opt.merge = merge;
+    reset_filter_stats();
+    const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+    const FilterCounts c = filter_stats().at(FilterSite::kInMagnitudes);
+    EXPECT_GT(c.certified, 0) << "merge " << merge;
+    EXPECT_EQ(c.fallbacks, 0) << "merge " << merge;
+    EXPECT_NE(filtered.find("\"status\": \"in\""), std::string::npos);
+    EXPECT_EQ(filtered, run(true, [&] { return region_json_of(scene, S, opt); })) << "merge " << merge;
+  }
+}
+
 GTEST_TEST(RegionFilter, InAnswersWithCertainlyNoCommonMagnitudeNeedNoExactMagnitudes) {
   // On example2_rounded's right edge the IN segments have magnitude windows
   // whose ends cross: no common magnitude. Their enclosures show it, so the
