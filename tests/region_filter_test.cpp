@@ -26,6 +26,22 @@ namespace {
 using test::region_json_of;
 using test::run;
 
+// A whole piece halved `levels` times in intervals: its 2^levels parts in
+// order.
+std::vector<internal::LazyPiece> halved(const BezierPiece& piece, int levels) {
+  std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
+  for (int level = 0; level < levels; ++level) {
+    std::vector<internal::LazyPiece> next;
+    for (const auto& p : parts) {
+      auto h = p.halves();
+      next.push_back(h.first);
+      next.push_back(h.second);
+    }
+    parts = next;
+  }
+  return parts;
+}
+
 GTEST_TEST(RegionFilter, StraightEdgesWithNonDyadicEndsPassTheRegionPreTestWithoutTheExactPath) {
   // example2_rounded's four straight edges end at tenths: one leg per piece,
   // whose push directions at both ends are the same vector. Before that was
@@ -94,16 +110,7 @@ GTEST_TEST(RegionFilter, InSegmentsOfStraightPiecesCarryMagnitudeBoundsFromThePr
        {std::vector<EdgeFamily>{EdgeFamily::kNormal}, std::vector<EdgeFamily>{EdgeFamily::kMinus, EdgeFamily::kPlus}})
     for (const BezierPiece& piece : scene.body.boundary->pieces) {
       if (piece.control.size() != 2) continue;
-      std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
-      for (int level = 0; level < 10; ++level) {
-        std::vector<internal::LazyPiece> next;
-        for (const auto& p : parts) {
-          auto h = p.halves();
-          next.push_back(h.first);
-          next.push_back(h.second);
-        }
-        parts = next;
-      }
+      const std::vector<internal::LazyPiece> parts = halved(piece, 10);
       const Rational mu = families.size() == 1 ? Rational(0) : Rational(1, 10);
       for (const auto& p : parts) {
         std::optional<internal::MagnitudeBounds> bounds;
@@ -151,16 +158,7 @@ GTEST_TEST(RegionFilter, PaperConesOfEdgesThroughTheCentreOfMassAgreeWithTheExac
   int decided[2] = {0, 0}, pieces = 0;
   for (const int k : {2, 4, 8, 10}) {
     const BezierPiece& piece = scene.body.boundary->pieces[k];
-    std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
-    for (int level = 0; level < 8; ++level) {
-      std::vector<internal::LazyPiece> next;
-      for (const auto& p : parts) {
-        auto h = p.halves();
-        next.push_back(h.first);
-        next.push_back(h.second);
-      }
-      parts = next;
-    }
+    const std::vector<internal::LazyPiece> parts = halved(piece, 8);
     for (const auto& p : parts) {
       ++pieces;
       for (const ConeMethod method : {ConeMethod::kPaper, ConeMethod::kTight}) {
