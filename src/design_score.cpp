@@ -266,7 +266,7 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
       const Scene s = layout_scene(part, cands, l.fixels, o, false);
       if (!l.sustained_score)
         score_sustained(s, o, total, l, true);
-      else if (!*l.sustained_empty)  // ranked without J's width
+      else if (l.sustained_empty.has_value() && !*l.sustained_empty)  // ranked without J's width
         l.j_width = j_width(s, sustained_set(s, false));
     } catch (const Error& e) {
       l.note += std::string(l.note.empty() ? "" : "; ") + "sustained score: " + e.what();

@@ -177,8 +177,8 @@ void check_scene(const Scene& scene) {
   if (nc != 3) throw SceneError("fixels", std::to_string(nc) + " fixels", "the sustained-push set needs exactly 3");
 }
 
-// J's data at the seated pose, in the body frame; the pieces' extreme
-// rays only `with_rays`.
+// J's data at the seated pose, in the body frame; over Q(√d) the pieces'
+// extreme rays only `with_rays` (exact, they never leave a sign open).
 std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const SeatedPose& pose,
                                                    const std::vector<Rational>& mu, bool with_rays) {
   const int nc = scene.num_contacts();
@@ -208,7 +208,10 @@ std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const Sea
       Wn.push_back({nx, ny, rx * ny - ry * nx});
       Wt.push_back({tx, ty, rx * ty - ry * tx});
     }
-    d->data = internal::build<IV>(iv(pose.cos_sin_enclosure[0]), iv(pose.cos_sin_enclosure[1]), Wn, Wt, mu, with_rays);
+    // On intervals the rays are always made: a sign they leave open makes
+    // the pieces undecided, which J's answers (and so sustained_core's)
+    // must show; they cost little there.
+    d->data = internal::build<IV>(iv(pose.cos_sin_enclosure[0]), iv(pose.cos_sin_enclosure[1]), Wn, Wt, mu, true);
   }
   return d;
 }

@@ -15,9 +15,11 @@ struct SustainedData;
 
 // What design's ranking needs of J for each triple: its data (for the region
 // against J) and whether it is empty, at about 3/4 of the cost of
-// sustained_set, which also makes the pieces' extreme rays and the public
-// cones (read only by J's width, a display value). Same validation and
-// errors as sustained_set.
+// sustained_set, which also makes the public cones and, at an exact seat,
+// the pieces' exact extreme rays (read only by J's width, a display
+// value; at an enclosed seat the rays are made anyway, since a sign they
+// leave open makes the pieces undecided). Same validation and errors as
+// sustained_set.
 struct SustainedCore {
   std::shared_ptr<const SustainedData> data;
   bool empty = false;          // J.empty of sustained_set
