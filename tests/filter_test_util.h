@@ -1,10 +1,13 @@
 #pragma once
 // Helpers of the filter tests: run a computation with the filters on or
-// forced off, and compare region JSON with the wall-clock field masked.
+// forced off, compare region JSON with the wall-clock field masked, and
+// halve pieces in intervals.
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "fixel/filter.h"
+#include "fixel/internal/lazy_piece.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
 #include "fixel/scene_json.h"
@@ -43,6 +46,22 @@ inline Scene notched_square() {
                {"point": ["-1", "-2"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/20"},
                {"point": ["1", "-2"], "normal": ["0", "1"], "mu": "1/10", "gap": "3/20"}],
     "pusher": {"mu": "0"}})");
+}
+
+// A whole piece halved `levels` times in intervals: its 2^levels parts in
+// order.
+inline std::vector<internal::LazyPiece> halved(const BezierPiece& piece, int levels) {
+  std::vector<internal::LazyPiece> parts{internal::LazyPiece(piece, true)};
+  for (int level = 0; level < levels; ++level) {
+    std::vector<internal::LazyPiece> next;
+    for (const auto& p : parts) {
+      auto h = p.halves();
+      next.push_back(h.first);
+      next.push_back(h.second);
+    }
+    parts = next;
+  }
+  return parts;
 }
 
 }  // namespace fixel::test

@@ -8,19 +8,16 @@
 // are part of the answer) and anything undecided go to the exact path, which
 // recomputes from scratch, so no answer depends on which path ran.
 
-#include <array>
-#include <boost/container/small_vector.hpp>
 #include <optional>
 #include <vector>
 
+#include "fixel/internal/enclosed_plane.h"
 #include "fixel/internal/filtered.h"
+#include "fixel/internal/lazy_piece.h"
 #include "fixel/region.h"
 #include "fixel/wrench_cone.h"
 
 namespace fixel::internal {
-
-// A wrench generator (f_x, f_y, moment about the centre of mass) enclosed.
-using FGen = std::array<FI, 3>;
 
 // Enclosure of a target's exact ray magnitudes T(g) = {τ > 0 : b0 + τ g in
 // the target}, certified non-empty: lo (closed or open), hi when bounded
@@ -93,39 +90,6 @@ enum class Quick {
   kUnknown,  // some sign undecided: the exact path decides
 };
 
-// A piece of the subdivision: a parameter range [u0, u1] of a boundary
-// piece, enclosures of its control points and of its control polygon's
-// legs (both halved in intervals), and its exact control points only when
-// asked for (the exact path), then made from the boundary piece (the
-// control points of a sub-curve are unique, so they equal those of
-// repeated halving). Children of a piece whose exact points were asked for
-// are halved exactly.
-class LazyPiece {
- public:
-  using Enclosures = boost::container::small_vector<FVec2, 4>;
-  // The whole boundary piece; with `enclose`, its control points' enclosures.
-  LazyPiece(const BezierPiece& root, bool enclose);
-  int curve() const { return root_->curve; }
-  const Rational& u0() const { return u0_; }
-  const Rational& u1() const { return u1_; }
-  // Empty when made without enclosures.
-  const Enclosures& enclosures() const { return ctrl_; }
-  // Legs P_{k+1} − P_k, enclosed on their own: a difference of two point
-  // enclosures loses all relative precision once the piece is short.
-  const Enclosures& leg_enclosures() const { return legs_; }
-  const BezierPiece& exact() const;
-  // The halves at local parameter 1/2.
-  std::pair<LazyPiece, LazyPiece> halves() const;
-
- private:
-  LazyPiece(const BezierPiece* root, Rational u0, Rational u1) : root_(root), u0_(std::move(u0)), u1_(std::move(u1)) {}
-  const BezierPiece* root_;
-  Rational u0_, u1_;
-  Enclosures ctrl_, legs_;
-  mutable std::optional<BezierPiece> exact_;
-  mutable bool asked_ = false;
-};
-
 // The segment test of classify (region.cpp) with the tight or the paper
 // cone (`method`) for `families` of push directions with pusher friction
 // mu, centre of mass c, from the enclosures of the segment's control
@@ -134,16 +98,6 @@ class LazyPiece {
 Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclosures& legs, const Vec2& c,
                     const Rational& mu, const std::vector<EdgeFamily>& families, ConeMethod method,
                     IntervalTarget& target, std::optional<MagnitudeBounds>* bounds = nullptr);
-
-// The paper cone (segment_wrench_cone with ConeMethod::kPaper) of one edge
-// family's push directions enclosed by ds and de, for a segment with
-// control points and legs enclosed and centre of mass c, as the pre-test
-// builds it: 1 with `gens` enclosing the exact generators in their order
-// (the two of û_s only, when û_e = û_s exactly), 0 when the exact
-// construction finds no cone (its unit directions span π), kUndecided when
-// a sign it needs is not certified.
-int paper_cone_enclosure(const FVec2& ds, const FVec2& de, const LazyPiece::Enclosures& control,
-                         const LazyPiece::Enclosures& legs, const Vec2& c, std::vector<FGen>& gens);
 
 // cos_half_angle_lower(a, b) (internal/wrench_cone_detail.h) of the exact
 // directions enclosed by a and b, enclosed; false when not certified (then
