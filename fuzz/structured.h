@@ -11,8 +11,9 @@
 //   sizes are small (3–6 corners, shallow region resolution, one or two
 //   samples, short pushes, 50 ms budgets) so that a typical input takes a
 //   few milliseconds under the sanitizers. With `slow` (the
-//   structured_slow_fuzz target) the two costly operations instead: every
-//   contact mode of a three-fixel step, and the guaranteed set.
+//   structured_slow_fuzz target) the three costly operations instead: every
+//   contact mode of a three-fixel step, the guaranteed set, and fixture
+//   design on a few candidates (filtered against forced exact).
 // - run_structured (the regression replay only): the whole library on one
 //   star-shaped scene, as the first structured target did (80–200 ms under
 //   the sanitizers); kept so that its saved inputs mean what they meant.
@@ -22,10 +23,13 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "fixel/design.h"
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/guaranteed.h"
 #include "fixel/outcomes.h"
 #include "fixel/physics.h"
@@ -234,6 +238,23 @@ inline std::string point_mass_scene_from_bytes(ByteReader& in) {
          in.number(2, 4) + "]}, \"fixels\": [" + fixels + "], \"pusher\": {\"mu\": " + in.nonneg(2, 4) + "}}";
 }
 
+// Whether two design runs gave the same exact answer: the layouts, their
+// exact scores and notes, and the counts (not the display doubles).
+inline bool same_design(const DesignResult& a, const DesignResult& b) {
+  if (a.no_layout != b.no_layout || a.layouts.size() != b.layouts.size()) return false;
+  const DesignStats &s = a.stats, &t = b.stats;
+  if (s.singular != t.singular || s.no_form_closure != t.no_form_closure || s.j_empty != t.j_empty ||
+      s.regions != t.regions)
+    return false;
+  for (std::size_t k = 0; k < a.layouts.size(); ++k) {
+    const DesignLayout &x = a.layouts[k], &y = b.layouts[k];
+    if (x.fixels != y.fixels || x.index != y.index || x.score != y.score || x.sustained_score != y.sustained_score ||
+        x.sustained_empty != y.sustained_empty || x.step_score != y.step_score || x.note != y.note)
+      return false;
+  }
+  return true;
+}
+
 // The operations of run_operation, one per input.
 enum class Operation {
   kSeat,             // seating set, its apex against every half-space
@@ -249,10 +270,15 @@ enum class Operation {
   kSustained,        // the sustained set J (with or without the stability check)
   kSustainedRegion,  // J's membership at one wrench, the region against J
   kPush,             // a short constant push in Box2D
-  kCount
+  kCount,            // how many operations precede it: the fast set picks among them
+  // Slow set only, after kCount so that the fast set's saved inputs keep
+  // their meaning: fixture design on 3–5 boundary candidates, whose
+  // filtered answer must equal the forced-exact one.
+  kDesign
 };
 
 inline const char* operation_name(Operation op) {
+  if (op == Operation::kDesign) return "design";
   static const char* const names[] = {
       "seat",         "outcomes",   "simulate",    "seat_and_stay", "region",           "exact_region", "sample",
       "point_status", "guaranteed", "seated_pose", "sustained",     "sustained_region", "push"};
@@ -265,12 +291,13 @@ inline const char* operation_name(Operation op) {
 // or any other exception is a defect. The fast set (`slow` false, the
 // structured_fuzz target) takes 4–40 ms per input under ASan + UBSan; the
 // slow set (structured_slow_fuzz) is every contact mode of a three-fixel
-// step and the guaranteed set, 50 ms to seconds each.
+// step, the guaranteed set and fixture design, 50 ms to seconds each.
 inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow = false) {
   ByteReader in(data, size);
   Operation op;
   if (slow) {
-    op = in.byte() % 2 ? Operation::kGuaranteed : Operation::kOutcomes;
+    static const Operation slow_set[] = {Operation::kOutcomes, Operation::kGuaranteed, Operation::kDesign};
+    op = slow_set[in.byte() % 3];
   } else {
     op = static_cast<Operation>(in.byte() % static_cast<int>(Operation::kCount));
     if (op == Operation::kGuaranteed) op = Operation::kSeat;  // slow set only
@@ -279,7 +306,8 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
   const bool needs_outline_fixels =
       op == Operation::kSeatedPose || op == Operation::kSustained || op == Operation::kSustainedRegion;
   const bool needs_boundary = needs_outline_fixels || op == Operation::kRegion || op == Operation::kExactRegion ||
-                              op == Operation::kSample || op == Operation::kPointStatus || op == Operation::kPush;
+                              op == Operation::kSample || op == Operation::kPointStatus || op == Operation::kPush ||
+                              op == Operation::kDesign;
   // Every contact mode of a dof-3 step (4^3 exact systems) is slow: the fast
   // set enumerates the 4^2 of a point mass.
   const bool point_mass = (kind == 3 && !needs_boundary) || (!slow && op == Operation::kOutcomes);
@@ -374,6 +402,31 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
       options.time = Rational(in.in(1, 4), 8);
       options.trajectory_samples = 10;
       (void)physics::push(scene, p, options);
+      break;
+    }
+    case Operation::kDesign: {
+      std::vector<DesignCandidate> all = boundary_candidates(scene, std::nullopt), picked;
+      for (int k = in.in(3, 5); k > 0 && !all.empty(); --k) {
+        const auto at = all.begin() + in.in(0, static_cast<int>(all.size()) - 1);
+        picked.push_back(*at);
+        all.erase(at);
+      }
+      DesignOptions options;
+      options.push = in.byte() % 2 ? DesignPush::kStep : DesignPush::kSustained;
+      options.resolution = Rational(1, 1 << in.in(1, 3));
+      options.mu = Rational(in.in(0, 5), 10);
+      options.pusher_mu = Rational(in.in(0, 2), 10);
+      options.top = 3;
+      options.jobs = 1;
+      options.control = &control;
+      const DesignResult filtered = design(scene, picked, options);
+      DesignResult exact;
+      {
+        const ForceExactScope forced;
+        exact = design(scene, picked, options);
+      }
+      if (!same_design(filtered, exact))
+        throw InternalError("design: the filtered and the forced-exact answers differ");
       break;
     }
     case Operation::kCount:

@@ -13,7 +13,9 @@
 #                         seeded with one input per operation and scene kind,
 #                         and tests/fuzz_regressions/structured/.
 #   structured_slow_fuzz  the costly operations: every contact mode of a
-#                         three-fixel step, the guaranteed set; corpus
+#                         three-fixel step, the guaranteed set, fixture
+#                         design on a few candidates (filtered against
+#                         forced exact: a difference is a defect); corpus
 #                         tests/fuzz_regressions/structured_slow/.
 # Crashing inputs are written to build-asan/fuzz-crashes/<target>-*; keep each
 # one as a regression input: scene_fuzz ones as tests/fuzz_regressions/*.json,

@@ -95,5 +95,37 @@ GTEST_TEST(FuzzRegressions, EverySlowStructuredInputRunsCleanly) {
   EXPECT_GE(replayed, 2);
 }
 
+// The slow set's design operation compares the filtered answer with the
+// forced-exact one: its kept polygon input runs both to the end (no error,
+// no stop), and the comparison tells answers apart by one exact score, one
+// count or one note.
+GTEST_TEST(FuzzRegressions, TheDesignInputRunsToTheEndAndItsComparisonSeesOneDifferentScore) {
+  const std::filesystem::path path = std::filesystem::path(FIXEL_SOURCE_DIR) / "tests" / "fuzz_regressions" /
+                                     "structured_slow" / "seed_design_polygon.bin";
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GE(bytes.size(), 2u);
+  EXPECT_NO_THROW(fuzz::run_operation(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), true));
+
+  DesignResult a;
+  a.layouts.resize(2);
+  a.layouts[1].score = Rational(3, 8);
+  a.layouts[1].step_score = Rational(1, 4);
+  a.stats.regions = 2;
+  DesignResult b = a;
+  EXPECT_TRUE(fuzz::same_design(a, b));
+  b.layouts[1].step_score = Rational(1, 5);
+  EXPECT_FALSE(fuzz::same_design(a, b));
+  b = a;
+  b.stats.j_empty = 1;
+  EXPECT_FALSE(fuzz::same_design(a, b));
+  b = a;
+  b.layouts[0].note = "J undecided";
+  EXPECT_FALSE(fuzz::same_design(a, b));
+  b = a;
+  b.layouts[0].j_width = 0.5;  // display only
+  EXPECT_TRUE(fuzz::same_design(a, b));
+}
+
 }  // namespace
 }  // namespace fixel
