@@ -31,6 +31,7 @@
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/guaranteed.h"
+#include "fixel/io.h"
 #include "fixel/outcomes.h"
 #include "fixel/physics.h"
 #include "fixel/progress.h"
@@ -238,6 +239,31 @@ inline std::string point_mass_scene_from_bytes(ByteReader& in) {
          in.number(2, 4) + "]}, \"fixels\": [" + fixels + "], \"pusher\": {\"mu\": " + in.nonneg(2, 4) + "}}";
 }
 
+// A region's JSON with its one wall-clock field ("seconds") masked.
+inline std::string masked_region_json(const Scene& scene, const Region& region) {
+  std::string text = region_json(scene, region);
+  const std::string key = "\"seconds\": ";
+  for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + key.size())) {
+    std::size_t end = at + key.size();
+    while (end < text.size() && std::string("0123456789.e+-").find(text[end]) != std::string::npos) ++end;
+    text.replace(at + key.size(), end - at - key.size(), "X");
+  }
+  return text;
+}
+
+// Computes a region with the filters and forced exact: the two must be the
+// same JSON (the filters decide nothing the exact path would not).
+template <class Compute>
+void check_filtered_region(const Scene& scene, const char* what, Compute compute) {
+  const std::string filtered = masked_region_json(scene, compute());
+  std::string exact;
+  {
+    const ForceExactScope forced;
+    exact = masked_region_json(scene, compute());
+  }
+  if (filtered != exact) throw InternalError(std::string(what) + ": the filtered and the forced-exact regions differ");
+}
+
 // Whether two design runs gave the same exact answer: the layouts, their
 // exact scores and notes, and the counts (not the display doubles).
 inline bool same_design(const DesignResult& a, const DesignResult& b) {
@@ -261,14 +287,14 @@ enum class Operation {
   kOutcomes,         // every contact mode of one step (dof 3: slow set only)
   kSimulate,         // 1–3 exact steps
   kSeatAndStay,      // S ∩ stability cone
-  kRegion,           // subdivision at resolution 1/2–1/8, S or the paper's cone
-  kExactRegion,      // root isolation along every Bézier piece
+  kRegion,           // subdivision at resolution 1/2–1/8, S or the paper's cone (filtered = forced exact)
+  kExactRegion,      // root isolation along every Bézier piece (filtered = forced exact)
   kSample,           // 1–2 points per curve
   kPointStatus,      // one exact point test
-  kGuaranteed,       // the guaranteed set G (slow set only)
+  kGuaranteed,       // the guaranteed set G, its region (filtered = forced exact; slow set only)
   kSeatedPose,       // q* (exact or enclosed)
   kSustained,        // the sustained set J (with or without the stability check)
-  kSustainedRegion,  // J's membership at one wrench, the region against J
+  kSustainedRegion,  // J's membership at one wrench, the region against J (filtered = forced exact)
   kPush,             // a short constant push in Box2D
   kCount,            // how many operations precede it: the fast set picks among them
   // Slow set only, after kCount so that the fast set's saved inputs keep
@@ -352,7 +378,7 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
       options.merge = in.byte() % 4 != 0;
       options.exact = op == Operation::kExactRegion;
       if (options.exact) options.digits = in.in(0, 3);
-      (void)compute_region(scene, S, options);
+      check_filtered_region(scene, "region", [&] { return compute_region(scene, S, options); });
       break;
     }
     case Operation::kSample:
@@ -375,7 +401,7 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
         options.resolution = Rational(1, 2);
         options.control = &control;
         options.guaranteed = &G;
-        (void)compute_region(scene, S, options);
+        check_filtered_region(scene, "region against G", [&] { return compute_region(scene, S, options); });
       }
       break;
     }
@@ -394,7 +420,7 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
       RegionOptions options;
       options.resolution = Rational(1, 1 << in.in(1, 2));
       options.control = &control;
-      (void)compute_region(scene, *target, options);
+      check_filtered_region(scene, "region against J", [&] { return compute_region(scene, *target, options); });
       break;
     }
     case Operation::kPush: {

@@ -9,8 +9,9 @@
 #                         point mass, simulate, seat-and-stay, region, exact
 #                         region, sample, point test, seated pose, sustained set,
 #                         region against it, Box2D push), the next ones a small
-#                         scene that always parses (fuzz/structured.h); corpus
-#                         seeded with one input per operation and scene kind,
+#                         scene that always parses (fuzz/structured.h); each
+#                         region also forced exact, and the two must agree;
+#                         corpus seeded with one input per operation and scene kind,
 #                         and tests/fuzz_regressions/structured/.
 #   structured_slow_fuzz  the costly operations: every contact mode of a
 #                         three-fixel step, the guaranteed set, fixture
