@@ -3,6 +3,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost_mp.h>
 
+#include <array>
+#include <optional>
+
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/filtered.h"
@@ -124,6 +127,77 @@ std::vector<VectorQ> facets2(const std::vector<VectorQ>& rays, int rank) {
   return out;
 }
 
+// facets3 of rays of full rank on enclosures (docs/theory.md §8): the same
+// pairs in the same order, each supporting test decided by the signs of
+// c·r_k with c = r_i × r_j enclosed, and an exact sign only where an
+// enclosure holds zero (c·r_i and c·r_j are zero by construction and not
+// asked). The exact c is made for the supporting pairs, and for a pair
+// whose c may be zero. Empty (not decided) when rank 3 is not certified:
+// some c·r_k certainly nonzero.
+std::optional<std::vector<VectorQ>> facets3_filtered(const std::vector<VectorQ>& rays) {
+  using internal::certain_sign;
+  using internal::FI;
+  using internal::kUndecided;
+  using F3 = std::array<FI, 3>;
+  internal::Protect guard;
+  std::vector<F3> f;
+  f.reserve(rays.size());
+  for (const auto& r : rays)
+    f.push_back({internal::to_interval(r[0]), internal::to_interval(r[1]), internal::to_interval(r[2])});
+  auto fcross = [](const F3& a, const F3& b) -> F3 {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto fdot = [](const F3& a, const F3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const std::size_t m = rays.size();
+  bool full = false;
+  for (std::size_t i = 0; i < m && !full; ++i)
+    for (std::size_t j = i + 1; j < m && !full; ++j) {
+      const F3 c = fcross(f[i], f[j]);
+      for (std::size_t k = j + 1; k < m && !full; ++k) {
+        const int s = certain_sign(fdot(c, f[k]));
+        full = s != kUndecided && s != 0;
+      }
+    }
+  if (!full) return std::nullopt;
+  bool exact_signs = false;
+  std::vector<VectorQ> out;
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j) {
+      const F3 fc = fcross(f[i], f[j]);
+      std::optional<VectorQ> c;  // the exact cross product, made when needed
+      auto exact = [&]() -> const VectorQ& {
+        if (!c) {
+          const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+          c = from_cgal(CGAL::cross_product(to_cgal(rays[i]), to_cgal(rays[j])));
+        }
+        return *c;
+      };
+      bool nonzero = false;
+      for (const FI& x : fc) nonzero = nonzero || (certain_sign(x) != kUndecided && certain_sign(x) != 0);
+      if (!nonzero) {
+        exact_signs = true;
+        if (exact().isZero()) continue;
+      }
+      bool nonneg = true, nonpos = true;
+      for (std::size_t k = 0; k < m && (nonneg || nonpos); ++k) {
+        if (k == i || k == j) continue;  // on the plane by construction
+        int s = certain_sign(fdot(fc, f[k]));
+        if (s == kUndecided) {
+          exact_signs = true;
+          const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+          s = sign(exact().dot(rays[k]));
+        }
+        nonneg = nonneg && s >= 0;
+        nonpos = nonpos && s <= 0;
+      }
+      if (!nonneg && !nonpos) continue;
+      const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+      add_unique(out, nonneg ? exact() : VectorQ(-exact()));
+    }
+  internal::record_filter(FilterSite::kCone, !exact_signs);
+  return out;
+}
+
 }  // namespace
 
 int internal::exact_rank(const std::vector<VectorQ>& rays, int dim) {
@@ -151,6 +225,8 @@ std::vector<VectorQ> cone_facet_normals(const std::vector<VectorQ>& rays, int di
       throw InputError("rays[" + std::to_string(k) + "]", std::to_string(rays[k].size()) + " entries",
                        "but the cone lives in dimension " + std::to_string(dim));
   const std::vector<VectorQ> live = nonzero(rays);
+  if (dim == 3 && !force_exact())
+    if (auto facets = facets3_filtered(live)) return std::move(*facets);
   const int rank = internal::exact_rank(live, dim);
   return dim == 3 ? facets3(live, rank) : facets2(live, rank);
 }

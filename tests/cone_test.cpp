@@ -5,6 +5,7 @@
 #include <random>
 
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/exact_lu.h"
 #include "test_util.h"
 
@@ -107,6 +108,74 @@ GTEST_TEST(ConeFacets, AgreesWithGeneratorCoordinatesForSimplicialCones) {
     }
   }
   EXPECT_GT(checked, 3000);
+}
+
+// The facets of full-rank rays are found on enclosures, with an exact sign
+// only where an enclosure holds zero. Random sets of 3–9 rays with
+// non-dyadic entries: generic ones, ones with a ray exactly in the plane of
+// two others (a positive combination), a segment cone's pairs (the same
+// force part, two moments), planar and collinear sets, zero rays and
+// repeats. The filtered facets are the forced-exact ones, in their order;
+// generic sets need no exact sign, and every set with a ray in the plane of
+// two others needs one.
+GTEST_TEST(ConeFacets, FilteredFacetsAreTheExactOnesInTheirOrderAndCoplanarRaysFallBack) {
+  std::mt19937_64 rng(2611);
+  auto ray = [&] {
+    return vec({test::random_rational(rng, -3, 3, 7), test::random_rational(rng, -3, 3, 11),
+                test::random_rational(rng, -3, 3, 13)});
+  };
+  auto positive = [&] { return test::random_rational(rng, 1, 3, 5); };
+  int compared = 0, generic_fallbacks = 0, coplanar_fell_back = 0, coplanar = 0;
+  for (int trial = 0; trial < 1200; ++trial) {
+    const int kind = trial % 6, m = 3 + trial % 7;
+    std::vector<VectorQ> rays;
+    for (int k = 0; k < m; ++k) rays.push_back(ray());
+    switch (kind) {
+      case 1:  // a ray in the plane of two others
+        rays.push_back(positive() * rays[0] + positive() * rays[1]);
+        break;
+      case 2:  // pairs with the same force part and two moments
+        for (int k = 0; k + 1 < m; k += 2) rays[k + 1] = vec({rays[k][0], rays[k][1], rays[k][2] + positive()});
+        break;
+      case 3:  // planar
+        for (int k = 2; k < m; ++k) rays[k] = test::random_rational(rng, -2, 2, 3) * rays[0] + positive() * rays[1];
+        break;
+      case 4:  // collinear, a zero ray and a repeat
+        for (int k = 1; k < m; ++k) rays[k] = positive() * rays[0];
+        rays.push_back(VectorQ::Zero(3));
+        rays.push_back(rays[0]);
+        break;
+      case 5:  // a repeated ray among generic ones
+        rays.push_back(rays[1]);
+        break;
+      default:
+        break;
+    }
+    reset_filter_stats();
+    std::vector<VectorQ> filtered, exact;
+    {
+      const ForceExactScope on(false);
+      filtered = cone_facet_normals(rays, 3);
+    }
+    const FilterCounts counts = filter_stats().at(FilterSite::kCone);
+    {
+      const ForceExactScope forced;
+      exact = cone_facet_normals(rays, 3);
+    }
+    ASSERT_EQ(filtered.size(), exact.size()) << "trial " << trial;
+    for (std::size_t k = 0; k < exact.size(); ++k)
+      EXPECT_EQ(filtered[k], exact[k]) << "trial " << trial << " facet " << k;
+    ++compared;
+    if (kind == 0) generic_fallbacks += static_cast<int>(counts.fallbacks);
+    if (kind == 1) {
+      ++coplanar;
+      coplanar_fell_back += counts.fallbacks == 1 && counts.certified == 0;
+    }
+  }
+  EXPECT_EQ(compared, 1200);
+  EXPECT_EQ(generic_fallbacks, 0);
+  EXPECT_EQ(coplanar, 200);
+  EXPECT_EQ(coplanar_fell_back, 200);
 }
 
 }  // namespace
