@@ -59,6 +59,7 @@ using enclosed::FVecs;
 using enclosed::Open;
 using enclosed::sign_of;
 using Cones = boost::container::small_vector<FGens, 2>;
+using Tags = boost::container::small_vector<boost::container::small_vector<int, 8>, 2>;
 
 // is_zero(v), certified.
 bool is_zero_f(const FVec2& v) {
@@ -75,11 +76,16 @@ FVec2 fpush(const FVec2& tangent, EdgeFamily family, const FI& mu) {
 }
 
 // min_k and max_k of (P_k − c) ⊗ d enclosed (the tight cone's moments; the
-// exact path takes the same extremes of the same values).
-void moment_range(const FVecs& r, const FVec2& d, FI& lo, FI& hi) {
+// exact path takes the same extremes of the same values), and the k that
+// is certainly the only one to attain each (its enclosure entirely below,
+// resp. above, every other's), else −1.
+void moment_range(const FVecs& r, const FVec2& d, FI& lo, FI& hi, int& lo_at, int& hi_at) {
   double lo_inf = 0, lo_sup = 0, hi_inf = 0, hi_sup = 0;
+  lo_at = hi_at = 0;
   for (std::size_t k = 0; k < r.size(); ++k) {
     const FI m = fcross(r[k], d);
+    if (k == 0 || m.sup() < lo_sup) lo_at = static_cast<int>(k);
+    if (k == 0 || m.inf() > hi_inf) hi_at = static_cast<int>(k);
     lo_inf = k ? std::min(lo_inf, m.inf()) : m.inf();
     lo_sup = k ? std::min(lo_sup, m.sup()) : m.sup();
     hi_inf = k ? std::max(hi_inf, m.inf()) : m.inf();
@@ -87,6 +93,13 @@ void moment_range(const FVecs& r, const FVec2& d, FI& lo, FI& hi) {
   }
   lo = FI(lo_inf, lo_sup);
   hi = FI(hi_inf, hi_sup);
+  // The candidates: the least upper end, the greatest lower end; each must
+  // be certainly below (above) every other point's moment.
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const FI m = fcross(r[k], d);
+    if (lo_at >= 0 && static_cast<int>(k) != lo_at && !(lo_sup < m.inf())) lo_at = -1;
+    if (hi_at >= 0 && static_cast<int>(k) != hi_at && !(hi_inf > m.sup())) hi_at = -1;
+  }
 }
 
 FI fmax(const FI& a, const FI& b) { return FI(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
@@ -129,17 +142,24 @@ bool common_bounds(const FGens& gens, const FVec2& first, const FVec2& last, con
 // outcome: when no generator certainly misses (IN is possible), and in a
 // cone with no certain hit (the exact path's OUT test, and its LP count,
 // depend on it).
-Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
+Quick decide(const Cones& cones, const Tags* tags, IntervalTarget& target, bool segment) {
   target.paired_generators = segment;  // a segment's cones: (d, lo), (d, hi) per force part d
+  // The tags are read only during the calls below.
+  struct Clear {
+    IntervalTarget& t;
+    ~Clear() { t.generator_points = nullptr; }
+  } clear{target};
   boost::container::small_vector<boost::container::small_vector<int, 8>, 2> hits(cones.size());
   FGens all;
-  boost::container::small_vector<int, 16> all_hits;
+  boost::container::small_vector<int, 16> all_hits, all_points;
   for (std::size_t c = 0; c < cones.size(); ++c)
-    for (const auto& g : cones[c]) {
-      hits[c].push_back(target.interval_ray_hits(g));
-      all.push_back(g);
+    for (std::size_t k = 0; k < cones[c].size(); ++k) {
+      hits[c].push_back(target.interval_ray_hits(cones[c][k]));
+      all.push_back(cones[c][k]);
       all_hits.push_back(hits[c].back());
+      all_points.push_back(tags ? (*tags)[c][k] : -1);
     }
+  target.generator_points = all_points.data();
   const int in = target.interval_contains(all.data(), all_hits.data(), all.size());
   if (in == kUndecided) throw Open{};
   if (in == 1) return Quick::kIn;
@@ -151,6 +171,7 @@ Quick decide(const Cones& cones, IntervalTarget& target, bool segment) {
       // answer counts (RegionStats::lp_tests): the exact tests decide.
       if (std::find(hits[c].begin(), hits[c].end(), kUndecided) != hits[c].end()) throw Open{};
     }
+    target.generator_points = tags ? (*tags)[c].data() : nullptr;
     const int missed = target.certify_out_test(cones[c].data(), cones[c].size());
     if (missed == 1) return Quick::kOut;
     if (missed == kUndecided) throw Open{};  // the exact LP decides
@@ -209,6 +230,7 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclo
                     const Rational& mu, const std::vector<EdgeFamily>& families, ConeMethod method,
                     IntervalTarget& target, std::optional<MagnitudeBounds>* bounds) {
   Cones cones;
+  Tags tags;  // per cone, per generator: the control point whose moment it certainly is, or −1
   FVecs forces;
   try {
     {
@@ -237,6 +259,7 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclo
         if (span < 0 || (span == 0 && !same && sign_of(fdot(ds, de)) < 0)) return Quick::kPartial;
         if (method == ConeMethod::kPaper) {
           if (!enclosed::paper_cone(ds, de, r, leg_enclosures, cones.emplace_back(), forces)) return Quick::kPartial;
+          tags.emplace_back(cones.back().size(), -1);
           continue;
         }
         forces.push_back(ds);
@@ -244,16 +267,20 @@ Quick quick_segment(const LazyPiece::Enclosures& control, const LazyPiece::Enclo
         FGens& gens = cones.emplace_back();  // filled in place: no small_vector move
         // de = ds exactly (one leg): its two generators would repeat ds's,
         // the same cone, and make cross products no enclosure shows nonzero.
+        auto& points = tags.emplace_back();
         for (const FVec2& d : {ds, de}) {
           if (same && gens.size() == 2) break;
           FI lo, hi;
-          moment_range(r, d, lo, hi);
+          int lo_at = -1, hi_at = -1;
+          moment_range(r, d, lo, hi, lo_at, hi_at);
           gens.push_back({d.x, d.y, lo});
           gens.push_back({d.x, d.y, hi});
+          points.push_back(lo_at);
+          points.push_back(hi_at);
         }
       }
     }
-    const Quick q = decide(cones, target, true);
+    const Quick q = decide(cones, &tags, target, true);
     if (q != Quick::kIn || !bounds) return q;
   } catch (const Open&) {
     return Quick::kUnknown;
@@ -294,7 +321,7 @@ Quick quick_point(const FVec2& t_in, const FVec2& t_out, const Vec2& point, cons
       first = dirs[s];
       last = dirs[e];
     }
-    const Quick q = decide(cones, target, false);
+    const Quick q = decide(cones, nullptr, target, false);
     if (q != Quick::kIn || !bounds) return q;
   } catch (const Open&) {
     return Quick::kUnknown;

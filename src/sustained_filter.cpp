@@ -1,5 +1,8 @@
 #include "fixel/internal/sustained_filter.h"
 
+#include <algorithm>
+#include <boost/container/small_vector.hpp>
+
 namespace fixel::internal {
 
 namespace {
@@ -45,8 +48,13 @@ FGen pair_cross(const FGen* gens, std::size_t i, std::size_t j, bool paired) {
 // Closed rows of cone(gens) when it certainly has full rank: every pair's
 // cross product that supports the cone, as cone_facet_normals takes them
 // (duplicates do no harm to the elimination). False when the rank, a cross
-// product's being nonzero or a side is not certain.
-bool facets(const FGen* gens, std::size_t n, bool paired, std::vector<FGen>& out) {
+// product's being nonzero or a side is not certain. Generators with one
+// control point (`points`, IntervalTarget::generator_points) lie in one
+// plane: a third one's side of a pair's plane is 0 by construction, and
+// the plane is taken once.
+bool facets(const FGen* gens, std::size_t n, bool paired, const int* points, std::vector<FGen>& out) {
+  auto point_of = [&](std::size_t k) { return points ? points[k] : -1; };
+  boost::container::small_vector<int, 8> planes;  // the control points whose plane was taken
   bool full_rank = false;
   for (std::size_t i = 0; i < n && !full_rank; ++i)
     for (std::size_t j = i + 1; j < n && !full_rank; ++j) {
@@ -59,12 +67,16 @@ bool facets(const FGen* gens, std::size_t n, bool paired, std::vector<FGen>& out
   if (!full_rank) return false;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
+      const int plane = point_of(i) >= 0 && point_of(i) == point_of(j) ? point_of(i) : -1;
+      if (plane >= 0 && std::find(planes.begin(), planes.end(), plane) != planes.end()) continue;
       const FGen c = pair_cross(gens, i, j, paired);
       if (certain_sign(c[0]) == kUndecided && certain_sign(c[1]) == kUndecided && certain_sign(c[2]) == kUndecided)
         return false;  // possibly the zero vector, which the exact path skips
+      if (plane >= 0) planes.push_back(plane);
       bool nonneg = true, nonpos = true;
       for (std::size_t k = 0; k < n; ++k) {
-        if (k == i || k == j) continue;  // on the plane by construction
+        if (k == i || k == j) continue;                    // on the plane by construction
+        if (plane >= 0 && point_of(k) == plane) continue;  // in the plane of forces at that point
         const int s = certain_sign(dot3(c, gens[k]));
         if (s == kUndecided) return false;
         nonneg = nonneg && s >= 0;
@@ -82,7 +94,8 @@ bool facets(const FGen* gens, std::size_t n, bool paired, std::vector<FGen>& out
 // x = Σ λ_k g_k (no facets needed, whatever the cone's rank); more, over x
 // with the cone's facets when its full rank is certain. Either is the same
 // question as the exact test's Fourier–Motzkin system.
-int cone_meets(const FGen* gens, std::size_t n, bool paired, const std::vector<Row<FI>>& constraints) {
+int cone_meets(const FGen* gens, std::size_t n, bool paired, const int* points,
+               const std::vector<Row<FI>>& constraints) {
   std::vector<Row<FI>> rows;
   if (n <= 3) {
     for (const auto& c : constraints) {
@@ -97,7 +110,7 @@ int cone_meets(const FGen* gens, std::size_t n, bool paired, const std::vector<R
     }
   } else {
     std::vector<FGen> cone_rows;
-    if (!facets(gens, n, paired, cone_rows)) return kUndecided;
+    if (!facets(gens, n, paired, points, cone_rows)) return kUndecided;
     for (const FGen& a : cone_rows) rows.push_back({a, FI(0), false});
     rows.insert(rows.end(), constraints.begin(), constraints.end());
   }
@@ -121,7 +134,7 @@ JEnclosure::JEnclosure(const Data<Q2>& d) {
 }
 
 // cone_in_J (sustained_target.cpp), step by step.
-int JEnclosure::cone_in(const FGen* gens, std::size_t n, bool paired, long& lp_tests) const {
+int JEnclosure::cone_in(const FGen* gens, std::size_t n, bool paired, const int* points, long& lp_tests) const {
   Protect guard;
   bool undecided = false;
   for (const FGen& a : k_rows_) {  // every generator strictly inside K
@@ -144,14 +157,14 @@ int JEnclosure::cone_in(const FGen* gens, std::size_t n, bool paired, long& lp_t
     std::vector<Row<FI>> rows;
     for (const FGen& a : jam) rows.push_back({a, FI(0), false});
     rows.push_back({normaliser_, FI(1), false});
-    const int meets = cone_meets(gens, n, paired, rows);
+    const int meets = cone_meets(gens, n, paired, points, rows);
     if (meets != 0) return meets == 1 ? 0 : kUndecided;
   }
   return 1;
 }
 
 // cone_misses_J (sustained_target.cpp), step by step.
-int JEnclosure::cone_misses(const FGen* gens, std::size_t n, bool paired, long& lp_tests) const {
+int JEnclosure::cone_misses(const FGen* gens, std::size_t n, bool paired, const int* points, long& lp_tests) const {
   Protect guard;
   bool undecided = false;
   for (const FGen& a : k_rows_) {  // the cone outside int K
@@ -178,7 +191,7 @@ int JEnclosure::cone_misses(const FGen* gens, std::size_t n, bool paired, long& 
   ++lp_tests;  // the exact test's system: the cone and int K
   std::vector<Row<FI>> rows;
   for (const FGen& a : k_rows_) rows.push_back({a, FI(0), true});
-  const int meets = cone_meets(gens, n, paired, rows);
+  const int meets = cone_meets(gens, n, paired, points, rows);
   return meets == kUndecided ? kUndecided : (meets == 1 ? 0 : 1);
 }
 

@@ -193,13 +193,13 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
   bool out_test_sees_hits() const override { return true; }
   int interval_contains(const FGen* gens, const int*, std::size_t n) const override {
     long lp = 0;
-    const int in = enclosed_->cone_in(gens, n, paired_generators, lp);
+    const int in = enclosed_->cone_in(gens, n, paired_generators, generator_points, lp);
     if (in != kUndecided && stats) stats->lp_tests += lp;
     return in;
   }
   int certify_out_test(const FGen* gens, std::size_t n) override {
     long lp = 0;
-    const int missed = enclosed_->cone_misses(gens, n, paired_generators, lp);
+    const int missed = enclosed_->cone_misses(gens, n, paired_generators, generator_points, lp);
     if (missed != kUndecided && stats) stats->lp_tests += lp;
     return missed;
   }

@@ -65,6 +65,13 @@ class IntervalTarget {
   // cone), so that a target may use that structure (a cross product of a
   // pair has an exactly zero moment part, which no enclosure shows).
   bool paired_generators = false;
+  // Set by the pre-test for the duration of interval_contains and
+  // certify_out_test: per generator, the index k of the control point whose
+  // moment it certainly is ((d, (P_k − c) ⊗ d), P_k certainly the only
+  // extreme for d), else −1; null when none is known. Generators with one
+  // k lie in one plane through 0 (the wrenches of forces at P_k), which no
+  // enclosure shows (docs/theory.md §10.5).
+  const int* generator_points = nullptr;
   // False for a cone target (J): its IN answers carry no magnitudes
   // (half_line, Magnitudes{}), so a certified IN is the whole answer.
   virtual bool in_answers_have_magnitudes() const { return true; }

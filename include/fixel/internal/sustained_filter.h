@@ -21,10 +21,11 @@ class JEnclosure {
 
   // cone_in_J of cone(gens): 1 in, 0 not in, kUndecided; `lp_tests` gets
   // the Fourier–Motzkin systems the exact test would count. `paired`:
-  // gens (2k, 2k + 1) share their exact force part (IntervalTarget).
-  int cone_in(const FGen* gens, std::size_t n, bool paired, long& lp_tests) const;
+  // gens (2k, 2k + 1) share their exact force part; `points` (or null):
+  // each generator's control point (IntervalTarget::generator_points).
+  int cone_in(const FGen* gens, std::size_t n, bool paired, const int* points, long& lp_tests) const;
   // cone_misses_J of cone(gens): 1 misses, 0 not, kUndecided; the same count.
-  int cone_misses(const FGen* gens, std::size_t n, bool paired, long& lp_tests) const;
+  int cone_misses(const FGen* gens, std::size_t n, bool paired, const int* points, long& lp_tests) const;
 
  private:
   std::vector<FGen> k_rows_;
