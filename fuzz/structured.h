@@ -394,7 +394,7 @@ inline void run_operation(const std::uint8_t* data, std::size_t size, bool slow 
     }
     case Operation::kGuaranteed: {  // and the region against G with a frictionless pusher
       const SeatingSet S = seating_set(scene);
-      const GuaranteedSet G = guaranteed_set(scene, S);
+      const GuaranteedSet G = guaranteed_set(scene, S, &control);
       (void)lost_fraction(S, G, 2);
       if (scene.body.boundary && scene.pusher_mu == 0) {
         RegionOptions options;

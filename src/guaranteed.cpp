@@ -6,6 +6,7 @@
 #include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -69,7 +70,7 @@ bool GuaranteedSet::contains(const VectorQ& p, const SeatingSet& S) const {
   return true;
 }
 
-GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S) {
+GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl* control) {
   const int nc = scene.num_contacts();
   if (nc != scene.body.dof) throw InputError("fixels", std::to_string(nc), "must number dof for the guaranteed set");
   const Polyhedron s_poly = as_polyhedron(S);
@@ -77,6 +78,7 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S) {
   long total = 1;
   for (int i = 0; i < nc; ++i) total *= 4;
   for (long code = 0; code < total; ++code) {
+    poll(control, "guaranteed set", code, total, "contact modes");
     const std::vector<ContactMode> modes = contact_modes(code, nc);
     for (int i = 0; i < nc; ++i) {
       if (modes[i] != ContactMode::kOpen) continue;
@@ -86,7 +88,10 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S) {
     }
   }
   G.pieces = {s_poly};
-  for (const auto& n : G.non_seating) {
+  const long sets = static_cast<long>(G.non_seating.size());
+  for (long k = 0; k < sets; ++k) {
+    poll(control, "guaranteed set", k, sets, "non-seating sets subtracted");
+    const auto& n = G.non_seating[static_cast<std::size_t>(k)];
     std::vector<Polyhedron> next;
     for (const auto& piece : G.pieces) {
       if (is_empty(piece.intersect(n.impulses))) {  // untouched: do not fragment it

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <iostream>
 #include <random>
 
@@ -10,6 +11,7 @@
 #include "fixel/internal/paper_reference.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/lcp.h"
+#include "fixel/progress.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
@@ -355,6 +357,32 @@ GTEST_TEST(GuaranteedRegion, FrictionalPusherIsAClearNotSupportedError) {
   opt.guaranteed = &G;
   opt.pusher_mu = Rational(1, 5);
   EXPECT_THROW(compute_region(scene, S, opt), UnsupportedError);
+}
+
+// The CLI's --max-seconds and Ctrl-C reach the construction of G: a
+// cancelled control stops it at its first contact mode, a deadline already
+// past likewise, each with the task and the count in the message; an
+// untouched control lets it finish with the same G as no control.
+GTEST_TEST(GuaranteedSet, AStoppedControlStopsTheConstructionWithItsCount) {
+  const Scene scene = scene_file("nonunique");
+  const SeatingSet S = seating_set(scene);
+  RunControl cancelled;
+  cancelled.cancel = true;
+  try {
+    (void)guaranteed_set(scene, S, &cancelled);
+    ADD_FAILURE() << "not stopped";
+  } catch (const StoppedError& e) {
+    EXPECT_NE(std::string(e.what()).find("guaranteed set: interrupted after 0 of 64 contact modes"), std::string::npos)
+        << e.what();
+  }
+  RunControl late;
+  late.deadline = RunControl::Clock::now() - std::chrono::seconds(1);
+  EXPECT_THROW((void)guaranteed_set(scene, S, &late), StoppedError);
+  RunControl open;
+  const GuaranteedSet with = guaranteed_set(scene, S, &open), without = guaranteed_set(scene, S);
+  ASSERT_EQ(with.pieces.size(), without.pieces.size());
+  EXPECT_EQ(with.non_seating.size(), without.non_seating.size());
+  EXPECT_EQ(with.dimensions, without.dimensions);
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 
 namespace fixel {
 
+struct RunControl;
+
 /// The impulses for which the step LCP has a solution in `modes` with fixel
 /// `open_fixel` open and its gap strictly positive after the step.
 struct NonSeatingSet {
@@ -43,7 +45,11 @@ std::vector<Magnitudes> ray_magnitudes(const GuaranteedSet& G, const SeatingSet&
 
 /// Builds G by exact projection of every contact mode with an open contact
 /// (docs/theory.md §9). Throws InputError on a scene without n_c == dof.
-GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S);
+/// Polls `control` (if given) before each contact mode and each subtraction
+/// of a non-seating set ("guaranteed set", counted in contact modes, then
+/// non-seating sets): throws StoppedError when it is cancelled or past its
+/// deadline.
+GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl* control = nullptr);
 
 /// How much of S is lost: the fraction of the sample points
 /// apex + t·Σ w_j r_j (r_j the rays of S, w on the simplex grid with step

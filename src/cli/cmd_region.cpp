@@ -94,7 +94,7 @@ int run_region(const RegionArgs& a) {
                      "(use --push sustained, or drop --exact)");
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
-  if (a.guaranteed && !a.exact) G = guaranteed_set(scene, S);
+  if (a.guaranteed && !a.exact) G = guaranteed_set(scene, S, run_control());
   if (a.guaranteed && a.exact)
     throw UnsupportedError("--exact", "",
                            "with --guaranteed is not supported: the exact region of G is a separate "
@@ -131,7 +131,7 @@ int run_sample(const SampleArgs& a) {
   const Scene scene = read_scene(a.scene_path);
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
-  if (a.guaranteed) G = guaranteed_set(scene, S);
+  if (a.guaranteed) G = guaranteed_set(scene, S, run_control());
   std::optional<Rational> mu;
   if (!a.pusher_mu_text.empty()) mu = parse_pusher_mu(a.pusher_mu_text);
   const auto r = sample_region(scene, S, a.points, mu, G ? &*G : nullptr, run_control());

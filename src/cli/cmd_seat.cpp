@@ -41,7 +41,7 @@ int run_seat(const SeatArgs& a) {
   if (!a.wrench_text.empty()) throw InputError("--wrench", a.wrench_text, "needs --sustained");
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
-  if (a.guaranteed) G = guaranteed_set(scene, S);
+  if (a.guaranteed) G = guaranteed_set(scene, S, run_control());
   const GuaranteedSet* g = G ? &*G : nullptr;
   std::optional<VectorQ> impulse;
   if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
@@ -73,7 +73,7 @@ int run_dump(const DumpArgs& a) {
   }
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
-  if (a.guaranteed) G = guaranteed_set(scene, S);
+  if (a.guaranteed) G = guaranteed_set(scene, S, run_control());
   const Rational length = parse_rational(a.length_text, "--length");
   for (const auto& path : dump_off(scene, S, a.off_dir, length, G ? &*G : nullptr))
     std::cout << "wrote " << path << "\n";
