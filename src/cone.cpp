@@ -44,11 +44,79 @@ int supporting_side(const VectorQ& a, const std::vector<VectorQ>& rays) {
   return nonneg ? 1 : (nonpos ? -1 : 0);
 }
 
-void add_unique(std::vector<VectorQ>& out, const VectorQ& a) {
-  const VectorQ p = primitive_direction(a);
+// Appends p, already primitive, unless it is in out.
+void add_primitive(std::vector<VectorQ>& out, VectorQ&& p) {
   for (const auto& q : out)
     if (q == p) return;
-  out.push_back(p);
+  out.push_back(std::move(p));
+}
+
+void add_unique(std::vector<VectorQ>& out, const VectorQ& a) { add_primitive(out, primitive_direction(a)); }
+
+// Integer vectors in GMP: a ray scaled to integers, and the cross products
+// of such rays, with no rational canonicalisation per operation.
+struct Int3 {
+  std::array<Integer, 3> v;
+};
+
+// A positive multiple of r (three entries) with integer entries.
+Int3 integer_multiple(const VectorQ& r) {
+  Int3 out;
+  Integer lcm = 1;
+  for (int k = 0; k < 3; ++k) {
+    const mpz_srcptr den = mpq_denref(r[k].backend().data());
+    if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(lcm.backend().data(), lcm.backend().data(), den);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const mpq_srcptr q = r[k].backend().data();
+    mpz_ptr x = out.v[k].backend().data();
+    mpz_divexact(x, lcm.backend().data(), mpq_denref(q));
+    mpz_mul(x, x, mpq_numref(q));
+  }
+  return out;
+}
+
+Int3 cross_integers(const Int3& a, const Int3& b) {
+  Int3 c;
+  Integer t;
+  auto z = [](auto& x) { return x.backend().data(); };
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    mpz_mul(z(c.v[k]), z(a.v[i]), z(b.v[j]));
+    mpz_mul(z(t), z(a.v[j]), z(b.v[i]));
+    mpz_sub(z(c.v[k]), z(c.v[k]), z(t));
+  }
+  return c;
+}
+
+bool is_zero(const Int3& x) {
+  return mpz_sgn(x.v[0].backend().data()) == 0 && mpz_sgn(x.v[1].backend().data()) == 0 &&
+         mpz_sgn(x.v[2].backend().data()) == 0;
+}
+
+int sign_of_dot(const Int3& a, const Int3& b) {
+  Integer sum, t;
+  for (int k = 0; k < 3; ++k) {
+    mpz_mul(t.backend().data(), a.v[k].backend().data(), b.v[k].backend().data());
+    mpz_add(sum.backend().data(), sum.backend().data(), t.backend().data());
+  }
+  return mpz_sgn(sum.backend().data());
+}
+
+// x divided by the gcd of its entries (x ≠ 0), as rationals.
+VectorQ primitive_of_integers(const Int3& x) {
+  Integer g;
+  for (int k = 0; k < 3; ++k) mpz_gcd(g.backend().data(), g.backend().data(), x.v[k].backend().data());
+  VectorQ out(3);
+  for (int k = 0; k < 3; ++k) {
+    const mpz_srcptr e = x.v[k].backend().data();
+    mpz_ptr num = mpq_numref(out[k].backend().data());
+    if (mpz_cmp_ui(g.backend().data(), 1) != 0)
+      mpz_divexact(num, e, g.backend().data());
+    else
+      mpz_set(num, e);
+  }
+  return out;
 }
 
 // Adds a (or -a) if it supports the cone; a must not be orthogonal to every ray.
@@ -161,22 +229,27 @@ std::optional<std::vector<VectorQ>> facets3_filtered(const std::vector<VectorQ>&
   if (!full) return std::nullopt;
   bool exact_signs = false;
   std::vector<VectorQ> out;
+  // Exact values in integers: each ray scaled to integers once, when first
+  // needed, and c_ij = r_i × r_j from those, a positive multiple of the
+  // rational cross product (the same signs, the same primitive direction).
+  std::vector<std::optional<Int3>> integer_rays(m);
+  auto integer_ray = [&](std::size_t k) -> const Int3& {
+    if (!integer_rays[k]) integer_rays[k] = integer_multiple(rays[k]);
+    return *integer_rays[k];
+  };
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t j = i + 1; j < m; ++j) {
       const F3 fc = fcross(f[i], f[j]);
-      std::optional<VectorQ> c;  // the exact cross product, made when needed
-      auto exact = [&]() -> const VectorQ& {
-        if (!c) {
-          const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-          c = from_cgal(CGAL::cross_product(to_cgal(rays[i]), to_cgal(rays[j])));
-        }
+      std::optional<Int3> c;  // the exact cross product, made when needed
+      auto exact = [&]() -> const Int3& {
+        if (!c) c = cross_integers(integer_ray(i), integer_ray(j));
         return *c;
       };
       bool nonzero = false;
       for (const FI& x : fc) nonzero = nonzero || (certain_sign(x) != kUndecided && certain_sign(x) != 0);
       if (!nonzero) {
         exact_signs = true;
-        if (exact().isZero()) continue;
+        if (is_zero(exact())) continue;
       }
       bool nonneg = true, nonpos = true;
       for (std::size_t k = 0; k < m && (nonneg || nonpos); ++k) {
@@ -184,15 +257,15 @@ std::optional<std::vector<VectorQ>> facets3_filtered(const std::vector<VectorQ>&
         int s = certain_sign(fdot(fc, f[k]));
         if (s == kUndecided) {
           exact_signs = true;
-          const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-          s = sign(exact().dot(rays[k]));
+          s = sign_of_dot(exact(), integer_ray(k));
         }
         nonneg = nonneg && s >= 0;
         nonpos = nonpos && s <= 0;
       }
       if (!nonneg && !nonpos) continue;
-      const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-      add_unique(out, nonneg ? exact() : VectorQ(-exact()));
+      VectorQ normal = primitive_of_integers(exact());
+      if (!nonneg) normal = -normal;
+      add_primitive(out, std::move(normal));
     }
   internal::record_filter(FilterSite::kCone, !exact_signs);
   return out;
@@ -209,13 +282,28 @@ int internal::exact_rank(const std::vector<VectorQ>& rays, int dim) {
 
 VectorQ primitive_direction(const VectorQ& v) {
   if (v.isZero()) return v;
-  Integer den_lcm = 1;
-  for (int k = 0; k < v.size(); ++k)
-    den_lcm = boost::multiprecision::lcm(den_lcm, boost::multiprecision::denominator(v[k]));
-  const VectorQ scaled = v * Rational(den_lcm);  // integer entries
-  Integer g = 0;
-  for (int k = 0; k < v.size(); ++k) g = boost::multiprecision::gcd(g, boost::multiprecision::numerator(scaled[k]));
-  return scaled / Rational(boost::multiprecision::abs(g));
+  // In GMP integers: the lcm L of the denominators, the entries times L, and
+  // their gcd g (positive); each entry is then (numerator · L/den) / g.
+  Integer lcm = 1, g, x;
+  auto z = [](auto& i) { return i.backend().data(); };
+  for (int k = 0; k < v.size(); ++k) {
+    const mpz_srcptr den = mpq_denref(v[k].backend().data());
+    if (mpz_cmp_ui(den, 1) != 0) mpz_lcm(z(lcm), z(lcm), den);
+  }
+  VectorQ out(v.size());
+  for (int k = 0; k < v.size(); ++k) {
+    const mpq_srcptr q = v[k].backend().data();
+    mpz_divexact(z(x), z(lcm), mpq_denref(q));
+    mpz_mul(z(x), z(x), mpq_numref(q));
+    mpq_set_z(out[k].backend().data(), z(x));
+    mpz_gcd(z(g), z(g), z(x));
+  }
+  if (mpz_cmp_ui(z(g), 1) != 0)
+    for (int k = 0; k < v.size(); ++k) {
+      mpz_ptr num = mpq_numref(out[k].backend().data());
+      mpz_divexact(num, num, z(g));
+    }
+  return out;
 }
 
 std::vector<VectorQ> cone_facet_normals(const std::vector<VectorQ>& rays, int dim) {

@@ -82,6 +82,49 @@ GTEST_TEST(PrimitiveDirection, ScalesToCoprimeIntegers) {
   EXPECT_EQ(primitive_direction(vec({Rational(-3, 2), Rational(3, 4)})), vec({-2, 1}));
 }
 
+// From the definition: the result is v times one positive rational, its
+// entries are integers, and their gcd is 1. Entries up to 2^200 over
+// denominators up to 2^100, with zeros and signs.
+GTEST_TEST(PrimitiveDirection, IsAPositiveMultipleWithCoprimeIntegerEntries) {
+  std::mt19937_64 rng(11);
+  auto big = [&](int bits) {
+    Integer x = 0;
+    for (int b = 0; b < bits; b += 32) x = (x << 32) + Integer(rng() & 0xffffffffu);
+    return x;
+  };
+  for (int trial = 0; trial < 400; ++trial) {
+    const int dim = 2 + trial % 2;
+    VectorQ v(dim);
+    for (int k = 0; k < dim; ++k) {
+      const int kind = static_cast<int>(rng() % 5);
+      if (kind == 0) {
+        v[k] = 0;
+        continue;
+      }
+      Integer num = big(kind == 1 ? 32 : 200) + 1, den = big(kind == 2 ? 100 : 32) + 1;
+      if (rng() % 2) num = -num;
+      // A shared factor, so that the gcd is not 1 before scaling.
+      v[k] = Rational(num * 6, den * 35);
+    }
+    const VectorQ p = primitive_direction(v);
+    if (v.isZero()) {
+      EXPECT_EQ(p, v);
+      continue;
+    }
+    Rational factor = 0;
+    for (int k = 0; k < dim; ++k)
+      if (v[k] != 0) factor = p[k] / v[k];
+    ASSERT_GT(factor, 0);
+    EXPECT_EQ(p, VectorQ(v * factor));
+    Integer g = 0;
+    for (int k = 0; k < dim; ++k) {
+      ASSERT_EQ(boost::multiprecision::denominator(p[k]), 1);
+      g = boost::multiprecision::gcd(g, boost::multiprecision::numerator(p[k]));
+    }
+    EXPECT_EQ(g, 1);
+  }
+}
+
 // Second method: a random point is in cone(rays) iff the LP-free test
 // "some nonnegative combination of 3 independent rays equals it" holds; for
 // 3 independent rays that is λ = R⁻¹ x ≥ 0.
