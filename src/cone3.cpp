@@ -42,7 +42,10 @@ class Elimination {
  public:
   explicit Elimination(const std::vector<Row<Q2>>& rows) : input_(&rows) {
     start();
-    for (std::size_t r = 0; r < rows.size(); ++r) add_input(rows[r].a, enclosure(rows[r].b), rows[r].strict);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      add_input(rows[r].a, enclosure(rows[r].b), rows[r].strict);
+      homogeneous_ = homogeneous_ && CGAL::is_zero(rows[r].b);
+    }
   }
   explicit Elimination(const std::vector<RowRef<Q2>>& refs) : refs_(&refs) {
     start();
@@ -77,15 +80,25 @@ class Elimination {
         (s > 0 ? pos : (s < 0 ? neg : next)).push_back(r);
       }
       if (j < 0) return true;
+      if (j == 0 && homogeneous_) {  // as in feasible(): only strictness is left
+        bool strict = false;
+        if (!pos.empty() && !neg.empty()) {
+          for (const int r : pos) strict = strict || nodes_[r].strict;
+          for (const int r : neg) strict = strict || nodes_[r].strict;
+        }
+        if (strict) return false;
+        rows.swap(next);
+        continue;
+      }
       if (pos.size() * neg.size() + next.size() > kMaxRows)
         throw InternalError("sustained set: Fourier-Motzkin exceeded " + std::to_string(kMaxRows) + " rows");
       for (const int P : pos)
         for (const int N : neg) {
           Node x;
           const FI wp = -nodes_[N].a[j], wn = nodes_[P].a[j];
-          for (int k = 0; k < 3; ++k) x.a[k] = wp * nodes_[P].a[k] + wn * nodes_[N].a[k];
-          x.a[j] = FI(0);
-          x.b = wp * nodes_[P].b + wn * nodes_[N].b;
+          for (int k = 0; k < j; ++k) x.a[k] = wp * nodes_[P].a[k] + wn * nodes_[N].a[k];
+          for (int k = j; k < 3; ++k) x.a[k] = FI(0);  // eliminated, as in feasible()
+          x.b = homogeneous_ ? FI(0) : wp * nodes_[P].b + wn * nodes_[N].b;
           x.strict = nodes_[P].strict || nodes_[N].strict;
           x.p = P;
           x.n = N;
@@ -164,6 +177,7 @@ class Elimination {
   std::vector<Node>& nodes_ = storage_.nodes;
   std::deque<Q2>& exact_ = storage_.exact;
   bool used_exact_ = false;
+  bool homogeneous_ = true;  // every b exactly 0: by reference always
 };
 
 }  // namespace

@@ -103,6 +103,12 @@ inline constexpr std::size_t kMaxRows = 200000;  // bounds Fourier–Motzkin on 
 // intervals it throws Undecided when a sign is not certain.
 template <class NT>
 bool feasible(std::vector<Row<NT>> rows) {
+  bool homogeneous = true;  // every b exactly 0 (J's systems)
+  for (const auto& r : rows) try {
+      homogeneous = homogeneous && sign(r.b) == 0;
+    } catch (const Undecided&) {
+      homogeneous = false;
+    }
   for (int j = 2; j >= -1; --j) {
     std::vector<Row<NT>> pos, neg, next;
     for (auto& r : rows) {
@@ -122,15 +128,28 @@ bool feasible(std::vector<Row<NT>> rows) {
       (s > 0 ? pos : (s < 0 ? neg : next)).push_back(r);
     }
     if (j < 0) return true;
+    if (j == 0 && homogeneous) {
+      // Eliminating the last unknown of a homogeneous system makes rows
+      // 0 ≥ 0, or 0 > 0 when a parent is strict (docs/theory.md §10.2).
+      bool strict = false;
+      if (!pos.empty() && !neg.empty()) {
+        for (const auto& r : pos) strict = strict || r.strict;
+        for (const auto& r : neg) strict = strict || r.strict;
+      }
+      if (strict) return false;
+      rows = std::move(next);
+      continue;
+    }
     if (pos.size() * neg.size() + next.size() > kMaxRows)
       throw InternalError("sustained set: Fourier-Motzkin exceeded " + std::to_string(kMaxRows) + " rows");
     for (const auto& P : pos)
       for (const auto& N : neg) {
         const NT wp = -N.a[j], wn = P.a[j];  // both > 0
         Row<NT> r;
-        for (int k = 0; k < 3; ++k) r.a[k] = wp * P.a[k] + wn * N.a[k];
-        r.a[j] = NT(0);
-        r.b = wp * P.b + wn * N.b;
+        // Unknowns above j are zero in every row left (eliminated), and j is by construction.
+        for (int k = 0; k < j; ++k) r.a[k] = wp * P.a[k] + wn * N.a[k];
+        for (int k = j; k < 3; ++k) r.a[k] = NT(0);
+        r.b = homogeneous ? NT(0) : wp * P.b + wn * N.b;
         r.strict = P.strict || N.strict;
         next.push_back(r);
       }
