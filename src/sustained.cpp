@@ -18,15 +18,16 @@ namespace {
 
 // J's convex pieces: int K minus each jam cone, choosing for each jam cone
 // the first facet it violates (so the pieces are disjoint); empty ones are
-// pruned as soon as a prefix is infeasible.
+// pruned as soon as a prefix is infeasible. With `first_only`, stops at the
+// first piece (returns true then): J is not empty.
 template <class NT>
-void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed, std::vector<A3<NT>>& strict,
-                      bool with_rays) {
+bool enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed, std::vector<A3<NT>>& strict,
+                      bool with_rays, bool first_only) {
   std::vector<RowRef<NT>> rows;
   append_refs(d.K_rows, true, rows);
   append_refs(closed, false, rows);
   append_refs(strict, true, rows);
-  if (!feasible_filtered(rows)) return;
+  if (!feasible_filtered(rows)) return false;
   if (jam == d.jams.size()) {
     typename Data<NT>::Piece p;
     p.closed = closed;
@@ -38,7 +39,7 @@ void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed,
       p.rays = rays_of(all);
     }
     d.pieces.push_back(std::move(p));
-    return;
+    return first_only;
   }
   const auto& facets = d.jams[jam].facets;
   for (std::size_t r = 0; r < facets.size(); ++r) {
@@ -46,10 +47,12 @@ void enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed,
     for (std::size_t s = 0; s < r; ++s) closed.push_back(facets[s]);
     strict.push_back(neg3(facets[r]));  // violate row r: a·x < 0
     cache_enclosures(strict.back());
-    enumerate_pieces(d, jam + 1, closed, strict, with_rays);
+    const bool stop = enumerate_pieces(d, jam + 1, closed, strict, with_rays, first_only);
     strict.pop_back();
     closed.resize(c0);
+    if (stop) return true;
   }
+  return false;
 }
 
 template <class NT>
@@ -79,10 +82,11 @@ AlgebraicCone cone_public(const Data<NT>& d, const std::vector<A3<NT>>& rays, co
   return out;
 }
 
-// Builds J's data from the columns W_n*, W_t* (frame B) and the rotation.
+// Builds J's data from the columns W_n*, W_t* (frame B) and the rotation;
+// with `first_only`, only J's first piece (enumerate_pieces).
 template <class NT>
 Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, const std::vector<A3<NT>>& Wt,
-               const std::vector<Rational>& mu, bool with_rays) {
+               const std::vector<Rational>& mu, bool with_rays, bool first_only) {
   Data<NT> d;
   d.cos = cos;
   d.sin = sin;
@@ -122,7 +126,7 @@ Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, cons
     for (const auto& a : jam.facets) cache_enclosures(a);
   std::vector<A3<NT>> closed, strict;
   try {
-    enumerate_pieces(d, 0, closed, strict, with_rays);
+    enumerate_pieces(d, 0, closed, strict, with_rays, first_only);
   } catch (const Undecided&) {
     d.pieces.clear();
     d.pieces_decided = false;
@@ -178,7 +182,9 @@ void check_scene(const Scene& scene) {
 }
 
 // J's data at the seated pose, in the body frame; over Q(√d) the pieces'
-// extreme rays only `with_rays` (exact, they never leave a sign open).
+// extreme rays only `with_rays` (exact, they never leave a sign open), and
+// without them only the first piece: J's emptiness, which is all that
+// sustained_core reports (the region against J reads K and the jam cones).
 std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const SeatedPose& pose,
                                                    const std::vector<Rational>& mu, bool with_rays) {
   const int nc = scene.num_contacts();
@@ -195,7 +201,7 @@ std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const Sea
       Wt.push_back({Q2(t.x), Q2(t.y), rx * Q2(t.y) - ry * Q2(t.x)});
     }
     d->data = internal::build<Q2>(internal::from_public((*pose.exact)[2]), internal::from_public((*pose.exact)[3]), Wn,
-                                  Wt, mu, with_rays);
+                                  Wt, mu, with_rays, !with_rays);
   } else {
     auto iv = [](const std::array<double, 2>& e) { return IV(e[0], e[1]); };
     std::vector<internal::A3<IV>> Wn, Wt;
@@ -211,7 +217,8 @@ std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const Sea
     // On intervals the rays are always made: a sign they leave open makes
     // the pieces undecided, which J's answers (and so sustained_core's)
     // must show; they cost little there.
-    d->data = internal::build<IV>(iv(pose.cos_sin_enclosure[0]), iv(pose.cos_sin_enclosure[1]), Wn, Wt, mu, true);
+    d->data =
+        internal::build<IV>(iv(pose.cos_sin_enclosure[0]), iv(pose.cos_sin_enclosure[1]), Wn, Wt, mu, true, false);
   }
   return d;
 }

@@ -280,8 +280,9 @@ GTEST_TEST(SustainedSet, EmptyWhenAPairHoldsEveryInwardPushAndSaysWhich) {
 }
 
 GTEST_TEST(SustainedSet, CoreWithoutThePublicFormHasTheSameEmptinessAndRegion) {
-  // internal::sustained_core (design's ranking) skips the pieces' rays and
-  // the public cones: the same J for every decision. Squares with random
+  // internal::sustained_core (design's ranking) skips the pieces' rays, the
+  // public cones and, at an exact seat, every piece after the first: the
+  // same J for every decision. Squares with random
   // friction (J empty or not, exact q*), the polygon, and a square with a
   // curved bottom edge (an enclosed q*).
   std::vector<Scene> scenes{square("\"3\""), scene_file("polygon"), curved_square()};

@@ -18,8 +18,9 @@ struct SustainedData;
 // sustained_set, which also makes the public cones and, at an exact seat,
 // the pieces' exact extreme rays (read only by J's width, a display
 // value; at an enclosed seat the rays are made anyway, since a sign they
-// leave open makes the pieces undecided). Same validation and errors as
-// sustained_set.
+// leave open makes the pieces undecided). At an exact seat `data` holds
+// only J's first piece, enough to tell that J is not empty. Same
+// validation and errors as sustained_set.
 struct SustainedCore {
   std::shared_ptr<const SustainedData> data;
   bool empty = false;          // J.empty of sustained_set
