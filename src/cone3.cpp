@@ -51,6 +51,18 @@ class Elimination {
     start();
     for (const auto& r : refs) add_input(*r.a, FI(0), r.strict);
   }
+  explicit Elimination(const std::vector<MixedRow>& mixed) : mixed_(&mixed) {
+    start();
+    for (const auto& r : mixed) {
+      Node x;
+      x.a = r.a;
+      x.b = r.b;
+      x.strict = r.strict;
+      x.p = static_cast<int>(nodes_.size());
+      nodes_.push_back(x);
+      homogeneous_ = homogeneous_ && certain_sign(r.b) == 0;
+    }
+  }
 
   bool used_exact() const { return used_exact_; }
 
@@ -152,6 +164,11 @@ class Elimination {
 
   const Q2& input_coefficient(int p, int k) {
     if (input_) return k < 3 ? (*input_)[p].a[k] : (*input_)[p].b;
+    if (mixed_) {
+      const MixedRow& r = (*mixed_)[p];
+      if (!r.exact_a) throw Undecided();  // an enclosure only: the sign stays open
+      return k < 3 ? (*r.exact_a)[k] : *r.exact_b;
+    }
     static const Q2 zero(0);  // rows by reference are homogeneous
     return k < 3 ? (*(*refs_)[p].a)[k] : zero;
   }
@@ -173,6 +190,7 @@ class Elimination {
 
   const std::vector<Row<Q2>>* input_ = nullptr;    // the input rows, when given as rows
   const std::vector<RowRef<Q2>>* refs_ = nullptr;  // or by reference
+  const std::vector<MixedRow>* mixed_ = nullptr;   // or enclosures, some with their exact rows
   Storage& storage_ = storage();
   std::vector<Node>& nodes_ = storage_.nodes;
   std::deque<Q2>& exact_ = storage_.exact;
@@ -238,6 +256,14 @@ bool feasible_filtered(const std::vector<RowRef<Q2>>& refs) {
   }
   Protect guard;
   Elimination e(refs);
+  const bool answer = e.run();
+  record_filter(FilterSite::kFeasibility, !e.used_exact());
+  return answer;
+}
+
+bool feasible_mixed(const std::vector<MixedRow>& rows) {
+  Protect guard;
+  Elimination e(rows);
   const bool answer = e.run();
   record_filter(FilterSite::kFeasibility, !e.used_exact());
   return answer;

@@ -89,22 +89,25 @@ bool facets(const FGen* gens, std::size_t n, bool paired, const int* points, std
   return true;
 }
 
-// Whether some x ≠ 0 of cone(gens) meets the constraints (rows over x):
-// 1, 0, kUndecided. Up to three generators, over the weights λ ≥ 0 of
-// x = Σ λ_k g_k (no facets needed, whatever the cone's rank); more, over x
-// with the cone's facets when its full rank is certain. Either is the same
-// question as the exact test's Fourier–Motzkin system.
+// Whether some x ≠ 0 of cone(gens) meets the constraints (rows over x, with
+// their exact forms): 1, 0, kUndecided. Up to three generators, over the
+// weights λ ≥ 0 of x = Σ λ_k g_k (no facets needed, whatever the cone's
+// rank); more, over x with the cone's facets when its full rank is certain.
+// Either is the same question as the exact test's Fourier–Motzkin system.
+// In the second, a sign the enclosures leave open among J's rows alone
+// (an exact zero of J's data, such as K's rows of a symmetric layout) is
+// settled on their exact forms (feasible_mixed).
 int cone_meets(const FGen* gens, std::size_t n, bool paired, const int* points,
-               const std::vector<Row<FI>>& constraints) {
-  std::vector<Row<FI>> rows;
+               const std::vector<MixedRow>& constraints) {
+  std::vector<MixedRow> rows;
   if (n <= 3) {
     for (const auto& c : constraints) {
-      Row<FI> r{{FI(0), FI(0), FI(0)}, c.b, c.strict};
+      MixedRow r{{FI(0), FI(0), FI(0)}, c.b, c.strict};
       for (std::size_t k = 0; k < n; ++k) r.a[k] = dot3(c.a, gens[k]);
       rows.push_back(r);
     }
     for (std::size_t k = 0; k < n; ++k) {
-      Row<FI> r{{FI(0), FI(0), FI(0)}, FI(0), false};
+      MixedRow r{{FI(0), FI(0), FI(0)}, FI(0), false};
       r.a[k] = FI(1);
       rows.push_back(r);
     }
@@ -115,15 +118,24 @@ int cone_meets(const FGen* gens, std::size_t n, bool paired, const int* points,
     rows.insert(rows.end(), constraints.begin(), constraints.end());
   }
   try {
-    return feasible(std::move(rows)) ? 1 : 0;
+    return feasible_mixed(rows) ? 1 : 0;
   } catch (const Undecided&) {
     return kUndecided;
   }
 }
 
+const Q2& q2_zero() {
+  static const Q2 zero(0);
+  return zero;
+}
+const Q2& q2_one() {
+  static const Q2 one(1);
+  return one;
+}
+
 }  // namespace
 
-JEnclosure::JEnclosure(const Data<Q2>& d) {
+JEnclosure::JEnclosure(const Data<Q2>& d) : data_(&d) {
   Protect guard;
   for (const auto& a : d.K_rows) k_rows_.push_back(enclose(a));
   normaliser_ = enclose(d.normaliser);
@@ -143,7 +155,8 @@ int JEnclosure::cone_in(const FGen* gens, std::size_t n, bool paired, const int*
     undecided = undecided || s == kUndecided;
   }
   if (undecided) return kUndecided;
-  for (const auto& jam : jam_facets_) {
+  for (std::size_t j = 0; j < jam_facets_.size(); ++j) {
+    const std::vector<FGen>& jam = jam_facets_[j];
     // Separated: some facet of the jam cone with the whole cone strictly outside.
     bool separated = false, open = false;
     for (const FGen& a : jam) {
@@ -154,9 +167,10 @@ int JEnclosure::cone_in(const FGen* gens, std::size_t n, bool paired, const int*
     if (separated) continue;
     if (open) return kUndecided;
     ++lp_tests;  // the exact test's system: the cone, the jam cone, normaliser·x ≥ 1
-    std::vector<Row<FI>> rows;
-    for (const FGen& a : jam) rows.push_back({a, FI(0), false});
-    rows.push_back({normaliser_, FI(1), false});
+    const auto& exact_jam = data_->jams[j].facets;
+    std::vector<MixedRow> rows;
+    for (std::size_t f = 0; f < jam.size(); ++f) rows.push_back({jam[f], FI(0), false, &exact_jam[f], &q2_zero()});
+    rows.push_back({normaliser_, FI(1), false, &data_->normaliser, &q2_one()});
     const int meets = cone_meets(gens, n, paired, points, rows);
     if (meets != 0) return meets == 1 ? 0 : kUndecided;
   }
@@ -189,8 +203,9 @@ int JEnclosure::cone_misses(const FGen* gens, std::size_t n, bool paired, const 
   }
   if (undecided) return kUndecided;
   ++lp_tests;  // the exact test's system: the cone and int K
-  std::vector<Row<FI>> rows;
-  for (const FGen& a : k_rows_) rows.push_back({a, FI(0), true});
+  std::vector<MixedRow> rows;
+  for (std::size_t k = 0; k < k_rows_.size(); ++k)
+    rows.push_back({k_rows_[k], FI(0), true, &data_->K_rows[k], &q2_zero()});
   const int meets = cone_meets(gens, n, paired, points, rows);
   return meets == kUndecided ? kUndecided : (meets == 1 ? 0 : 1);
 }

@@ -97,5 +97,58 @@ GTEST_TEST(FourierMotzkin, HomogeneousSystemsAgreeWithAnExactLinearProgram) {
   EXPECT_GT(infeasible_with_strict_pairs, systems / 10);
 }
 
+// feasible_mixed: rows on enclosures, some with their exact forms. Random
+// homogeneous systems over Q(√2) whose K-like rows come in mirrored pairs
+// ((a, b, c) and (−a, d, −c): eliminating the third unknown cancels the
+// first exactly, which no enclosure shows). With every row exact the
+// answer is always decided and is the exact elimination's; with the
+// mirrored rows' exact forms withheld the same systems stay open at least
+// once, and never give another answer.
+GTEST_TEST(FourierMotzkin, MixedRowsSettleZerosAmongExactRowsOnly) {
+  std::mt19937_64 rng(8);
+  std::uniform_int_distribution<int> small(1, 9);
+  auto q = [&](int lo_sign) { return Q2(Rational(lo_sign * small(rng), small(rng))); };
+  auto irrational = [&] { return Q2(Rational(small(rng), 7), Rational(small(rng), 11), Rational(2)); };
+  int decided_only_with_exact = 0, feasible = 0;
+  const int systems = 300;
+  for (int k = 0; k < systems; ++k) {
+    std::vector<internal::A3<Q2>> exact_rows;
+    const Q2 a = irrational(), c = q(1);
+    exact_rows.push_back({a, q(1), c});
+    exact_rows.push_back({-a, q(-1), -c});
+    for (int extra = 0; extra < 1 + k % 3; ++extra) exact_rows.push_back({q(rng() % 2 ? 1 : -1), irrational(), q(1)});
+    std::vector<Row<Q2>> rows;
+    for (std::size_t r = 0; r < exact_rows.size(); ++r) rows.push_back({exact_rows[r], Q2(0), r < 2 || rng() % 2 == 0});
+    const bool expected = internal::feasible(rows);
+    feasible += expected;
+    static const Q2 zero(0);
+    auto mixed = [&](bool withhold_mirrored) {
+      std::vector<internal::MixedRow> out;
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const auto& x = exact_rows[r];
+        internal::MixedRow m{
+            {internal::to_interval_q2(x[0]), internal::to_interval_q2(x[1]), internal::to_interval_q2(x[2])},
+            internal::FI(0),
+            rows[r].strict};
+        if (!(withhold_mirrored && r < 2)) {
+          m.exact_a = &exact_rows[r];
+          m.exact_b = &zero;
+        }
+        out.push_back(m);
+      }
+      return out;
+    };
+    ASSERT_EQ(internal::feasible_mixed(mixed(false)), expected) << "system " << k;
+    try {
+      ASSERT_EQ(internal::feasible_mixed(mixed(true)), expected) << "system " << k << ", mirrored rows withheld";
+    } catch (const internal::Undecided&) {
+      ++decided_only_with_exact;
+    }
+  }
+  EXPECT_GT(decided_only_with_exact, 0);
+  EXPECT_GT(feasible, 0);
+  EXPECT_LT(feasible, systems);
+}
+
 }  // namespace
 }  // namespace fixel

@@ -690,6 +690,43 @@ GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTested
   EXPECT_GT(pre.certified, 5 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
 }
 
+// In the rounded part's designed layouts, K's rows come in mirrored pairs
+// (fixels placed symmetrically), and eliminating with both cancels a
+// coefficient exactly, which no enclosure shows. J's region pre-test then
+// settles that sign on J's exact rows instead of sending the segment to
+// the exact test: the region JSON is the exact path's, and 172 of the 176
+// segment tests of four such layouts are pre-tested (88 without J's exact
+// rows).
+GTEST_TEST(Filter, SustainedRegionsWithMirroredRowsOfKArePreTestedAndIdentical) {
+  const Scene part = test::scene_file("example2_rounded");
+  const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
+  const long n = static_cast<long>(candidates.size());
+  DesignOptions options;
+  reset_filter_stats();
+  int layouts = 0;
+  for (long index = 5; index < triple_count(n) && layouts < 4; index += 21) {
+    SustainedSet J;
+    const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
+    try {
+      J = sustained_set(scene, false);
+    } catch (const Error&) {
+      continue;
+    }
+    if (J.empty) continue;
+    ++layouts;
+    auto region = [&] {
+      const auto target = sustained_target(J);
+      RegionOptions o;
+      o.resolution = Rational(1, 128);
+      return masked(region_json(scene, compute_region(scene, *target, o)));
+    };
+    EXPECT_EQ(run(false, region), run(true, region)) << "triple " << index;
+  }
+  EXPECT_EQ(layouts, 4);
+  const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+  EXPECT_GT(pre.certified, 5 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
+}
+
 // IN answers certified on enclosures keep their exact magnitudes waiting
 // until the merge, which computes only those that can decide a run's ends:
 // a polyline ellipse (long IN runs of straight pieces and corners) gives

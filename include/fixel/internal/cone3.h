@@ -189,6 +189,21 @@ inline bool feasible_filtered(const std::vector<RowRef<IV>>& rows) {
   return feasible(std::move(copies));
 }
 
+// A row on enclosures, with its exact form when it has one (J's rows do;
+// a region segment's cone facets on enclosures do not). Both must outlive
+// the call.
+struct MixedRow {
+  A3<FI> a;
+  FI b;
+  bool strict = false;
+  const A3<Q2>* exact_a = nullptr;  // null: an enclosure only
+  const Q2* exact_b = nullptr;
+};
+// feasible() on the enclosures, each open sign taken exactly as in
+// feasible_filtered when every row it derives from has its exact form;
+// throws Undecided when one does not.
+bool feasible_mixed(const std::vector<MixedRow>& rows);
+
 template <class NT>
 bool is_zero3(const A3<NT>& a) {
   return sign(a[0]) == 0 && sign(a[1]) == 0 && sign(a[2]) == 0;

@@ -16,7 +16,8 @@ namespace fixel::internal {
 class JEnclosure {
  public:
   // J's rows in the body frame, enclosed. Only for an exact q* (Q(√d)):
-  // with an enclosed q* the exact test itself runs on intervals.
+  // with an enclosed q* the exact test itself runs on intervals. `d` must
+  // outlive this (an open sign among J's rows is settled on them).
   explicit JEnclosure(const Data<Q2>& d);
 
   // cone_in_J of cone(gens): 1 in, 0 not in, kUndecided; `lp_tests` gets
@@ -28,6 +29,7 @@ class JEnclosure {
   int cone_misses(const FGen* gens, std::size_t n, bool paired, const int* points, long& lp_tests) const;
 
  private:
+  const Data<Q2>* data_;
   std::vector<FGen> k_rows_;
   FGen normaliser_;
   std::vector<std::vector<FGen>> jam_facets_;
