@@ -7,6 +7,7 @@
 #include "fixel/design.h"
 #include "fixel/error.h"
 #include "fixel/internal/design_detail.h"
+#include "fixel/internal/region_context.h"
 #include "fixel/internal/region_filter.h"
 #include "fixel/internal/sustained_core.h"
 #include "fixel/region_target.h"
@@ -234,10 +235,9 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
       closure = true;
       break;
     }
-  if (!closure) {
+  if (!closure) {  // some interval of the region against int K is not OUT (the first found is enough)
     FormClosureTarget target(*rows);
-    const Region r = compute_region(scene, target, region_options(o, Rational(0)));
-    for (const auto& iv : r.intervals) closure = closure || iv.status != RegionStatus::kOut;
+    closure = region_reaches(scene, target, region_options(o, Rational(0)));
   }
   if (!closure) return Verdict::kNoFormClosure;
   if (o.push == DesignPush::kSustained) {

@@ -8,6 +8,7 @@
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/design_detail.h"
+#include "fixel/internal/region_context.h"
 #include "fixel/io.h"
 #include "fixel/progress.h"
 #include "fixel/region.h"
@@ -212,6 +213,34 @@ GTEST_TEST(Design, TheFormClosureRegionIsTheExactOneAndMostlyPreTested) {
     with_in += filtered.find("\"status\": \"in\"") != std::string::npos;
   }
   EXPECT_GE(with_in, 1);  // some point of some layout is in form closure
+}
+
+// Design asks the form-closure filter only whether some interval of its
+// region is not OUT (internal::region_reaches, which stops at the first):
+// on 60 of the blob's triples it is the whole region's answer, and both
+// answers occur.
+GTEST_TEST(Design, TheFormClosureFilterStopsAtItsFirstReachWithTheWholeRegionsAnswer) {
+  const Scene blob = scene_file("blob");
+  const std::vector<DesignCandidate> c = boundary_candidates(blob, std::nullopt);
+  const long n = static_cast<long>(c.size());
+  int closure = 0, none = 0;
+  for (long index = 0; index < triple_count(n) && closure + none < 60; index += 31) {
+    const std::array<int, 3> f = triple_at(n, index);
+    std::array<VectorQ, 3> Wn;
+    for (int i = 0; i < 3; ++i) Wn[i] = contact_wrench(sub(c[f[i]].point, blob.body.p_AoCm_A), c[f[i]].normal, 3);
+    const auto target = internal::form_closure_target(Wn);
+    if (!target) continue;
+    RegionOptions opt;
+    opt.resolution = Rational(1, 256);
+    opt.pusher_mu = Rational(0);
+    bool whole = false;
+    for (const auto& iv : compute_region(blob, *target, opt).intervals)
+      whole = whole || iv.status != RegionStatus::kOut;
+    EXPECT_EQ(internal::region_reaches(blob, *target, opt), whole) << "triple " << index;
+    (whole ? closure : none) += 1;
+  }
+  EXPECT_GE(closure, 10);
+  EXPECT_GE(none, 1);
 }
 
 GTEST_TEST(Design, FewerThanThreeCandidatesIsNoLayoutWithAReason) {

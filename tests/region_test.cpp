@@ -5,8 +5,11 @@
 #include <random>
 
 #include "fixel/error.h"
+#include "fixel/internal/region_context.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/lcp.h"
+#include "fixel/region_target.h"
+#include "fixel/sustained.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -246,6 +249,47 @@ GTEST_TEST(Region, SamplingBaselineAgreesWithEveryDecidedInterval) {
     }
     EXPECT_GT(compared, 150) << name;
   }
+}
+
+// region_reaches stops at the first interval that is not OUT; its answer
+// is whether compute_region has one (second method: the whole region).
+// S of every bundled part with a boundary (fig6's region is all OUT), with
+// and without pusher friction, two resolutions and the exact region; J of
+// the polygon.
+GTEST_TEST(RegionReaches, IsWhetherTheWholeRegionHasAnIntervalThatIsNotOut) {
+  auto any_not_out = [](const Region& r) {
+    for (const auto& i : r.intervals)
+      if (i.status != RegionStatus::kOut) return true;
+    return false;
+  };
+  int reached = 0, not_reached = 0;
+  auto check = [&](const Scene& scene, RegionTarget& target, const RegionOptions& o, const std::string& what) {
+    const bool answer = internal::region_reaches(scene, target, o);
+    EXPECT_EQ(answer, any_not_out(compute_region(scene, target, o))) << what;
+    (answer ? reached : not_reached) += 1;
+  };
+  for (const std::string name : {"example2_rounded", "fig6", "blob32", "polygon", "nonunique_part"}) {
+    const Scene scene = scene_file(name);
+    const SeatingSet S = seating_set(scene);
+    for (const Rational& mu : {Rational(0), Rational(1, 10)})
+      for (const Rational& resolution : {Rational(1, 16), Rational(1, 256)}) {
+        RegionOptions o;
+        o.pusher_mu = mu;
+        o.resolution = resolution;
+        const auto target = seating_target(S, scene.background_impulse);
+        check(scene, *target, o, name + " S, mu " + to_string(mu) + ", resolution " + to_string(resolution));
+      }
+    RegionOptions exact;
+    exact.exact = true;
+    const auto target = seating_target(S, scene.background_impulse);
+    check(scene, *target, exact, name + " S, exact region");
+  }
+  const Scene polygon = scene_file("polygon");
+  const SustainedSet J = sustained_set(polygon);
+  const auto sustained = sustained_target(J);
+  check(polygon, *sustained, RegionOptions{}, "polygon J");
+  EXPECT_GE(reached, 5);
+  EXPECT_GE(not_reached, 3);
 }
 
 GTEST_TEST(Region, EmptyRegion) {
