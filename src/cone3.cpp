@@ -24,6 +24,8 @@ struct Node {
 // An enclosure of x (to_interval_q2: an irrational's is kept in x, and
 // rows copied from J's data bring it along).
 FI enclosure(const Q2& x) { return to_interval_q2(x); }
+FI enclosure_of(const Q2& x) { return to_interval_q2(x); }
+FI enclosure_of(const Rational& x) { return to_interval(x); }
 
 // The elimination's vectors, reused from call to call (one per thread; a
 // call does not nest another).
@@ -269,11 +271,13 @@ bool feasible_mixed(const std::vector<MixedRow>& rows) {
   return answer;
 }
 
-std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar) {
-  if (force_exact() || planar) return facets_of<Q2>(gens, planar);
+// facets_of over Q(√d) or Q, filtered (cone3.h).
+template <class NT>
+std::vector<A3<NT>> facets_filtered(const std::vector<A3<NT>>& gens, bool planar) {
+  if (force_exact() || planar) return facets_of<NT>(gens, planar);
   std::vector<A3<FI>> enclosed;
-  for (const auto& g : gens) enclosed.push_back({enclosure(g[0]), enclosure(g[1]), enclosure(g[2])});
-  std::vector<A3<Q2>> out;
+  for (const auto& g : gens) enclosed.push_back({enclosure_of(g[0]), enclosure_of(g[1]), enclosure_of(g[2])});
+  std::vector<A3<NT>> out;
   std::vector<A3<FI>> out_enclosed;
   for (std::size_t i = 0; i < gens.size(); ++i)
     for (std::size_t j = i + 1; j < gens.size(); ++j) {
@@ -282,8 +286,8 @@ std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar) {
         Protect guard;
         c_enclosed = cross3(enclosed[i], enclosed[j]);
       }
-      std::optional<A3<Q2>> c;  // the exact product, made when needed
-      auto exact = [&]() -> const A3<Q2>& {
+      std::optional<A3<NT>> c;  // the exact product, made when needed
+      auto exact = [&]() -> const A3<NT>& {
         if (!c) c = cross3(gens[i], gens[j]);
         return *c;
       };
@@ -303,7 +307,7 @@ std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar) {
       }
       const int side = nonneg ? 1 : (nonpos ? -1 : 0);
       if (side == 0) continue;
-      const A3<Q2> a = side > 0 ? exact() : neg3(exact());
+      const A3<NT> a = side > 0 ? exact() : neg3(exact());
       const A3<FI> a_enclosed = side > 0 ? c_enclosed : A3<FI>{-c_enclosed[0], -c_enclosed[1], -c_enclosed[2]};
       // add_unique (cone3.h): a repeat is a positive multiple of a facet
       // kept; a certainly nonzero cross product rules one out.
@@ -328,6 +332,11 @@ std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar) {
       out_enclosed.push_back(a_enclosed);
     }
   return out;
+}
+
+std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar) { return facets_filtered(gens, planar); }
+std::vector<A3<Rational>> facets_of(const std::vector<A3<Rational>>& gens, bool planar) {
+  return facets_filtered(gens, planar);
 }
 
 }  // namespace fixel::internal

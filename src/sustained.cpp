@@ -82,11 +82,11 @@ AlgebraicCone cone_public(const Data<NT>& d, const std::vector<A3<NT>>& rays, co
   return out;
 }
 
-// Builds J's data from the columns W_n*, W_t* (frame B) and the rotation;
-// with `first_only`, only J's first piece (enumerate_pieces).
+// J's rows from the columns W_n*, W_t* (frame B) and the rotation: K's
+// rows and rays, the normaliser, the jam cones' generators and facets.
 template <class NT>
-Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, const std::vector<A3<NT>>& Wt,
-               const std::vector<Rational>& mu, bool with_rays, bool first_only) {
+Data<NT> rows(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, const std::vector<A3<NT>>& Wt,
+              const std::vector<Rational>& mu) {
   Data<NT> d;
   d.cos = cos;
   d.sin = sin;
@@ -120,6 +120,12 @@ Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, cons
       jam.facets = facets_of(jam.gens, mu[i] == 0 && mu[j] == 0);
       d.jams.push_back(std::move(jam));
     }
+  return d;
+}
+
+// J's pieces from its rows; with `first_only`, only the first (enumerate_pieces).
+template <class NT>
+void add_pieces(Data<NT>& d, bool with_rays, bool first_only) {
   for (const auto& a : d.K_rows) cache_enclosures(a);
   cache_enclosures(d.normaliser);
   for (const auto& jam : d.jams)
@@ -131,6 +137,40 @@ Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, cons
     d.pieces.clear();
     d.pieces_decided = false;
   }
+}
+
+// Builds J's data from the columns W_n*, W_t* (frame B) and the rotation.
+template <class NT>
+Data<NT> build(const NT& cos, const NT& sin, const std::vector<A3<NT>>& Wn, const std::vector<A3<NT>>& Wt,
+               const std::vector<Rational>& mu, bool with_rays, bool first_only) {
+  Data<NT> d = rows(cos, sin, Wn, Wt, mu);
+  add_pieces(d, with_rays, first_only);
+  return d;
+}
+
+A3<Q2> lift(const A3<Rational>& v) { return {Q2(v[0]), Q2(v[1]), Q2(v[2])}; }
+std::vector<A3<Q2>> lift(const std::vector<A3<Rational>>& vs) {
+  std::vector<A3<Q2>> out;
+  out.reserve(vs.size());
+  for (const auto& v : vs) out.push_back(lift(v));
+  return out;
+}
+
+// At a rational seat (every design layout: q* = 0): the same rows made in
+// rationals, which are cheaper than Q(√d) numbers with no root, then
+// lifted; the same values, so the same J.
+Data<Q2> build_rational(const Rational& cos, const Rational& sin, const std::vector<A3<Rational>>& Wn,
+                        const std::vector<A3<Rational>>& Wt, const std::vector<Rational>& mu, bool with_rays,
+                        bool first_only) {
+  const Data<Rational> r = rows(cos, sin, Wn, Wt, mu);
+  Data<Q2> d;
+  d.cos = Q2(r.cos);
+  d.sin = Q2(r.sin);
+  d.K_rows = lift(r.K_rows);
+  d.K_rays = lift(r.K_rays);
+  d.normaliser = lift(r.normaliser);
+  for (const auto& jam : r.jams) d.jams.push_back({jam.fixels, lift(jam.gens), lift(jam.facets)});
+  add_pieces(d, with_rays, first_only);
   return d;
 }
 
@@ -190,7 +230,20 @@ std::shared_ptr<internal::SustainedData> make_data(const Scene& scene, const Sea
   const int nc = scene.num_contacts();
   auto d = std::make_shared<internal::SustainedData>();
   const Vec2& c = scene.body.p_AoCm_A;
-  if (pose.exact) {
+  const auto& exact = pose.exact;
+  bool rational = exact && (*exact)[2].b == 0 && (*exact)[3].b == 0;
+  for (int i = 0; i < nc && rational; ++i) rational = pose.p_BoG_B[i][0].b == 0 && pose.p_BoG_B[i][1].b == 0;
+  if (rational) {
+    std::vector<internal::A3<Rational>> Wn, Wt;
+    for (int i = 0; i < nc; ++i) {
+      const Rational rx = pose.p_BoG_B[i][0].a - c.x, ry = pose.p_BoG_B[i][1].a - c.y;
+      const Vec2& n = pose.n_B[i];
+      const Vec2 t{-n.y, n.x};
+      Wn.push_back({n.x, n.y, rx * n.y - ry * n.x});
+      Wt.push_back({t.x, t.y, rx * t.y - ry * t.x});
+    }
+    d->data = internal::build_rational((*exact)[2].a, (*exact)[3].a, Wn, Wt, mu, with_rays, !with_rays);
+  } else if (pose.exact) {
     std::vector<internal::A3<Q2>> Wn, Wt;
     for (int i = 0; i < nc; ++i) {
       const Q2 rx = internal::from_public(pose.p_BoG_B[i][0]) - Q2(c.x);

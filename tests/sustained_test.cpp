@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "filter_test_util.h"
+#include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/sustained_core.h"
@@ -239,6 +240,70 @@ GTEST_TEST(SustainedSet, FrictionIntervalsAreJudgedAtTheirUpperEnds) {
   EXPECT_GT(in, 10);
   EXPECT_THROW(parse_scene(square_scene(R"(["1/5", "1/10"])", "0 0 0")), SceneError);
   EXPECT_THROW(parse_scene(square_scene(R"(["-1/5", "1/10"])", "0 0 0")), SceneError);
+}
+
+// At a rational seat (gaps 0: q* = 0) J's rows are made in rationals.
+// Second method, from the definitions: K's strict rows vanish on two of
+// the rays −W_n,k and are positive on the third; each jam cone's closed
+// rows are, up to a positive factor, cone_facet_normals (src/cone.cpp) of
+// its generators −(W_n,k ± μ_k W_t,k). Squares with random friction and
+// fixel positions, frictionless ones included.
+GTEST_TEST(SustainedSet, AtARationalSeatItsRowsAreTheConesOfItsDefinition) {
+  std::mt19937_64 rng(29);
+  auto rational = [](const std::array<QuadraticIrrational, 3>& a) {
+    for (const auto& x : a) EXPECT_EQ(x.b, 0);
+    return v3(a[0].a, a[1].a, a[2].a);
+  };
+  auto same_direction = [](const VectorQ& a, const VectorQ& b) {
+    const VectorQ c = v3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+    return c.isZero() && a.dot(b) > 0;
+  };
+  int trials = 0, jams = 0;
+  int frictionless = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::string mu = trial % 4 == 0 ? "0" : to_string(random_rational(rng, 0, 1, 20) / 2);
+    const std::string y0 = to_string(random_rational(rng, -1, 1, 4));
+    const std::string x1 = to_string(random_rational(rng, -1, 0, 4)), x2 = to_string(random_rational(rng, 0, 1, 4));
+    if (x1 == x2 || y0 == "-1" || y0 == "1" || x1 == "-1" || x2 == "1") continue;
+    const Scene scene = parse_scene(square_scene("\"" + mu + "\"", "0 0 0", y0, x1, x2));
+    const SustainedSet J = sustained_set(scene, false);
+    ++trials;
+    frictionless += mu == "0";
+    const MatrixQ Wn = normal_matrix(scene);
+    ASSERT_EQ(J.cone.strict.size(), 3u);
+    for (const auto& row : J.cone.strict) {
+      const VectorQ a = rational(row);
+      int positive = 0, zero = 0;
+      for (int k = 0; k < 3; ++k) {
+        const Rational s = a.dot(VectorQ(-Wn.col(k)));
+        positive += s > 0;
+        zero += s == 0;
+      }
+      EXPECT_EQ(positive, 1);
+      EXPECT_EQ(zero, 2);
+    }
+    for (const auto& jam : J.jam_cones) {
+      std::vector<VectorQ> gens;
+      for (int k : jam.fixels) {
+        const Vec2 r = scene.lever_arm(k), n = scene.fixels[k].n_A, t{-n.y, n.x};
+        const Rational m = scene.fixels[k].mu_upper();
+        for (int s : {1, -1})
+          gens.push_back(-(VectorQ(Wn.col(k)) + Rational(s) * m * v3(t.x, t.y, r.x * t.y - r.y * t.x)));
+      }
+      const std::vector<VectorQ> expected = cone_facet_normals(gens, 3);
+      ASSERT_EQ(jam.cone.closed.size(), expected.size()) << "mu " << mu;
+      for (const auto& row : jam.cone.closed) {
+        const VectorQ a = rational(row);
+        int matches = 0;
+        for (const auto& e : expected) matches += same_direction(a, e);
+        EXPECT_EQ(matches, 1) << a.transpose();
+      }
+      ++jams;
+    }
+  }
+  EXPECT_GE(trials, 15);
+  EXPECT_GE(frictionless, 2);
+  EXPECT_EQ(jams, 3 * trials);
 }
 
 GTEST_TEST(SustainedSet, PiecesAreDisjointAndTheirUnionIsJ) {

@@ -19,6 +19,7 @@ namespace fixel::internal {
 
 inline Q2 lift_number(const Rational& x, const Q2*) { return Q2(x); }
 inline IV lift_number(const Rational& x, const IV*) { return enclose(x); }
+inline Rational lift_number(const Rational& x, const Rational*) { return x; }
 
 template <class NT>
 using A3 = std::array<NT, 3>;
@@ -47,6 +48,24 @@ inline FI to_interval_q2(const Q2& x) {
   if (!x.is_extended() || x.a1() == 0) return to_interval(x.a0());
   const std::pair<double, double> i = x.to_interval();
   return FI(i.first, i.second);
+}
+
+// Over Q (J's rows at a rational seat, before they are lifted to Q(√d)):
+// the same filter on the rationals' enclosures.
+inline int sign(const Rational& x) { return fixel::sign(x); }
+inline int sign_dot3(const A3<Rational>& a, const A3<Rational>& x) {
+  if (!force_exact()) {
+    int s = kUndecided;
+    {
+      Protect guard;
+      FI sum = to_interval(a[0]) * to_interval(x[0]);
+      for (int k = 1; k < 3; ++k) sum += to_interval(a[k]) * to_interval(x[k]);
+      s = certain_sign(sum);
+    }
+    record_filter(FilterSite::kJam, s != kUndecided);
+    if (s != kUndecided) return s;
+  }
+  return sign(dot3(a, x));
 }
 
 inline int sign_dot3(const A3<Q2>& a, const A3<Q2>& x) {
@@ -294,6 +313,8 @@ std::vector<A3<Q2>> rays_of(const std::vector<A3<Q2>>& rows);
 // cross product and side tests, and the duplicate test of add_unique, on
 // enclosures first. The same facets in the same order.
 std::vector<A3<Q2>> facets_of(const std::vector<A3<Q2>>& gens, bool planar);
+// The same over Q (J's rows at a rational seat).
+std::vector<A3<Rational>> facets_of(const std::vector<A3<Rational>>& gens, bool planar);
 
 template <class NT>
 std::vector<Row<NT>> homogeneous(const std::vector<A3<NT>>& rows, bool strict) {
