@@ -41,13 +41,14 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
                                     OnLayout&& on_layout) {
   const long n = static_cast<long>(cands.size());
   const Rational total = total_length(boundary_of(part));
+  const std::vector<internal::Join> joins = internal::joins(boundary_of(part));  // one outline: made once
   std::vector<DesignLayout> best;
   std::array<int, 3> f = triple_at(n, first);
   for (long k = 0; k < count; ++k) {
     DesignLayout layout;
     layout.fixels = f;
     layout.index = first + k;
-    switch (evaluate(part, cands, o, total, f, layout)) {
+    switch (evaluate(part, cands, o, total, f, layout, &joins)) {
       case Verdict::kSingular:
         ++stats.singular;
         break;

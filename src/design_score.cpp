@@ -183,7 +183,8 @@ double j_width(const Scene& part, const SustainedSet& J) {
 // With `width` false (ranking every triple) J is built without its pieces'
 // rays and public form, which only J's width (display) reads; the reported
 // layouts get it in complete_layouts.
-void score_sustained(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out, bool width) {
+void score_sustained(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out, bool width,
+                     const std::vector<internal::Join>* joins = nullptr) {
   std::shared_ptr<const internal::SustainedData> data;
   if (width) {
     const SustainedSet J = sustained_set(scene, false);  // strong stability: by the theorem
@@ -201,12 +202,16 @@ void score_sustained(const Scene& scene, const DesignOptions& o, const Rational&
     return;
   }
   const auto target = internal::sustained_target(data);
-  out.sustained_score = in_fraction(compute_region(scene, *target, region_options(o, o.pusher_mu)), total);
+  out.sustained_score =
+      in_fraction(internal::compute_region_joined(scene, *target, region_options(o, o.pusher_mu), joins), total);
 }
 
-void score_step(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out) {
+void score_step(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out,
+                const std::vector<internal::Join>* joins = nullptr) {
   const SeatingSet S = seating_set(scene);
-  out.step_score = in_fraction(compute_region(scene, S, region_options(o, o.pusher_mu)), total);
+  const auto target = internal::step_target(scene, S, nullptr);
+  out.step_score =
+      in_fraction(internal::compute_region_joined(scene, *target, region_options(o, o.pusher_mu), joins), total);
 }
 
 }  // namespace
@@ -221,7 +226,8 @@ std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& 
 
 // Filters and scores one triple by the ranking push model.
 Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
-                 const Rational& total, const std::array<int, 3>& f, DesignLayout& out) {
+                 const Rational& total, const std::array<int, 3>& f, DesignLayout& out,
+                 const std::vector<Join>* joins) {
   std::array<VectorQ, 3> Wn;
   for (int i = 0; i < 3; ++i) Wn[i] = wrench_at(part, cands[f[i]].point, cands[f[i]].normal);
   const auto rows = k_rows(Wn);
@@ -237,18 +243,18 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
     }
   if (!closure) {  // some interval of the region against int K is not OUT (the first found is enough)
     FormClosureTarget target(*rows);
-    closure = region_reaches(scene, target, region_options(o, Rational(0)));
+    closure = region_reaches(scene, target, region_options(o, Rational(0)), joins);
   }
   if (!closure) return Verdict::kNoFormClosure;
   if (o.push == DesignPush::kSustained) {
-    score_sustained(scene, o, total, out, false);
+    score_sustained(scene, o, total, out, false, joins);
     out.score = *out.sustained_score;
     return *out.sustained_empty ? Verdict::kJEmpty : Verdict::kScored;
   }
   double err = 0;
   const Scene step = layout_scene(part, cands, f, o, true, &err);
   out.normal_angle_error = err;
-  score_step(step, o, total, out);
+  score_step(step, o, total, out, joins);
   out.score = *out.step_score;
   return Verdict::kScored;
 }

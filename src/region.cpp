@@ -182,6 +182,16 @@ void classify_pieces(Context& ctx, const RegionOptions& options, const std::vect
   }
 }
 
+std::vector<internal::Join> joins_of(const Scene& scene) { return internal::joins(*scene.body.boundary); }
+
+// Joins a caller made beforehand: one per piece of the scene's outline.
+const std::vector<internal::Join>& checked(const std::vector<internal::Join>& js, const Scene& scene) {
+  if (js.size() != scene.body.boundary->pieces.size())
+    throw InternalError("region: " + std::to_string(js.size()) + " joins given for an outline of " +
+                        std::to_string(scene.body.boundary->pieces.size()) + " pieces");
+  return js;
+}
+
 // target.stats points at the run's counters while it runs, and at nothing after.
 struct StatsScope {
   RegionTarget& target;
@@ -204,6 +214,11 @@ std::string to_string(RegionStatus status) {
 }
 
 Region compute_region(const Scene& scene, RegionTarget& target, const RegionOptions& options) {
+  return internal::compute_region_joined(scene, target, options, nullptr);
+}
+
+Region internal::compute_region_joined(const Scene& scene, RegionTarget& target, const RegionOptions& options,
+                                       const std::vector<Join>* given_joins) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(internal::default_pusher_mu(scene, target));
   internal::check_region_inputs(scene, mu, target);
@@ -214,8 +229,8 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
   std::vector<internal::Deferred> deferred;
   {
     const StatsScope counting(target, ctx.stats);
-    const std::vector<internal::Join> js = internal::joins(*scene.body.boundary);
-    classify_pieces(ctx, options, js, widths, raw, deferred);
+    const std::vector<internal::Join> made = given_joins ? std::vector<internal::Join>{} : joins_of(scene);
+    classify_pieces(ctx, options, given_joins ? checked(*given_joins, scene) : made, widths, raw, deferred);
     internal::settle(raw, deferred, options.merge);
   }
   Region region;
@@ -260,7 +275,8 @@ Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptio
 
 namespace internal {
 
-bool region_reaches(const Scene& scene, RegionTarget& target, const RegionOptions& options) {
+bool region_reaches(const Scene& scene, RegionTarget& target, const RegionOptions& options,
+                    const std::vector<Join>* given_joins) {
   const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
   check_region_inputs(scene, mu, target);
   check_options(options);
@@ -270,9 +286,9 @@ bool region_reaches(const Scene& scene, RegionTarget& target, const RegionOption
   std::vector<RegionInterval> raw;
   std::vector<Deferred> deferred;
   const StatsScope counting(target, ctx.stats);
-  const std::vector<Join> js = joins(*scene.body.boundary);
+  const std::vector<Join> made = given_joins ? std::vector<Join>{} : joins_of(scene);
   try {
-    classify_pieces(ctx, options, js, widths, raw, deferred);
+    classify_pieces(ctx, options, given_joins ? checked(*given_joins, scene) : made, widths, raw, deferred);
   } catch (const Reached&) {
     return true;
   }

@@ -4,9 +4,11 @@
 
 #include <random>
 
+#include "filter_test_util.h"
 #include "fixel/error.h"
 #include "fixel/internal/region_context.h"
 #include "fixel/internal/wrench_cone_detail.h"
+#include "fixel/io.h"
 #include "fixel/lcp.h"
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
@@ -290,6 +292,31 @@ GTEST_TEST(RegionReaches, IsWhetherTheWholeRegionHasAnIntervalThatIsNotOut) {
   check(polygon, *sustained, RegionOptions{}, "polygon J");
   EXPECT_GE(reached, 5);
   EXPECT_GE(not_reached, 3);
+}
+
+// Joins made once for many regions on one outline (fixture design) give
+// each region exactly as compute_region makes it; joins of another outline
+// are refused.
+GTEST_TEST(Region, JoinsMadeBeforehandGiveTheSameRegion) {
+  for (const std::string name : {"example2_rounded", "blob32", "polygon"}) {
+    const Scene scene = scene_file(name);
+    const SeatingSet S = seating_set(scene);
+    const std::vector<internal::Join> js = internal::joins(*scene.body.boundary);
+    for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
+      RegionOptions o;
+      o.pusher_mu = mu;
+      const auto target = seating_target(S, scene.background_impulse);
+      const Region whole = compute_region(scene, *target, o);
+      const Region joined = internal::compute_region_joined(scene, *target, o, &js);
+      EXPECT_EQ(test::masked(region_json(scene, joined)), test::masked(region_json(scene, whole))) << name;
+      EXPECT_EQ(internal::region_reaches(scene, *target, o, &js), internal::region_reaches(scene, *target, o));
+    }
+  }
+  const Scene scene = scene_file("polygon"), other = scene_file("blob32");
+  const SeatingSet S = seating_set(scene);
+  const auto target = seating_target(S, scene.background_impulse);
+  const std::vector<internal::Join> wrong = internal::joins(*other.body.boundary);
+  EXPECT_THROW(internal::compute_region_joined(scene, *target, RegionOptions{}, &wrong), InternalError);
 }
 
 GTEST_TEST(Region, EmptyRegion) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fixel/design.h"
+#include "fixel/internal/region_runs.h"
 #include "fixel/region_target.h"
 
 namespace fixel::internal {
@@ -29,8 +30,11 @@ std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& 
 
 enum class Verdict { kSingular, kNoFormClosure, kJEmpty, kScored };
 
-// Filters and scores one triple by the ranking push model.
+// Filters and scores one triple by the ranking push model. `joins`: those
+// of the part's outline (internal::joins), made once for many triples, or
+// null.
 Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
-                 const Rational& total, const std::array<int, 3>& f, DesignLayout& out);
+                 const Rational& total, const std::array<int, 3>& f, DesignLayout& out,
+                 const std::vector<Join>* joins = nullptr);
 
 }  // namespace fixel::internal

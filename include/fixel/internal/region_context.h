@@ -53,10 +53,18 @@ std::unique_ptr<RegionTarget> step_target(const Scene& scene, const SeatingSet& 
 RegionStatus status_at(RegionContext& ctx, const Boundary& b, const std::vector<Join>& js, int curve, const Rational& u,
                        Magnitudes* mags, std::vector<Magnitudes>* set = nullptr, std::size_t first = 0);
 
+// compute_region with the joins of the scene's outline (joins(b)) made
+// beforehand, or null to make them: a caller that runs many regions on one
+// outline (fixture design) makes them once. InternalError when their count
+// is not the outline's piece count.
+Region compute_region_joined(const Scene& scene, RegionTarget& target, const RegionOptions& options,
+                             const std::vector<Join>* joins);
+
 // Whether compute_region(scene, target, options) would have an interval
 // that is not OUT (IN, or PARTIAL at the resolution): the same subdivision
 // in the same order, stopped at the first such interval. Design's form
-// closure test asks only this.
-bool region_reaches(const Scene& scene, RegionTarget& target, const RegionOptions& options);
+// closure test asks only this. `joins` as for compute_region_joined.
+bool region_reaches(const Scene& scene, RegionTarget& target, const RegionOptions& options,
+                    const std::vector<Join>* joins = nullptr);
 
 }  // namespace fixel::internal
