@@ -24,8 +24,6 @@ struct Node {
 // An enclosure of x (to_interval_q2: an irrational's is kept in x, and
 // rows copied from J's data bring it along).
 FI enclosure(const Q2& x) { return to_interval_q2(x); }
-FI enclosure_of(const Q2& x) { return to_interval_q2(x); }
-FI enclosure_of(const Rational& x) { return to_interval(x); }
 
 // The elimination's vectors, reused from call to call (one per thread; a
 // call does not nest another).

@@ -650,23 +650,18 @@ GTEST_TEST(Filter, SustainedRegionsOfDesignedLayoutsAreIdenticalJsonAndMostSegme
   }
 }
 
-// fig6 is symmetric, and with a frictional pusher a segment's tight cone
-// has eight generators (d, (P_k − c) ⊗ d): the extreme moments of nearby
-// directions d are often taken at one control point P_k, so three or four
-// generators lie in one plane through 0, which no enclosure shows. The
-// pre-test knows which P_k each certainly is (IntervalTarget::
-// generator_points) and takes those signs as the zeros they are: on
-// designed layouts, with pusher μ 1/5, the region JSON is the exact path's
-// and the pre-test decides five in six segments or more (measured: 188 of
-// 210; without the points, 122: two in five fell back).
-GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTestedAndIdentical) {
-  const Scene part = test::scene_file("fig6");
+// Four designed layouts of `part` with J not empty (triples first, first
+// + step, ...): the region against J, filtered and forced exact, must give
+// the same JSON. Returns the pre-test's counts over the filtered runs.
+FilterCounts designed_sustained_regions(const std::string& part_name, long first, long step,
+                                        const Rational& pusher_mu) {
+  const Scene part = test::scene_file(part_name);
   const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
   const long n = static_cast<long>(candidates.size());
   DesignOptions options;
   reset_filter_stats();
   int layouts = 0;
-  for (long index = 0; index < triple_count(n) && layouts < 4; index += 29) {
+  for (long index = first; index < triple_count(n) && layouts < 4; index += step) {
     SustainedSet J;
     const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
     try {
@@ -680,13 +675,26 @@ GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTested
       const auto target = sustained_target(J);
       RegionOptions o;
       o.resolution = Rational(1, 128);
-      o.pusher_mu = Rational(1, 5);
+      o.pusher_mu = pusher_mu;
       return masked(region_json(scene, compute_region(scene, *target, o)));
     };
-    EXPECT_EQ(run(false, region), run(true, region)) << "triple " << index;
+    EXPECT_EQ(run(false, region), run(true, region)) << part_name << ", triple " << index;
   }
-  EXPECT_EQ(layouts, 4);
-  const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+  EXPECT_EQ(layouts, 4) << part_name;
+  return filter_stats().at(FilterSite::kRegionTest);
+}
+
+// fig6 is symmetric, and with a frictional pusher a segment's tight cone
+// has eight generators (d, (P_k − c) ⊗ d): the extreme moments of nearby
+// directions d are often taken at one control point P_k, so three or four
+// generators lie in one plane through 0, which no enclosure shows. The
+// pre-test knows which P_k each certainly is (IntervalTarget::
+// generator_points) and takes those signs as the zeros they are: on
+// designed layouts, with pusher μ 1/5, the region JSON is the exact path's
+// and the pre-test decides five in six segments or more (measured: 188 of
+// 210; without the points, 122: two in five fell back).
+GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTestedAndIdentical) {
+  const FilterCounts pre = designed_sustained_regions("fig6", 0, 29, Rational(1, 5));
   EXPECT_GT(pre.certified, 5 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
 }
 
@@ -698,32 +706,7 @@ GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTested
 // segment tests of four such layouts are pre-tested (88 without J's exact
 // rows).
 GTEST_TEST(Filter, SustainedRegionsWithMirroredRowsOfKArePreTestedAndIdentical) {
-  const Scene part = test::scene_file("example2_rounded");
-  const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
-  const long n = static_cast<long>(candidates.size());
-  DesignOptions options;
-  reset_filter_stats();
-  int layouts = 0;
-  for (long index = 5; index < triple_count(n) && layouts < 4; index += 21) {
-    SustainedSet J;
-    const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
-    try {
-      J = sustained_set(scene, false);
-    } catch (const Error&) {
-      continue;
-    }
-    if (J.empty) continue;
-    ++layouts;
-    auto region = [&] {
-      const auto target = sustained_target(J);
-      RegionOptions o;
-      o.resolution = Rational(1, 128);
-      return masked(region_json(scene, compute_region(scene, *target, o)));
-    };
-    EXPECT_EQ(run(false, region), run(true, region)) << "triple " << index;
-  }
-  EXPECT_EQ(layouts, 4);
-  const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
+  const FilterCounts pre = designed_sustained_regions("example2_rounded", 5, 21, Rational(0));
   EXPECT_GT(pre.certified, 5 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
 }
 

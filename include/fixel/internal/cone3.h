@@ -50,16 +50,20 @@ inline FI to_interval_q2(const Q2& x) {
   return FI(i.first, i.second);
 }
 
-// Over Q (J's rows at a rational seat, before they are lifted to Q(√d)):
-// the same filter on the rationals' enclosures.
+// Sign of a·x over Q(√d), or over Q (J's rows at a rational seat, before
+// they are lifted to Q(√d)): on the entries' enclosures first, the exact
+// sign only when they cannot tell.
 inline int sign(const Rational& x) { return fixel::sign(x); }
-inline int sign_dot3(const A3<Rational>& a, const A3<Rational>& x) {
+inline FI enclosure_of(const Q2& x) { return to_interval_q2(x); }
+inline FI enclosure_of(const Rational& x) { return to_interval(x); }
+template <class NT>
+int sign_dot3_filtered(const A3<NT>& a, const A3<NT>& x) {
   if (!force_exact()) {
     int s = kUndecided;
     {
       Protect guard;
-      FI sum = to_interval(a[0]) * to_interval(x[0]);
-      for (int k = 1; k < 3; ++k) sum += to_interval(a[k]) * to_interval(x[k]);
+      FI sum = enclosure_of(a[0]) * enclosure_of(x[0]);
+      for (int k = 1; k < 3; ++k) sum += enclosure_of(a[k]) * enclosure_of(x[k]);
       s = certain_sign(sum);
     }
     record_filter(FilterSite::kJam, s != kUndecided);
@@ -67,21 +71,8 @@ inline int sign_dot3(const A3<Rational>& a, const A3<Rational>& x) {
   }
   return sign(dot3(a, x));
 }
-
-inline int sign_dot3(const A3<Q2>& a, const A3<Q2>& x) {
-  if (!force_exact()) {
-    int s = kUndecided;
-    {
-      Protect guard;
-      FI sum = to_interval_q2(a[0]) * to_interval_q2(x[0]);
-      for (int k = 1; k < 3; ++k) sum += to_interval_q2(a[k]) * to_interval_q2(x[k]);
-      s = certain_sign(sum);
-    }
-    record_filter(FilterSite::kJam, s != kUndecided);
-    if (s != kUndecided) return s;
-  }
-  return sign(dot3(a, x));
-}
+inline int sign_dot3(const A3<Q2>& a, const A3<Q2>& x) { return sign_dot3_filtered(a, x); }
+inline int sign_dot3(const A3<Rational>& a, const A3<Rational>& x) { return sign_dot3_filtered(a, x); }
 
 template <class NT>
 A3<NT> cross3(const A3<NT>& a, const A3<NT>& b) {
