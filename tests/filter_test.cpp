@@ -609,6 +609,44 @@ GTEST_TEST(Filter, DesignOfThePolygonAndTheBlobIsIdenticalJsonWithAndWithoutFilt
   }
 }
 
+// `wanted` designed layouts of `part` with J not empty (triples first,
+// first + step, ...): the region against J at `resolution`, for each
+// pusher μ, filtered and forced exact, must give the same JSON. Returns the
+// pre-test's counts over the filtered runs.
+FilterCounts designed_sustained_regions(const std::string& part_name, long first, long step, int wanted,
+                                        const Rational& resolution, const std::vector<Rational>& pusher_mus) {
+  const Scene part = test::scene_file(part_name);
+  const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
+  const long n = static_cast<long>(candidates.size());
+  DesignOptions options;
+  reset_filter_stats();
+  int layouts = 0;
+  for (long index = first; index < triple_count(n) && layouts < wanted; index += step) {
+    SustainedSet J;
+    const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
+    try {
+      J = sustained_set(scene, false);
+    } catch (const Error&) {  // a singular layout: no J to test
+      continue;
+    }
+    if (J.empty) continue;
+    ++layouts;
+    for (const Rational& mu : pusher_mus) {
+      auto region = [&] {
+        const auto target = sustained_target(J);
+        RegionOptions o;
+        o.resolution = resolution;
+        o.pusher_mu = mu;
+        return masked(region_json(scene, compute_region(scene, *target, o)));
+      };
+      EXPECT_EQ(run(false, region), run(true, region))
+          << part_name << ", triple " << index << ", pusher mu " << to_string(mu);
+    }
+  }
+  EXPECT_EQ(layouts, wanted) << part_name;
+  return filter_stats().at(FilterSite::kRegionTest);
+}
+
 // J's region pre-test (src/sustained_filter.cpp) on designed layouts of a
 // B-spline part (curved pieces: full-rank cones) and of the polygon
 // (straight pieces: a frictionless push gives a planar cone), with and
@@ -616,72 +654,11 @@ GTEST_TEST(Filter, DesignOfThePolygonAndTheBlobIsIdenticalJsonWithAndWithoutFilt
 // the exact path's, and the pre-test decides most segments.
 GTEST_TEST(Filter, SustainedRegionsOfDesignedLayoutsAreIdenticalJsonAndMostSegmentsArePreTested) {
   for (const char* name : {"blob", "polygon"}) {
-    SCOPED_TRACE(name);
-    const Scene part = test::scene_file(name);
-    const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
-    const long n = static_cast<long>(candidates.size());
-    DesignOptions options;
-    reset_filter_stats();
-    int layouts = 0;
-    for (long index = 0; index < triple_count(n) && layouts < 3; index += 37) {
-      SustainedSet J;
-      const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
-      try {
-        J = sustained_set(scene, false);
-      } catch (const Error&) {  // a singular layout: no J to test
-        continue;
-      }
-      if (J.empty) continue;
-      ++layouts;
-      for (const Rational& mu : {Rational(0), Rational(1, 10)}) {
-        auto region = [&] {
-          const auto target = sustained_target(J);
-          RegionOptions o;
-          o.resolution = Rational(1, 64);
-          o.pusher_mu = mu;
-          return masked(region_json(scene, compute_region(scene, *target, o)));
-        };
-        EXPECT_EQ(run(false, region), run(true, region)) << "triple " << index << ", pusher mu " << to_string(mu);
-      }
-    }
-    EXPECT_EQ(layouts, 3);
-    const FilterCounts pre = filter_stats().at(FilterSite::kRegionTest);
-    EXPECT_GT(pre.certified, 4 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
+    const FilterCounts pre =
+        designed_sustained_regions(name, 0, 37, 3, Rational(1, 64), {Rational(0), Rational(1, 10)});
+    EXPECT_GT(pre.certified, 4 * pre.fallbacks)
+        << name << ": " << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
   }
-}
-
-// Four designed layouts of `part` with J not empty (triples first, first
-// + step, ...): the region against J, filtered and forced exact, must give
-// the same JSON. Returns the pre-test's counts over the filtered runs.
-FilterCounts designed_sustained_regions(const std::string& part_name, long first, long step,
-                                        const Rational& pusher_mu) {
-  const Scene part = test::scene_file(part_name);
-  const std::vector<DesignCandidate> candidates = boundary_candidates(part, std::nullopt);
-  const long n = static_cast<long>(candidates.size());
-  DesignOptions options;
-  reset_filter_stats();
-  int layouts = 0;
-  for (long index = first; index < triple_count(n) && layouts < 4; index += step) {
-    SustainedSet J;
-    const Scene scene = layout_scene(part, candidates, triple_at(n, index), options, false);
-    try {
-      J = sustained_set(scene, false);
-    } catch (const Error&) {
-      continue;
-    }
-    if (J.empty) continue;
-    ++layouts;
-    auto region = [&] {
-      const auto target = sustained_target(J);
-      RegionOptions o;
-      o.resolution = Rational(1, 128);
-      o.pusher_mu = pusher_mu;
-      return masked(region_json(scene, compute_region(scene, *target, o)));
-    };
-    EXPECT_EQ(run(false, region), run(true, region)) << part_name << ", triple " << index;
-  }
-  EXPECT_EQ(layouts, 4) << part_name;
-  return filter_stats().at(FilterSite::kRegionTest);
 }
 
 // fig6 is symmetric, and with a frictional pusher a segment's tight cone
@@ -694,7 +671,7 @@ FilterCounts designed_sustained_regions(const std::string& part_name, long first
 // and the pre-test decides five in six segments or more (measured: 188 of
 // 210; without the points, 122: two in five fell back).
 GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTestedAndIdentical) {
-  const FilterCounts pre = designed_sustained_regions("fig6", 0, 29, Rational(1, 5));
+  const FilterCounts pre = designed_sustained_regions("fig6", 0, 29, 4, Rational(1, 128), {Rational(1, 5)});
   EXPECT_GT(pre.certified, 5 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
 }
 
@@ -706,7 +683,7 @@ GTEST_TEST(Filter, SustainedRegionsWhoseGeneratorsShareAControlPointArePreTested
 // segment tests of four such layouts are pre-tested (88 without J's exact
 // rows).
 GTEST_TEST(Filter, SustainedRegionsWithMirroredRowsOfKArePreTestedAndIdentical) {
-  const FilterCounts pre = designed_sustained_regions("example2_rounded", 5, 21, Rational(0));
+  const FilterCounts pre = designed_sustained_regions("example2_rounded", 5, 21, 4, Rational(1, 128), {Rational(0)});
   EXPECT_GT(pre.certified, 5 * pre.fallbacks) << pre.certified << " certified, " << pre.fallbacks << " fallbacks";
 }
 
