@@ -1,10 +1,14 @@
-// Fixture design throughput (docs/design.md): layouts per second on one
-// thread and the speedup with 2 threads, on a bundled part; then, per
-// bundled part, the best layout's score against the layout shipped in the
-// scene file; and, with --stages, what one layout's evaluation costs.
+// Fixture design throughput (docs/design.md): layouts scored per second on
+// one thread and the speedup with 2 threads, every triple scored, on a
+// bundled part; with --bound, the bounded search against scoring every
+// triple, side by side in one run (seconds, counts, the same layouts);
+// with --parts, per bundled part, the best layout's score against the
+// layout shipped in the scene file; and, with --stages, what one layout's
+// evaluation costs.
 //
 //   design_bench [--part NAME] [--candidates N] [--resolution R] [--jobs J]
-//                [--stages] [--parts] [--top K]
+//                [--stages] [--parts] [--bound] [--top K]
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iomanip>
@@ -89,12 +93,49 @@ void stages(const fixel::Scene& part, const std::vector<fixel::DesignCandidate>&
             << ", S " << 1e3 * t_s / n << ", S region " << 1e3 * t_sregion / n << "\n";
 }
 
+bool same_layouts(const fixel::DesignResult& a, const fixel::DesignResult& b) {
+  bool same = a.layouts.size() == b.layouts.size();
+  for (std::size_t k = 0; same && k < a.layouts.size(); ++k)
+    same = a.layouts[k].fixels == b.layouts[k].fixels && a.layouts[k].score == b.layouts[k].score;
+  return same;
+}
+
+// The bounded search against scoring every triple, alternated three times.
+int compare_bound(const std::string& name, const fixel::Scene& part, const std::vector<fixel::DesignCandidate>& c,
+                  fixel::DesignOptions o, int jobs, const std::string& resolution) {
+  o.jobs = jobs;
+  std::vector<double> bounded_s, every_s;
+  fixel::DesignResult bounded, every;
+  for (int run = 0; run < 3; ++run) {
+    o.bound = true;
+    bounded = fixel::design(part, c, o);
+    bounded_s.push_back(bounded.stats.seconds);
+    o.bound = false;
+    every = fixel::design(part, c, o);
+    every_s.push_back(every.stats.seconds);
+  }
+  std::sort(bounded_s.begin(), bounded_s.end());
+  std::sort(every_s.begin(), every_s.end());
+  const auto& s = bounded.stats;
+  std::cout << name << ": " << c.size() << " candidates, " << s.triples << " triples, top " << o.top
+            << ", resolution " << resolution << ", " << jobs << " threads\n"
+            << std::fixed << std::setprecision(3) << "bounded: median " << bounded_s[1] << " s (" << bounded_s[0]
+            << "–" << bounded_s[2] << "); scored " << s.no_form_closure + s.j_empty + s.regions << ", never scored "
+            << s.bounded << ", singular " << s.singular << "\n"
+            << "every triple: median " << every_s[1] << " s (" << every_s[0] << "–" << every_s[2] << "); scored "
+            << every.stats.no_form_closure + every.stats.j_empty + every.stats.regions << "\n"
+            << std::setprecision(2) << "speedup (ratio of the medians): " << every_s[1] / bounded_s[1] << "\n";
+  const bool same = same_layouts(bounded, every);
+  std::cout << "same layouts: " << (same ? "yes" : "NO") << "\n";
+  return same ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string part_name = "polygon", resolution = "1/256";
   int n = 16, jobs = 2, top = 5;
-  bool want_stages = false, want_parts = false;
+  bool want_stages = false, want_parts = false, want_bound = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -118,9 +159,11 @@ int main(int argc, char** argv) {
       want_stages = true;
     else if (a == "--parts")
       want_parts = true;
+    else if (a == "--bound")
+      want_bound = true;
     else {
       std::cerr << "usage: design_bench [--part NAME] [--candidates N] [--resolution R] [--jobs J] [--top K] "
-                   "[--stages] [--parts]\n";
+                   "[--stages] [--parts] [--bound]\n";
       return 2;
     }
   }
@@ -173,6 +216,8 @@ int main(int argc, char** argv) {
       stages(part, c, o);
       return 0;
     }
+    if (want_bound) return compare_bound(part_name, part, c, o, jobs, resolution);
+    o.bound = false;  // layouts scored per second: every triple
     o.jobs = 1;
     const auto one = fixel::design(part, c, o);
     o.jobs = jobs;
@@ -186,9 +231,7 @@ int main(int argc, char** argv) {
               << " layouts/s\n"
               << jobs << " threads: " << many.stats.seconds << " s, " << perN << " layouts/s, speedup "
               << one.stats.seconds / many.stats.seconds << "\n";
-    bool same = one.layouts.size() == many.layouts.size();
-    for (std::size_t k = 0; same && k < one.layouts.size(); ++k)
-      same = one.layouts[k].fixels == many.layouts[k].fixels && one.layouts[k].score == many.layouts[k].score;
+    const bool same = same_layouts(one, many);
     std::cout << "same ranking: " << (same ? "yes" : "NO") << "\n";
     return same ? 0 : 1;
   } catch (const fixel::Error& e) {

@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <utility>
 
 #include "fixel/error.h"
+#include "fixel/internal/design_bound.h"
 #include "fixel/internal/design_detail.h"
 #include "fixel/progress.h"
 
@@ -29,10 +31,30 @@ using internal::Verdict;
 
 constexpr int kMaxJobs = 256;
 constexpr long kBatch = 8;  // triples per unit of work of the thread pool
+// The bounded search: triples scored between two checks of the K-th score
+// (fixed, so that the counts do not depend on --jobs), triples bounded per
+// unit of work, and the most triples it keeps a bound for (16 bytes each).
+constexpr long kChunk = 32;
+constexpr long kBoundBatch = 1024;
+constexpr long kMaxBoundedTriples = 1L << 25;
 
 bool better(const DesignLayout& a, const DesignLayout& b) {
   if (a.score != b.score) return a.score > b.score;
   return a.index < b.index;
+}
+
+// The next triple in lexicographic order.
+void advance(std::array<int, 3>& f, long n) {
+  if (f[2] + 1 < n) {
+    ++f[2];
+  } else if (f[1] + 2 < n) {
+    ++f[1];
+    f[2] = f[1] + 1;
+  } else {
+    ++f[0];
+    f[1] = f[0] + 1;
+    f[2] = f[0] + 2;
+  }
 }
 
 template <class OnLayout>
@@ -66,22 +88,135 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
     }
     if (static_cast<int>(best.size()) > 2 * o.top) rank_layouts(best, o.top);
     on_layout();
-    // Next triple in lexicographic order.
-    if (k + 1 < count) {
-      if (f[2] + 1 < n) {
-        ++f[2];
-      } else if (f[1] + 2 < n) {
-        ++f[1];
-        f[2] = f[1] + 1;
-      } else {
-        ++f[0];
-        f[1] = f[0] + 1;
-        f[2] = f[0] + 2;
-      }
-    }
+    if (k + 1 < count) advance(f, n);
   }
   rank_layouts(best, o.top);
   return best;
+}
+
+// Polls `control` from whichever thread gets the mutex without waiting.
+class SharedPoll {
+ public:
+  explicit SharedPoll(RunControl* control) : control_(control) {}
+  void operator()(const char* task, long done, long total, const char* unit) {
+    if (!control_) return;
+    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
+    if (lock.owns_lock()) control_->poll(task, done, total, unit);
+  }
+
+ private:
+  RunControl* control_;
+  std::mutex mutex_;
+};
+
+struct Ranked {
+  long index;
+  double upper;  // ≥ the triple's exact bound
+};
+
+// The sustained ranking with the pair bound (docs/design.md, "The bound"):
+// every pair's half-space region, every triple's bound, then the triples in
+// order of decreasing bound, kChunk at a time, until none left can enter
+// the top K. False (nothing done) when there are too many triples to keep a
+// bound for each: the caller then scores every triple.
+bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
+                 tbb::task_arena& arena, DesignResult& result) {
+  const long n = static_cast<long>(cands.size()), T = triple_count(n);
+  if (T > kMaxBoundedTriples) return false;
+  internal::PairBound bound(part, cands, o.resolution);
+  const std::vector<internal::Join> joins = internal::joins(boundary_of(part));
+  const Rational total = total_length(boundary_of(part));
+  SharedPoll poll_shared(o.control);
+  std::atomic<long> done{0};
+  const long pairs = bound.pair_count();
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<long>(0, pairs, 1), [&](const tbb::blocked_range<long>& r) {
+      for (long p = r.begin(); p != r.end(); ++p) {
+        bound.compute_pair(p, joins);
+        poll_shared("design: pair bounds", ++done, pairs, "pairs");
+      }
+    });
+  });
+  // Each triple's bound, in batches of consecutive indices (kept in index order).
+  const long batches = (T + kBoundBatch - 1) / kBoundBatch;
+  std::vector<std::vector<Ranked>> ranked_in(batches);
+  std::vector<long> singular_in(batches, 0);
+  done = 0;
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<long>(0, batches, 1), [&](const tbb::blocked_range<long>& r) {
+      for (long b = r.begin(); b != r.end(); ++b) {
+        const long first = b * kBoundBatch, count = std::min(kBoundBatch, T - first);
+        std::array<int, 3> f = triple_at(n, first);
+        for (long k = 0; k < count; ++k, advance(f, n)) {
+          if (bound.singular(f))
+            ++singular_in[b];
+          else
+            ranked_in[b].push_back({first + k, bound.upper(f)});
+        }
+        poll_shared("design: triple bounds", done += count, T, "triples");
+      }
+    });
+  });
+  std::vector<Ranked> ranked;
+  DesignStats& stats = result.stats;
+  for (long b = 0; b < batches; ++b) {
+    stats.singular += singular_in[b];
+    ranked.insert(ranked.end(), ranked_in[b].begin(), ranked_in[b].end());
+  }
+  ranked_in.clear();
+  arena.execute([&] {
+    tbb::parallel_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
+      return a.upper != b.upper ? a.upper > b.upper : a.index < b.index;
+    });
+  });
+  std::vector<DesignLayout> top;
+  long evaluated = 0;
+  for (std::size_t pos = 0; pos < ranked.size(); pos += kChunk) {
+    poll(o.control, "design", stats.singular + static_cast<long>(pos), T, "layouts");
+    const bool full = static_cast<int>(top.size()) == o.top;
+    // Every triple left has an upper end at most this one's: none can enter.
+    if (full && bound.none_can_enter(ranked[pos].upper, top.back().score, static_cast<long>(ranked.size() - pos)))
+      break;
+    std::vector<long> chosen;
+    for (std::size_t k = pos; k < std::min(ranked.size(), pos + kChunk); ++k)
+      if (!full || bound.can_enter(triple_at(n, ranked[k].index), ranked[k].index, ranked[k].upper, top.back().score,
+                                   top.back().index))
+        chosen.push_back(ranked[k].index);
+    std::vector<DesignLayout> layouts(chosen.size());
+    std::vector<Verdict> verdicts(chosen.size());
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chosen.size(), 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                            layouts[k].fixels = triple_at(n, chosen[k]);
+                            layouts[k].index = chosen[k];
+                            verdicts[k] = evaluate(part, cands, o, total, layouts[k].fixels, layouts[k], &joins);
+                          }
+                        });
+    });
+    evaluated += static_cast<long>(chosen.size());
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+      switch (verdicts[k]) {
+        case Verdict::kSingular:  // the bound's determinant said otherwise
+          throw InternalError("design: triple " + std::to_string(chosen[k]) + " is singular after all");
+        case Verdict::kNoFormClosure:
+          ++stats.no_form_closure;
+          break;
+        case Verdict::kJEmpty:
+          ++stats.j_empty;
+          top.push_back(std::move(layouts[k]));
+          break;
+        case Verdict::kScored:
+          ++stats.regions;
+          top.push_back(std::move(layouts[k]));
+          break;
+      }
+    }
+    rank_layouts(top, o.top);
+  }
+  stats.bounded = T - stats.singular - evaluated;
+  result.layouts = std::move(top);
+  return true;
 }
 
 }  // namespace
@@ -158,6 +293,13 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
     result.no_layout = no_layout_reason(result.stats, 0);
     return result;
   }
+  tbb::task_arena arena(jobs);
+  if (o.push == DesignPush::kSustained && o.bound && run_bounded(part, cands, o, arena, result)) {
+    complete_layouts(part, cands, o, result.layouts);
+    result.no_layout = no_layout_reason(result.stats, result.layouts.size());
+    result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
   const long T = result.stats.triples;
   const long batches = (T + kBatch - 1) / kBatch;
   std::vector<std::vector<DesignLayout>> best(batches);
@@ -170,7 +312,6 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
     std::unique_lock<std::mutex> lock(poll_mutex, std::try_to_lock);
     if (lock.owns_lock()) o.control->poll("design", d, T, "layouts");
   };
-  tbb::task_arena arena(jobs);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<long>(0, batches, 1), [&](const tbb::blocked_range<long>& r) {
       for (long b = r.begin(); b != r.end(); ++b) {

@@ -133,6 +133,7 @@ std::string design_json(const Scene& part, const DesignResult& r, const DesignOp
                   {"no_form_closure", r.stats.no_form_closure},
                   {"j_empty", r.stats.j_empty},
                   {"regions", r.stats.regions},
+                  {"bounded", r.stats.bounded},
                   {"jobs", r.stats.jobs},
                   {"seconds", r.stats.seconds}};
   return doc.dump(1) + "\n";
@@ -146,8 +147,9 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
     << ", pusher mu " << to_string(o.pusher_mu) << ", gap " << to_string(o.gap) << " (one-step score)\n";
   s << "dropped: " << r.stats.singular << " with W_n singular, " << r.stats.no_form_closure
     << " without form closure; pruned: " << r.stats.j_empty << " with J empty (score 0, no region); " << r.stats.regions
-    << " regions computed; " << r.stats.jobs << " threads, " << std::fixed << std::setprecision(2) << r.stats.seconds
-    << " s\n";
+    << " regions computed; ";
+  if (r.stats.bounded) s << r.stats.bounded << " never scored (pair bound below the K-th score); ";
+  s << r.stats.jobs << " threads, " << std::fixed << std::setprecision(2) << r.stats.seconds << " s\n";
   if (!r.no_layout.empty()) {
     s << "no layout: " << r.no_layout << "\n";
     return s.str();

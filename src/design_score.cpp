@@ -47,21 +47,28 @@ bool in_open_k(const std::array<VectorQ, 3>& rows, const VectorQ& w) {
   return true;
 }
 
-// The target "−w strictly inside cone(W_n)" alone: with a frictionless
-// finger, a point is IN when its push and the three fixels' normal wrenches
-// are in form closure. `misses` is conservative (one separating row), so an
-// undecided stretch stays PARTIAL and is never counted as OUT.
-class FormClosureTarget final : public RegionTarget, public internal::IntervalTarget {
+// The open polyhedral cone {w : a_k · w > 0 for every row a_k} as a region
+// target. With K's three rows ("−w strictly inside cone(W_n)"), a
+// frictionless finger's point is IN when its push and the three fixels'
+// normal wrenches are in form closure; with one row it is an open half-space
+// (the pair bound, design_bound.cpp). `misses` is conservative (one
+// separating row; exact for one row), so an undecided stretch stays PARTIAL
+// and is never counted as OUT.
+class OpenConeTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
-  explicit FormClosureTarget(const std::array<VectorQ, 3>& rows) : rows_(rows) {
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 3; ++k) rows_enclosed_[i][k] = internal::to_interval(rows[i][k]);
+  OpenConeTarget(std::vector<VectorQ> rows, const char* name) : rows_(std::move(rows)), name_(name) {
+    for (const auto& a : rows_) {
+      internal::FGen e;
+      for (int k = 0; k < 3; ++k) e[k] = internal::to_interval(a[k]);
+      rows_enclosed_.push_back(e);
+    }
   }
   const char* push_model() const override { return "form closure"; }
-  const char* name() const override { return "K"; }
+  const char* name() const override { return name_; }
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
     for (const auto& g : gens)
-      if (!in_open_k(rows_, g)) return false;
+      for (const auto& a : rows_)
+        if (a.dot(g) <= 0) return false;
     if (detail) detail->half_line = true;
     return true;
   }
@@ -75,7 +82,8 @@ class FormClosureTarget final : public RegionTarget, public internal::IntervalTa
   }
 
   // The region's interval pre-test (internal/region_filter.h): the same
-  // signs of a·g on enclosures. K is a cone: an IN answer has no magnitudes.
+  // signs of a·g on enclosures. The target is a cone: an IN answer has no
+  // magnitudes.
   internal::IntervalTarget* interval_target() override { return this; }
   bool in_answers_have_magnitudes() const override { return false; }
   int interval_ray_hits(const internal::FGen& g) const override {
@@ -114,8 +122,9 @@ class FormClosureTarget final : public RegionTarget, public internal::IntervalTa
     return internal::certain_sign(a[0] * g[0] + a[1] * g[1] + a[2] * g[2]);
   }
 
-  std::array<VectorQ, 3> rows_;
-  std::array<internal::FGen, 3> rows_enclosed_;
+  std::vector<VectorQ> rows_;
+  std::vector<internal::FGen> rows_enclosed_;
+  const char* name_;
 };
 
 Rational in_fraction(const Region& r, const Rational& total) {
@@ -203,7 +212,7 @@ void score_sustained(const Scene& scene, const DesignOptions& o, const Rational&
   }
   const auto target = internal::sustained_target(data);
   out.sustained_score =
-      in_fraction(internal::compute_region_joined(scene, *target, region_options(o, o.pusher_mu), joins), total);
+      in_fraction(internal::compute_region_joined(scene, *target, region_options(o, o.pusher_mu), joins, false), total);
 }
 
 void score_step(const Scene& scene, const DesignOptions& o, const Rational& total, DesignLayout& out,
@@ -211,7 +220,7 @@ void score_step(const Scene& scene, const DesignOptions& o, const Rational& tota
   const SeatingSet S = seating_set(scene);
   const auto target = internal::step_target(scene, S, nullptr);
   out.step_score =
-      in_fraction(internal::compute_region_joined(scene, *target, region_options(o, o.pusher_mu), joins), total);
+      in_fraction(internal::compute_region_joined(scene, *target, region_options(o, o.pusher_mu), joins, false), total);
 }
 
 }  // namespace
@@ -221,7 +230,11 @@ namespace internal {
 std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& Wn) {
   const auto rows = k_rows(Wn);
   if (!rows) return nullptr;
-  return std::make_unique<FormClosureTarget>(*rows);
+  return std::make_unique<OpenConeTarget>(std::vector<VectorQ>(rows->begin(), rows->end()), "K");
+}
+
+std::unique_ptr<RegionTarget> open_half_space_target(const VectorQ& a) {
+  return std::make_unique<OpenConeTarget>(std::vector<VectorQ>{a}, "H");
 }
 
 // Filters and scores one triple by the ranking push model.
@@ -242,7 +255,7 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
       break;
     }
   if (!closure) {  // some interval of the region against int K is not OUT (the first found is enough)
-    FormClosureTarget target(*rows);
+    OpenConeTarget target(std::vector<VectorQ>(rows->begin(), rows->end()), "K");
     closure = region_reaches(scene, target, region_options(o, Rational(0)), joins);
   }
   if (!closure) return Verdict::kNoFormClosure;

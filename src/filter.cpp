@@ -46,6 +46,8 @@ std::string to_string(FilterSite site) {
       return "in magnitudes";
     case FilterSite::kFeasibility:
       return "feasibility";
+    case FilterSite::kDesignBound:
+      return "design bound";
     case FilterSite::kCount:
       break;
   }

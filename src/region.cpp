@@ -218,7 +218,7 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
 }
 
 Region internal::compute_region_joined(const Scene& scene, RegionTarget& target, const RegionOptions& options,
-                                       const std::vector<Join>* given_joins) {
+                                       const std::vector<Join>* given_joins, bool locate) {
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(internal::default_pusher_mu(scene, target));
   internal::check_region_inputs(scene, mu, target);
@@ -258,7 +258,7 @@ Region internal::compute_region_joined(const Scene& scene, RegionTarget& target,
     region.resolution = options.resolution;
   }
   region.pusher_mu = mu;
-  locate_intervals(scene, region);
+  if (locate) locate_intervals(scene, region);
   region.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return region;
 }

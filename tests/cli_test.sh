@@ -333,7 +333,13 @@ expect 2 '--top: 0 must be > 0' -- "$fixel" design "$tmp/house.json" --top 0
 expect 2 'candidates[0].u: 6 is off curve 0' -- "$fixel" design "$tmp/house.json" --candidates <(echo '{"candidates": [{"curve": 0, "u": "6"}]}')
 expect 2 'body.boundary: is missing' -- "$fixel" design "$src/data/scenes/example2.json"
 expect 2 'cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --svg "$tmp/no/x.svg"
-expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --max-seconds 0.5 --quiet
+expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --exhaustive --spacing 1/4 --max-seconds 0.5 --quiet
+expect 4 'time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --spacing 1/16 --max-seconds 0.2 --quiet
+# The pair bound: same best layout as scoring every triple, most triples never scored.
+expect 0 'never scored (pair bound below the K-th score)' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
+expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
+expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive
+expect 0 '"bounded": 0' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive --json
 # --exact-only turns the interval filters off: the same output byte for byte
 # (wall time masked), and the filter counters show which path ran.
 mask() { sed -E 's/"seconds": [0-9.e+-]+/"seconds": X/'; }
@@ -344,7 +350,7 @@ for cmd in "region $src/data/scenes/blob.json --json --pusher-mu 1/10" "seat $sr
   if [ -z "$a" ] || [ "$a" != "$b" ]; then echo "FAIL: $cmd differs with --exact-only"; fail=1; fi
 done
 expect 0 'fixel: filters (certified/exact fallbacks): lemke 0/0 lemke tie 0/0 ray test ' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --json
-expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 membership 0/0 jam test 0/0 region test 0/0 in magnitudes 0/0 feasibility 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
+expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 membership 0/0 jam test 0/0 region test 0/0 in magnitudes 0/0 feasibility 0/0 design bound 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
 
 # Issue 16 (smaller defects): guaranteed-set rows with a zero left side are
 # dropped (true for every p) or make the set empty; never printed. This scene

@@ -162,8 +162,10 @@ GTEST_TEST(Design, TheRankingIsTheSameWithOneAndTwoThreads) {
   EXPECT_EQ(one.stats.singular, two.stats.singular);
   EXPECT_EQ(one.stats.no_form_closure, two.stats.no_form_closure);
   EXPECT_EQ(one.stats.j_empty, two.stats.j_empty);
+  EXPECT_EQ(one.stats.bounded, two.stats.bounded);
   // Every triple is accounted for exactly once.
-  EXPECT_EQ(one.stats.singular + one.stats.no_form_closure + one.stats.j_empty + one.stats.regions, one.stats.triples);
+  EXPECT_EQ(one.stats.singular + one.stats.no_form_closure + one.stats.j_empty + one.stats.regions + one.stats.bounded,
+            one.stats.triples);
 }
 
 GTEST_TEST(Design, BatchesMergeToTheWholeRun) {
@@ -174,6 +176,7 @@ GTEST_TEST(Design, BatchesMergeToTheWholeRun) {
   o.resolution = Rational(1, 32);
   o.top = 5;
   o.jobs = 1;
+  o.bound = false;  // batches score every triple, as this run then does
   const DesignResult whole = design(part, few, o);
   std::vector<DesignLayout> merged;
   DesignStats stats;

@@ -53,6 +53,11 @@ struct DesignOptions {
   Rational gap = Rational(0);
   /// How many layouts to report (K > 0).
   int top = 5;
+  /// Sustained ranking only: score the triples in order of their pair bound
+  /// (an exact upper bound of the sustained score, docs/design.md) and stop
+  /// when no triple left can enter the top K. The layouts are the same as
+  /// with `bound` false (every triple scored); only the counts differ.
+  bool bound = true;
   /// Worker threads; 0 means one per core. The result does not depend on it.
   int jobs = 0;
   /// Polled about once per layout from whichever thread finishes it:
@@ -86,8 +91,9 @@ struct DesignLayout {
 };
 
 /// Counts of a run. Every triple is exactly one of: singular, no form
-/// closure, J empty (sustained ranking: scored 0 without a region), or
-/// scored by a region.
+/// closure, J empty (sustained ranking: scored 0 without a region), scored
+/// by a region, or bounded (sustained ranking with DesignOptions::bound:
+/// never scored, its bound being below the K-th score).
 struct DesignStats {
   long candidates = 0;
   long triples = 0;          ///< C(candidates, 3).
@@ -95,7 +101,8 @@ struct DesignStats {
   long no_form_closure = 0;  ///< No boundary point where a frictionless push completes form closure: dropped.
   long j_empty = 0;          ///< J empty: score 0, no region computed (pruned).
   long regions = 0;          ///< Layouts scored by a region computation.
-  long pruned() const { return singular + no_form_closure + j_empty; }
+  long bounded = 0;          ///< Not scored: their pair bound shows they cannot enter the top K.
+  long pruned() const { return singular + no_form_closure + j_empty + bounded; }
   double seconds = 0;  ///< Wall time (display only).
   int jobs = 1;        ///< Threads used.
 };
@@ -154,6 +161,7 @@ Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& candid
 /// filtered and scored by the ranking push model; returns the batch's best
 /// `options.top` and adds its counts to `stats`. Single-threaded and a pure
 /// function of its arguments (idempotent: the unit of a distributed run).
+/// Every triple is scored: `options.bound` is not used here.
 std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& candidates,
                                        const DesignOptions& options, long first, long count, DesignStats& stats);
 
@@ -167,8 +175,11 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
 
 /// The whole run on a oneTBB thread pool of `options.jobs` threads: batches
 /// of triples, merged in index order, so the result is the same for any
-/// number of threads. Throws what check_design throws, and StoppedError
-/// when `options.control` stops it.
+/// number of threads. With the sustained ranking and `options.bound`, the
+/// pair bound orders the triples and skips those that cannot enter the top
+/// K (same layouts; the counts, also the same for any number of threads,
+/// say how many were skipped). Throws what check_design throws, and
+/// StoppedError when `options.control` stops it.
 DesignResult design(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
 
 /// The score of the scene's own three fixels with the same options (for

@@ -33,11 +33,14 @@ enum class FilterSite {
                   ///< computed on the exact path (fallback).
   kFeasibility,   ///< Fourier–Motzkin feasibility of a cone system over Q(√d) at an exact seated pose
                   ///< (J's pieces, and the J region's IN and OUT tests), run on enclosures first.
+  kDesignBound,   ///< Fixture design's pair bound: the sign of a triple's det W_n, and whether a
+                  ///< triple's score can still enter the top K (certified by an upper bound of its
+                  ///< bound; a fallback computes the bound exactly).
   kCount,
 };
 
 /// "lemke", "lemke tie", "ray test", "out test", "orientation", "cone", "membership", "jam test",
-/// "region test", "in magnitudes", "feasibility".
+/// "region test", "in magnitudes", "feasibility", "design bound".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and

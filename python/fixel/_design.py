@@ -102,7 +102,7 @@ def _mu_pair(mu, name):
     return text(mu, name), None
 
 
-def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs):
+def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive=False):
     if mu is None:  # as the CLI: the scene's largest fixel mu, else 1/10
         mus = [f["mu"] for f in scene.to_dict().get("fixels", [])]
         flat = [Fraction(m[-1] if isinstance(m, list) else m) for m in mus]
@@ -119,6 +119,8 @@ def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs):
         raise TypeError(f"top: {top!r} is not an int")
     if jobs is not None and (not isinstance(jobs, int) or isinstance(jobs, bool)):
         raise TypeError(f"jobs: {jobs!r} is not an int")
+    if not isinstance(exhaustive, bool):
+        raise TypeError(f"exhaustive: {exhaustive!r} is not a bool")
     return {
         "push": str(push),
         "resolution": text(resolution, "resolution"),
@@ -128,6 +130,7 @@ def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs):
         "gap": text(gap, "gap"),
         "top": top,
         "jobs": 0 if jobs is None else jobs,
+        "bound": not exhaustive,
     }
 
 
@@ -196,7 +199,9 @@ def _run_batch(scene_dict, candidates, options, first, count, fail_once=None):
 
 
 def _run_key(scene_dict, candidates, options):
-    blob = json.dumps([scene_dict, candidates, {k: v for k, v in options.items() if k != "jobs"}], sort_keys=True)
+    # Neither the threads nor the bound (unused by batches) change a batch's answer.
+    skip = ("jobs", "bound")
+    blob = json.dumps([scene_dict, candidates, {k: v for k, v in options.items() if k not in skip}], sort_keys=True)
     return hashlib.sha256(blob.encode()).hexdigest()[:16]
 
 
@@ -235,6 +240,7 @@ def design(
     progress=False,
     retries=2,
     timeout=10,
+    exhaustive=False,
     _fail_once=None,
 ):
     """The best `top` layouts of three fixels for `part` (a Scene, a scene
@@ -248,10 +254,13 @@ def design(
     address: batches of `batch_size` triples are mapped over the cluster
     with `retries`; `output` (a .jsonl path) records each finished batch and
     a rerun with the same file skips those; `progress=True` shows Dask's
-    progress bar. Returns a `Design`.
+    progress bar. exhaustive: score every triple on the thread pool
+    (default: in order of the pair bound, stopping when no triple left can
+    enter the top; the same layouts, docs/design.md). The cluster always
+    scores every triple. Returns a `Design`.
     """
     scene = _part(part)
-    options = _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs)
+    options = _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive)
     _fixel.design_check_options(scene._impl, options)
     cands = _candidates(scene, candidates, spacing)
     if client is None:

@@ -37,7 +37,7 @@ std::string text_item(const py::dict& d, const char* key, const char* fallback) 
   return py::str(d[key]);
 }
 
-// {"push", "resolution", "mu", "mu_hi", "pusher_mu", "gap", "top", "jobs"}.
+// {"push", "resolution", "mu", "mu_hi", "pusher_mu", "gap", "top", "jobs", "bound"}.
 DesignOptions options_of(const py::dict& d) {
   DesignOptions o;
   const std::string push = text_item(d, "push", "sustained");
@@ -50,6 +50,7 @@ DesignOptions options_of(const py::dict& d) {
   o.gap = parse_rational(text_item(d, "gap", "0"), "gap");
   o.top = d.contains("top") ? d["top"].cast<int>() : 5;
   o.jobs = d.contains("jobs") && !d["jobs"].is_none() ? d["jobs"].cast<int>() : 0;
+  o.bound = d.contains("bound") ? d["bound"].cast<bool>() : true;
   return o;
 }
 

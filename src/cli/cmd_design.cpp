@@ -20,21 +20,22 @@ struct DesignArgs {
   std::string scene_path, candidates = "boundary", spacing, push = "sustained", mu, pusher_mu, gap = "0",
                           resolution = "1/256", svg_path;
   int top = 5, jobs = 0;
-  bool json = false;
+  bool json = false, exhaustive = false;
   RunOptions run;
 };
 
 bool g_bar_shown = false;
 
-// A bar with the layouts done and the rate, rewriting one line of stderr.
-void show_design_progress(const char*, long done, long total, const char*) {
+// A bar with the units done (pairs, triples bounded, layouts) and the
+// rate, rewriting one line of stderr.
+void show_design_progress(const char* task, long done, long total, const char* unit) {
   const double seconds = std::chrono::duration<double>(RunControl::Clock::now() - run_control()->start).count();
   constexpr int kWidth = 30;
   const int filled = total > 0 ? static_cast<int>(kWidth * done / total) : 0;
   std::string bar(filled, '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\rdesign [%s] %ld/%ld layouts, %.1f layouts/s, %.0f s", bar.c_str(), done, total,
-               seconds > 0 ? done / seconds : 0.0, seconds);
+  std::fprintf(stderr, "\r%s [%s] %ld/%ld %s, %.1f %s/s, %.0f s\033[K", task, bar.c_str(), done, total, unit,
+               seconds > 0 ? done / seconds : 0.0, unit, seconds);
   std::fflush(stderr);
   g_bar_shown = true;
 }
@@ -61,6 +62,7 @@ DesignOptions design_options(const Scene& part, const DesignArgs& a) {
   o.gap = parse_rational(a.gap, "--gap");
   o.top = a.top;
   o.jobs = a.jobs;
+  o.bound = !a.exhaustive;
   o.control = run_control();
   return o;
 }
@@ -112,6 +114,9 @@ Command add_design(CLI::App& app) {
   cmd->add_option("--resolution", a->resolution, "Region resolution in curve parameter (default 1/256)");
   cmd->add_option("--top", a->top, "Report the K best layouts (default 5)");
   cmd->add_option("--jobs", a->jobs, "Threads (default 0: one per core); the result does not depend on it");
+  cmd->add_flag("--exhaustive", a->exhaustive,
+                "Score every triple (default: in order of the pair bound, stopping when none left can enter the top K; "
+                "the same layouts)");
   cmd->add_option("--svg", a->svg_path, "Draw the best three layouts and their regions to this SVG file");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   add_run_options(cmd, a->run);

@@ -65,14 +65,29 @@ def test_the_python_thread_pool_agrees_with_the_cli(tmp_path, polygon_candidates
 
 
 def test_dask_gives_the_thread_pools_ranking(client, polygon_candidates):
-    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, **SMALL)
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, exhaustive=True, **SMALL)
     dask = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
                         **SMALL)  # fmt: skip
     assert dask.ranking() == pool.ranking()
     assert len(pool.layouts) == 5
-    for key in ("triples", "singular", "no_form_closure", "j_empty", "regions"):
+    # Both score every triple (the cluster always does).
+    for key in ("triples", "singular", "no_form_closure", "j_empty", "regions", "bounded"):
         assert dask.stats[key] == pool.stats[key]
+    assert pool.stats["bounded"] == 0
     assert [l.step_score for l in dask.layouts] == [l.step_score for l in pool.layouts]
+
+
+def test_the_bound_skips_triples_and_keeps_the_exhaustive_ranking(polygon_candidates):
+    bounded = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, top=2, resolution="1/32")
+    every = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, top=2, resolution="1/32",
+                         exhaustive=True)  # fmt: skip
+    assert bounded.ranking() == every.ranking()
+    assert bounded.stats["bounded"] > 0 and every.stats["bounded"] == 0
+    s = bounded.stats
+    assert s["singular"] + s["no_form_closure"] + s["j_empty"] + s["regions"] + s["bounded"] == s["triples"]
+    assert s["singular"] == every.stats["singular"]
+    with pytest.raises(TypeError, match="exhaustive"):
+        fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, exhaustive="yes")
 
 
 def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, polygon_candidates, tmp_path):

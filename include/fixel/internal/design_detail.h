@@ -28,6 +28,10 @@ Vec2 unit_near(const Vec2& n, double* angle_error);
 // answers the region's interval pre-test too.
 std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& Wn);
 
+// The target "a · w > 0" alone, for a frictionless finger: the open
+// half-space of one row (the pair bound, design_bound.h).
+std::unique_ptr<RegionTarget> open_half_space_target(const VectorQ& a);
+
 enum class Verdict { kSingular, kNoFormClosure, kJEmpty, kScored };
 
 // Filters and scores one triple by the ranking push model. `joins`: those

@@ -56,9 +56,11 @@ RegionStatus status_at(RegionContext& ctx, const Boundary& b, const std::vector<
 // compute_region with the joins of the scene's outline (joins(b)) made
 // beforehand, or null to make them: a caller that runs many regions on one
 // outline (fixture design) makes them once. InternalError when their count
-// is not the outline's piece count.
+// is not the outline's piece count. With `locate` false, region.places and
+// outline_length (display: exact points at every end, arc lengths) stay
+// empty, for a caller that reads only the intervals.
 Region compute_region_joined(const Scene& scene, RegionTarget& target, const RegionOptions& options,
-                             const std::vector<Join>* joins);
+                             const std::vector<Join>* joins, bool locate = true);
 
 // Whether compute_region(scene, target, options) would have an interval
 // that is not OUT (IN, or PARTIAL at the resolution): the same subdivision

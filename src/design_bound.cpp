@@ -1,0 +1,240 @@
+// Fixture design's pair bound (include/fixel/internal/design_bound.h,
+// docs/theory.md §10.6): per pair of candidates, the stretches of the
+// outline on either side of the plane of their normal wrenches; per triple,
+// the length of the stretches its three rows of K share.
+#include "fixel/internal/design_bound.h"
+
+#include <map>
+#include <string>
+
+#include "fixel/error.h"
+#include "fixel/internal/design_detail.h"
+#include "fixel/internal/enclosed_plane.h"
+#include "fixel/internal/filtered.h"
+#include "fixel/internal/region_context.h"
+
+namespace fixel::internal {
+
+namespace {
+
+struct Span {  // cells [lo, hi) of piece `piece`'s grid
+  std::int32_t piece, lo, hi;
+};
+
+VectorQ cross(const VectorQ& a, const VectorQ& b) {
+  VectorQ c(3);
+  c << a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0];
+  return c;
+}
+
+FGen enclose(const VectorQ& v) { return {to_interval(v[0]), to_interval(v[1]), to_interval(v[2])}; }
+
+// Appends [lo, hi) to a list kept sorted, joining it to the last span when
+// they touch on one piece.
+void append(std::vector<Span>& list, const Span& s) {
+  if (!list.empty() && list.back().piece == s.piece && list.back().hi == s.lo)
+    list.back().hi = s.hi;
+  else
+    list.push_back(s);
+}
+
+}  // namespace
+
+struct PairBound::Impl {
+  struct Pair {
+    VectorQ c;                              // W_a × W_b
+    FGen c_enclosed;                        // its enclosure
+    std::array<std::vector<Span>, 2> side;  // [0]: c · w > 0 may hold; [1]: c · w < 0 may
+  };
+
+  const Scene& part;
+  Rational resolution;
+  int n = 0;
+  std::vector<VectorQ> wrench;
+  std::vector<FGen> wrench_enclosed;
+  std::vector<int> depth;      // per piece
+  std::vector<int> cls;        // per piece: its cell length's class
+  std::vector<Rational> unit;  // per class: a cell's parameter length over the outline's
+  std::vector<FI> unit_enclosed;
+  std::vector<Pair> pairs;
+
+  Impl(const Scene& p, const Rational& r) : part(p), resolution(r) {}
+
+  long pair_index(int a, int b) const {  // a < b
+    return static_cast<long>(a) * (2L * n - a - 1) / 2 + (b - a - 1);
+  }
+
+  // Sign of det W_n = W_f0 · (W_f1 × W_f2): the enclosures, else exact.
+  int det_sign(const std::array<int, 3>& f) const {
+    const Pair& p = pairs[pair_index(f[1], f[2])];
+    if (!force_exact()) {
+      int s;
+      {
+        Protect guard;
+        const FGen& w = wrench_enclosed[f[0]];
+        s = certain_sign(w[0] * p.c_enclosed[0] + w[1] * p.c_enclosed[1] + w[2] * p.c_enclosed[2]);
+      }
+      record_filter(FilterSite::kDesignBound, s != kUndecided);
+      if (s != kUndecided) return s;
+    }
+    return sign(wrench[f[0]].dot(p.c));
+  }
+
+  // K's rows a_k = −sign(det)·adj(W_n)_k (docs/theory.md §10.2): row 0 is
+  // ±(W_f1 × W_f2), row 1 ∓(W_f0 × W_f2), row 2 ±(W_f0 × W_f1).
+  std::array<const std::vector<Span>*, 3> rows_of(const std::array<int, 3>& f) const {
+    const int s = det_sign(f) > 0 ? -1 : 1;
+    const auto side = [&](int a, int b, int coefficient) {
+      return &pairs[pair_index(a, b)].side[coefficient > 0 ? 0 : 1];
+    };
+    return {side(f[1], f[2], s), side(f[0], f[2], -s), side(f[0], f[1], s)};
+  }
+
+  // Cells in all three of the triple's lists, per class.
+  template <class Add>
+  void shared_cells(const std::array<int, 3>& f, Add&& add) const {
+    const auto rows = rows_of(f);
+    const std::vector<Span>&A = *rows[0], &B = *rows[1], &C = *rows[2];
+    std::size_t i = 0, j = 0, k = 0;
+    while (i < A.size() && j < B.size() && k < C.size()) {
+      const Span &a = A[i], &b = B[j], &c = C[k];
+      // The latest start among the three; a list whose span ends before it advances.
+      const auto before = [](const Span& x, const Span& y) {
+        return x.piece < y.piece || (x.piece == y.piece && x.hi <= y.lo);
+      };
+      if (before(a, b) || before(a, c)) {
+        ++i;
+        continue;
+      }
+      if (before(b, a) || before(b, c)) {
+        ++j;
+        continue;
+      }
+      if (before(c, a) || before(c, b)) {
+        ++k;
+        continue;
+      }
+      // All three on one piece and pairwise overlapping: they share
+      // [max lo, min hi).
+      const std::int32_t lo = std::max(a.lo, std::max(b.lo, c.lo)), hi = std::min(a.hi, std::min(b.hi, c.hi));
+      add(cls[a.piece], static_cast<std::int64_t>(hi - lo));
+      if (a.hi == hi)
+        ++i;
+      else if (b.hi == hi)
+        ++j;
+      else
+        ++k;
+    }
+  }
+};
+
+PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cands, const Rational& resolution)
+    : impl_(std::make_unique<Impl>(part, std::max(resolution, total_length(boundary_of(part)) / kCells))) {
+  Impl& m = *impl_;
+  const Boundary& b = boundary_of(part);
+  m.n = static_cast<int>(cands.size());
+  for (const auto& c : cands) {
+    m.wrench.push_back(contact_wrench(sub(c.point, part.body.p_AoCm_A), c.normal, 3));
+    m.wrench_enclosed.push_back(enclose(m.wrench.back()));
+  }
+  const Rational total = total_length(b);
+  std::map<Rational, int> classes;
+  for (const auto& piece : b.pieces) {
+    const Rational width = piece.u1 - piece.u0;
+    // The subdivision's deepest level: at most log2(kCells) + 1, since the
+    // resolution is at least the outline's length over kCells.
+    int d = 0;
+    Rational cell = width;
+    while (cell > m.resolution) {
+      if (++d > 16) throw InternalError("design bound: a piece's grid is deeper than 16 levels");
+      cell /= 2;
+    }
+    m.depth.push_back(d);
+    const auto [it, fresh] = classes.emplace(cell / total, static_cast<int>(classes.size()));
+    if (fresh) {
+      m.unit.push_back(it->first);
+      m.unit_enclosed.push_back(to_interval(it->first));
+    }
+    m.cls.push_back(it->second);
+  }
+  m.pairs.resize(static_cast<std::size_t>(m.n) * (m.n - 1) / 2);
+  for (int a = 0; a < m.n; ++a)
+    for (int c = a + 1; c < m.n; ++c) {
+      auto& p = m.pairs[m.pair_index(a, c)];
+      p.c = cross(m.wrench[a], m.wrench[c]);
+      p.c_enclosed = enclose(p.c);
+    }
+}
+
+PairBound::~PairBound() = default;
+PairBound::PairBound(PairBound&&) noexcept = default;
+PairBound& PairBound::operator=(PairBound&&) noexcept = default;
+
+long PairBound::pair_count() const { return static_cast<long>(impl_->pairs.size()); }
+
+void PairBound::compute_pair(long index, const std::vector<Join>& joins) {
+  Impl& m = *impl_;
+  Impl::Pair& p = m.pairs.at(index);
+  if (p.c.isZero()) return;  // parallel wrenches: every triple with both is singular
+  const auto target = open_half_space_target(p.c);
+  RegionOptions options;
+  options.resolution = m.resolution;
+  options.pusher_mu = Rational(0);
+  options.merge = false;  // one interval per grid stretch of one piece
+  const Region region = compute_region_joined(m.part, *target, options, &joins, /*locate=*/false);
+  const auto& pieces = m.part.body.boundary->pieces;
+  std::size_t k = 0;
+  for (const auto& iv : region.intervals) {
+    if (iv.u0 == iv.u1) continue;  // a corner: no length
+    while (k < pieces.size() && !(pieces[k].curve == iv.curve && pieces[k].u0 <= iv.u0 && iv.u1 <= pieces[k].u1)) ++k;
+    if (k == pieces.size()) throw InternalError("design bound: a region interval lies in no piece of the outline");
+    const BezierPiece& piece = pieces[k];
+    const Rational scale = Rational(1L << m.depth[k]) / (piece.u1 - piece.u0);
+    const Rational lo = (iv.u0 - piece.u0) * scale, hi = (iv.u1 - piece.u0) * scale;
+    if (boost::multiprecision::denominator(lo) != 1 || boost::multiprecision::denominator(hi) != 1)
+      throw InternalError("design bound: a region interval is not on its piece's grid");
+    const Span span{static_cast<std::int32_t>(k), boost::multiprecision::numerator(lo).convert_to<std::int32_t>(),
+                    boost::multiprecision::numerator(hi).convert_to<std::int32_t>()};
+    if (iv.status != RegionStatus::kOut) append(p.side[0], span);
+    if (iv.status != RegionStatus::kIn) append(p.side[1], span);
+  }
+}
+
+bool PairBound::singular(const std::array<int, 3>& f) const { return impl_->det_sign(f) == 0; }
+
+double PairBound::upper(const std::array<int, 3>& f) const {
+  const Impl& m = *impl_;
+  Protect guard;
+  FI sum(0);
+  m.shared_cells(f, [&](int c, std::int64_t cells) { sum += FI(static_cast<double>(cells)) * m.unit_enclosed[c]; });
+  return sum.sup();
+}
+
+Rational PairBound::exact(const std::array<int, 3>& f) const {
+  const Impl& m = *impl_;
+  std::vector<std::int64_t> cells(m.unit.size(), 0);
+  m.shared_cells(f, [&](int c, std::int64_t count) { cells[c] += count; });
+  Rational sum(0);
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    if (cells[c]) sum += Rational(static_cast<long>(cells[c])) * m.unit[c];
+  return sum;
+}
+
+bool PairBound::can_enter(const std::array<int, 3>& f, long index, double upper, const Rational& kth_score,
+                          long kth_index) const {
+  if (!force_exact()) {
+    const bool below = Rational(upper) < kth_score;
+    record_filter(FilterSite::kDesignBound, below);
+    if (below) return false;
+  }
+  const Rational b = exact(f);
+  return b > kth_score || (b == kth_score && index < kth_index);
+}
+
+bool PairBound::none_can_enter(double upper, const Rational& kth_score, long left) const {
+  if (force_exact() || !(Rational(upper) < kth_score)) return false;
+  record_filter(FilterSite::kDesignBound, left, 0);
+  return true;
+}
+
+}  // namespace fixel::internal

@@ -1,0 +1,237 @@
+// Fixture design's pair bound (include/fixel/internal/design_bound.h): it
+// is at least every triple's score, it counts every cell where K's rows
+// hold, and the bounded search reports the exhaustive search's layouts.
+#include "fixel/internal/design_bound.h"
+
+#include <gtest/gtest.h>
+
+#include "fixel/design.h"
+#include "fixel/filter.h"
+#include "fixel/internal/design_detail.h"
+#include "fixel/internal/region_runs.h"
+#include "test_util.h"
+
+namespace fixel {
+namespace {
+
+using internal::PairBound;
+using test::scene_file;
+
+// Every other of the part's 24 default candidates: 12, 220 triples.
+std::vector<DesignCandidate> every_other(const Scene& part) {
+  std::vector<DesignCandidate> all = boundary_candidates(part, std::nullopt), out;
+  for (std::size_t k = 0; k < all.size(); k += 2) out.push_back(all[k]);
+  return out;
+}
+
+PairBound bound_of(const Scene& part, const std::vector<DesignCandidate>& c, const DesignOptions& o) {
+  PairBound b(part, c, o.resolution);
+  const auto joins = internal::joins(*part.body.boundary);
+  for (long p = 0; p < b.pair_count(); ++p) b.compute_pair(p, joins);
+  return b;
+}
+
+// K's rows a_k (docs/theory.md §10.2) of three normal wrenches, from the
+// definition: −sign(det W_n) times the rows of adj(W_n).
+std::array<VectorQ, 3> k_rows(const std::array<VectorQ, 3>& W) {
+  auto cross = [](const VectorQ& a, const VectorQ& b) {
+    VectorQ c(3);
+    c << a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0];
+    return c;
+  };
+  const Rational det = W[0].dot(cross(W[1], W[2]));
+  std::array<VectorQ, 3> rows;
+  for (int i = 0; i < 3; ++i) rows[i] = (det > 0 ? -1 : 1) * cross(W[(i + 1) % 3], W[(i + 2) % 3]);
+  return rows;
+}
+
+GTEST_TEST(PairBound, IsAtLeastEveryTriplesSustainedScoreAndItsUpperEndAtLeastTheBound) {
+  for (const char* name : {"polygon", "blob", "fig6"}) {
+    const Scene part = scene_file(name);
+    const auto c = every_other(part);
+    const long n = static_cast<long>(c.size());
+    const auto joins = internal::joins(*part.body.boundary);
+    const Rational total = internal::total_length(*part.body.boundary);
+    for (const Rational& pusher_mu : {Rational(0), Rational(1, 5)}) {
+      DesignOptions o;
+      o.pusher_mu = pusher_mu;
+      const PairBound b = bound_of(part, c, o);
+      int scored = 0, informative = 0;
+      for (long index = 0; index < triple_count(n); ++index) {
+        const auto f = triple_at(n, index);
+        DesignLayout layout;
+        const internal::Verdict v = internal::evaluate(part, c, o, total, f, layout, &joins);
+        ASSERT_EQ(b.singular(f), v == internal::Verdict::kSingular) << name << " triple " << index;
+        if (v == internal::Verdict::kSingular) continue;
+        const Rational exact = b.exact(f);
+        EXPECT_LE(exact, Rational(1));
+        EXPECT_GE(Rational(b.upper(f)), exact) << name << " triple " << index;
+        if (v == internal::Verdict::kNoFormClosure) continue;
+        ++scored;
+        EXPECT_GE(exact, layout.score) << name << " triple " << index << " mu_p " << pusher_mu;
+        informative += exact < 1;
+      }
+      EXPECT_GE(scored, 50) << name;
+      EXPECT_GE(informative, scored / 2) << name;  // the bound says something about most
+    }
+  }
+}
+
+// A second method: at the midpoint of every cell of the pairs' grid, the
+// exact push wrench and K's rows from their definition. Where all three
+// rows are positive there, each row's region cannot have found that cell
+// OUT, so the bound counts it.
+GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideK) {
+  for (const char* name : {"polygon", "example2_rounded", "blob"}) {
+    const Scene part = scene_file(name);
+    const auto c = every_other(part);
+    const long n = static_cast<long>(c.size());
+    DesignOptions o;
+    const PairBound b = bound_of(part, c, o);
+    const Boundary& outline = *part.body.boundary;
+    const Rational total = internal::total_length(outline);
+    const Rational resolution = std::max(o.resolution, total / PairBound::kCells);
+    int checked = 0;
+    for (long index = 0; index < triple_count(n); index += 7) {
+      const auto f = triple_at(n, index);
+      if (b.singular(f)) continue;
+      std::array<VectorQ, 3> W;
+      for (int i = 0; i < 3; ++i) W[i] = contact_wrench(sub(c[f[i]].point, part.body.p_AoCm_A), c[f[i]].normal, 3);
+      const auto rows = k_rows(W);
+      Rational inside = 0;
+      for (const auto& piece : outline.pieces) {
+        Rational cell = piece.u1 - piece.u0;
+        int cells = 1;
+        while (cell > resolution) cell /= 2, cells *= 2;
+        for (int k = 0; k < cells; ++k) {
+          const Rational s = (Rational(k) + Rational(1, 2)) / cells;  // the cell's midpoint, piece-local
+          const Vec2 t = piece.derivative(s);
+          if (t.x == 0 && t.y == 0) continue;
+          const VectorQ w = contact_wrench(sub(piece.point(s), part.body.p_AoCm_A), Vec2{-t.y, t.x}, 3);
+          if (rows[0].dot(w) > 0 && rows[1].dot(w) > 0 && rows[2].dot(w) > 0) inside += cell / total;
+        }
+      }
+      EXPECT_GE(b.exact(f), inside) << name << " triple " << index;
+      checked += inside > 0;
+    }
+    EXPECT_GE(checked, 5) << name;
+  }
+}
+
+void expect_same_layouts(const DesignResult& a, const DesignResult& b, const std::string& what) {
+  ASSERT_EQ(a.layouts.size(), b.layouts.size()) << what;
+  for (std::size_t k = 0; k < a.layouts.size(); ++k) {
+    const DesignLayout &x = a.layouts[k], &y = b.layouts[k];
+    EXPECT_EQ(x.fixels, y.fixels) << what << " #" << k;
+    EXPECT_EQ(x.index, y.index) << what << " #" << k;
+    EXPECT_EQ(x.score, y.score) << what << " #" << k;
+    EXPECT_EQ(x.sustained_score, y.sustained_score) << what << " #" << k;
+    EXPECT_EQ(x.sustained_empty, y.sustained_empty) << what << " #" << k;
+    EXPECT_EQ(x.step_score, y.step_score) << what << " #" << k;
+    EXPECT_EQ(x.note, y.note) << what << " #" << k;
+  }
+  EXPECT_EQ(a.no_layout, b.no_layout) << what;
+}
+
+GTEST_TEST(Design, TheBoundedSearchReportsTheLayoutsOfScoringEveryTriple) {
+  int skipped_somewhere = 0;
+  for (const char* name : {"polygon", "example2_rounded", "blob"}) {
+    const Scene part = scene_file(name);
+    const std::vector<DesignCandidate> c = every_other(part);
+    struct Case {
+      int top;
+      Rational pusher_mu, mu;
+      std::optional<Rational> mu_hi;
+    };
+    for (const Case& kase : {Case{5, 0, Rational(1, 10), {}}, Case{1, 0, Rational(1, 10), {}},
+                             Case{2, Rational(1, 5), Rational(1, 10), {}}, Case{3, 0, 0, Rational(1, 5)}}) {
+      DesignOptions o;
+      o.resolution = Rational(1, 32);
+      o.top = kase.top;
+      o.pusher_mu = kase.pusher_mu;
+      o.mu = kase.mu;
+      o.mu_hi = kase.mu_hi;
+      o.jobs = 1;
+      const DesignResult bounded = design(part, c, o);
+      o.jobs = 2;
+      const DesignResult bounded2 = design(part, c, o);
+      o.bound = false;
+      const DesignResult every = design(part, c, o);
+      const std::string what = std::string(name) + " top " + std::to_string(kase.top);
+      expect_same_layouts(bounded, every, what);
+      expect_same_layouts(bounded2, every, what + " (2 threads)");
+      const DesignStats &s = bounded.stats, &s2 = bounded2.stats;
+      EXPECT_EQ(s.singular + s.no_form_closure + s.j_empty + s.regions + s.bounded, s.triples) << what;
+      EXPECT_EQ(s.singular, every.stats.singular) << what;
+      EXPECT_EQ(every.stats.bounded, 0) << what;
+      // The counts do not depend on the threads either.
+      EXPECT_EQ(std::make_tuple(s.no_form_closure, s.j_empty, s.regions, s.bounded),
+                std::make_tuple(s2.no_form_closure, s2.j_empty, s2.regions, s2.bounded))
+          << what;
+      skipped_somewhere += s.bounded > 0;
+    }
+  }
+  EXPECT_GE(skipped_somewhere, 6);
+}
+
+// The rule at the K-th layout, directly: a triple whose exact bound equals
+// the K-th score may still tie it, and then enters only with an earlier
+// index; an upper end equal to the K-th score proves nothing about the
+// triples after it.
+GTEST_TEST(PairBound, ATripleWhoseBoundEqualsTheKthScoreEntersOnlyWithAnEarlierIndex) {
+  const Scene part = scene_file("polygon");
+  const auto c = every_other(part);
+  const PairBound b = bound_of(part, c, DesignOptions{});
+  const long n = static_cast<long>(c.size());
+  int tested = 0;
+  for (long index = 1; index + 1 < triple_count(n) && tested < 20; index += 5) {
+    const auto f = triple_at(n, index);
+    if (b.singular(f)) continue;
+    const Rational exact = b.exact(f);
+    if (exact == 0) continue;
+    const double upper = b.upper(f);
+    for (const bool forced : {false, true}) {
+      const ForceExactScope scope(forced);
+      EXPECT_TRUE(b.can_enter(f, index, upper, exact, index + 1));
+      EXPECT_FALSE(b.can_enter(f, index, upper, exact, index - 1));
+      EXPECT_TRUE(b.can_enter(f, index, upper, exact / 2, index - 1));
+      EXPECT_FALSE(b.can_enter(f, index, upper, exact * 2, index + 1));
+      EXPECT_FALSE(b.none_can_enter(upper, Rational(upper), 1));
+      EXPECT_FALSE(b.none_can_enter(upper, exact, 1));
+      // Below the upper end by a little: proved only on the filtered path.
+      EXPECT_EQ(b.none_can_enter(upper, Rational(upper) + Rational(1, 1 << 30), 1), !forced);
+    }
+    ++tested;
+  }
+  EXPECT_EQ(tested, 20);
+}
+
+GTEST_TEST(Design, TheBoundedSearchSkipsTheSameTriplesWithTheExactPathForced) {
+  const Scene part = scene_file("polygon");
+  std::vector<DesignCandidate> all = boundary_candidates(part, std::nullopt), c;
+  for (std::size_t k = 0; k < all.size(); k += 3) c.push_back(all[k]);
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  o.top = 2;
+  o.jobs = 1;
+  reset_filter_stats();
+  const DesignResult filtered = design(part, c, o);
+  const FilterCounts counted = filter_stats().at(FilterSite::kDesignBound);
+  DesignResult exact;
+  {
+    const ForceExactScope forced;
+    exact = design(part, c, o);
+  }
+  expect_same_layouts(filtered, exact, "forced exact");
+  const DesignStats &s = filtered.stats, &t = exact.stats;
+  EXPECT_EQ(std::make_tuple(s.singular, s.no_form_closure, s.j_empty, s.regions, s.bounded),
+            std::make_tuple(t.singular, t.no_form_closure, t.j_empty, t.regions, t.bounded));
+  EXPECT_GT(s.bounded, 0);
+  // Every skip was certified by the upper ends; every determinant sign was
+  // decided by its enclosure except at exact zeros (the singular triples).
+  EXPECT_GT(counted.certified, s.bounded);
+  EXPECT_LE(counted.fallbacks, s.singular + s.regions + s.j_empty + s.no_form_closure);
+}
+
+}  // namespace
+}  // namespace fixel
