@@ -117,10 +117,10 @@ int compare_bound(const std::string& name, const fixel::Scene& part, const std::
   std::sort(bounded_s.begin(), bounded_s.end());
   std::sort(every_s.begin(), every_s.end());
   const auto& s = bounded.stats;
-  std::cout << name << ": " << c.size() << " candidates, " << s.triples << " triples, top " << o.top
-            << ", resolution " << resolution << ", " << jobs << " threads\n"
-            << std::fixed << std::setprecision(3) << "bounded: median " << bounded_s[1] << " s (" << bounded_s[0]
-            << "–" << bounded_s[2] << "); scored " << s.no_form_closure + s.j_empty + s.regions << ", never scored "
+  std::cout << name << ": " << c.size() << " candidates, " << s.triples << " triples, top " << o.top << ", resolution "
+            << resolution << ", " << jobs << " threads\n"
+            << std::fixed << std::setprecision(3) << "bounded: median " << bounded_s[1] << " s (" << bounded_s[0] << "–"
+            << bounded_s[2] << "); scored " << s.no_form_closure + s.j_empty + s.regions << ", never scored "
             << s.bounded << ", singular " << s.singular << "\n"
             << "every triple: median " << every_s[1] << " s (" << every_s[0] << "–" << every_s[2] << "); scored "
             << every.stats.no_form_closure + every.stats.j_empty + every.stats.regions << "\n"

@@ -33,7 +33,6 @@ class PairBound {
   PairBound(const Scene& part, const std::vector<DesignCandidate>& candidates, const Rational& resolution);
   static constexpr int kCells = 256;
 
-
   long pair_count() const;
   // Computes pair p (a < b, lexicographic) by one region against its
   // half-space; safe to call for distinct p from several threads. `joins`:
