@@ -114,18 +114,70 @@ struct Ranked {
   double upper;  // ≥ the triple's exact bound
 };
 
-// The sustained ranking with the pair bound (docs/design.md, "The bound"):
-// every pair's half-space region, every triple's bound, then the triples in
-// order of decreasing bound, kChunk at a time, until none left can enter
-// the top K. False (nothing done) when there are too many triples to keep a
-// bound for each: the caller then scores every triple.
+// Scores the triples `chosen` in parallel and merges them, in the order
+// given, into `top` (the best K) and the counts.
+void score_into(const std::vector<long>& chosen, const Scene& part, const std::vector<DesignCandidate>& cands,
+                const DesignOptions& o, const Rational& total, const std::vector<internal::Join>& joins,
+                tbb::task_arena& arena, std::vector<DesignLayout>& top, DesignStats& stats) {
+  const long n = static_cast<long>(cands.size());
+  std::vector<DesignLayout> layouts(chosen.size());
+  std::vector<Verdict> verdicts(chosen.size());
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chosen.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                          layouts[k].fixels = triple_at(n, chosen[k]);
+                          layouts[k].index = chosen[k];
+                          verdicts[k] = evaluate(part, cands, o, total, layouts[k].fixels, layouts[k], &joins);
+                        }
+                      });
+  });
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    switch (verdicts[k]) {
+      case Verdict::kSingular:
+        ++stats.singular;
+        break;
+      case Verdict::kNoFormClosure:
+        ++stats.no_form_closure;
+        break;
+      case Verdict::kJEmpty:
+        ++stats.j_empty;
+        top.push_back(std::move(layouts[k]));
+        break;
+      case Verdict::kScored:
+        ++stats.regions;
+        top.push_back(std::move(layouts[k]));
+        break;
+    }
+  }
+  rank_layouts(top, o.top);
+}
+
+// The sustained ranking with the pair bound (docs/design.md, "The bound").
+// A pilot first: kChunk triples spread evenly over the indices are scored.
+// If none of them scores above 0, the K-th score may well stay 0, and then
+// the bound could skip only triples whose bound is exactly 0: not worth its
+// pair regions, so the caller scores every triple (false is returned). Otherwise every pair's half-space region, every
+// other triple's bound, then those triples in order of decreasing bound, kChunk at a time, until none left can enter
+// the top K. False too when there are too many triples to keep a bound for each.
 bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
                  tbb::task_arena& arena, DesignResult& result) {
   const long n = static_cast<long>(cands.size()), T = triple_count(n);
-  if (T > kMaxBoundedTriples) return false;
-  internal::PairBound bound(part, cands, o.resolution);
+  if (T > kMaxBoundedTriples || T <= kChunk) return false;
   const std::vector<internal::Join> joins = internal::joins(boundary_of(part));
   const Rational total = total_length(boundary_of(part));
+  DesignStats& stats = result.stats;
+  std::vector<long> pilot;
+  for (long k = 0; k < kChunk; ++k) pilot.push_back(k * T / kChunk);
+  std::vector<DesignLayout> top;
+  DesignStats pilot_stats;
+  score_into(pilot, part, cands, o, total, joins, arena, top, pilot_stats);
+  if (std::none_of(top.begin(), top.end(), [](const DesignLayout& l) { return l.score > 0; })) return false;
+  stats.singular = pilot_stats.singular;
+  stats.no_form_closure = pilot_stats.no_form_closure;
+  stats.j_empty = pilot_stats.j_empty;
+  stats.regions = pilot_stats.regions;
+  internal::PairBound bound(part, cands, o.resolution);
   SharedPoll poll_shared(o.control);
   std::atomic<long> done{0};
   const long pairs = bound.pair_count();
@@ -137,7 +189,7 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
       }
     });
   });
-  // Each triple's bound, in batches of consecutive indices (kept in index order).
+  // Each other triple's bound, in batches of consecutive indices (kept in index order).
   const long batches = (T + kBoundBatch - 1) / kBoundBatch;
   std::vector<std::vector<Ranked>> ranked_in(batches);
   std::vector<long> singular_in(batches, 0);
@@ -147,18 +199,21 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
       for (long b = r.begin(); b != r.end(); ++b) {
         const long first = b * kBoundBatch, count = std::min(kBoundBatch, T - first);
         std::array<int, 3> f = triple_at(n, first);
+        auto next_pilot = std::lower_bound(pilot.begin(), pilot.end(), first);
         for (long k = 0; k < count; ++k, advance(f, n)) {
-          if (bound.singular(f))
+          if (next_pilot != pilot.end() && *next_pilot == first + k) {
+            ++next_pilot;  // scored already
+          } else if (bound.singular(f)) {
             ++singular_in[b];
-          else
+          } else {
             ranked_in[b].push_back({first + k, bound.upper(f)});
+          }
         }
         poll_shared("design: triple bounds", done += count, T, "triples");
       }
     });
   });
   std::vector<Ranked> ranked;
-  DesignStats& stats = result.stats;
   for (long b = 0; b < batches; ++b) {
     stats.singular += singular_in[b];
     ranked.insert(ranked.end(), ranked_in[b].begin(), ranked_in[b].end());
@@ -169,12 +224,12 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
       return a.upper != b.upper ? a.upper > b.upper : a.index < b.index;
     });
   });
-  std::vector<DesignLayout> top;
-  long evaluated = 0;
+  long scored = kChunk;
   for (std::size_t pos = 0; pos < ranked.size(); pos += kChunk) {
-    poll(o.control, "design", stats.singular + static_cast<long>(pos), T, "layouts");
+    poll(o.control, "design", stats.singular + scored + static_cast<long>(pos), T, "layouts");
     const bool full = static_cast<int>(top.size()) == o.top;
-    // Every triple left has an upper end at most this one's: none can enter.
+    // Every triple left has an upper end at most this one's: when it is
+    // below the K-th score, none can enter.
     if (full && bound.none_can_enter(ranked[pos].upper, top.back().score, static_cast<long>(ranked.size() - pos)))
       break;
     std::vector<long> chosen;
@@ -182,39 +237,15 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
       if (!full || bound.can_enter(triple_at(n, ranked[k].index), ranked[k].index, ranked[k].upper, top.back().score,
                                    top.back().index))
         chosen.push_back(ranked[k].index);
-    std::vector<DesignLayout> layouts(chosen.size());
-    std::vector<Verdict> verdicts(chosen.size());
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chosen.size(), 1),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t k = r.begin(); k != r.end(); ++k) {
-                            layouts[k].fixels = triple_at(n, chosen[k]);
-                            layouts[k].index = chosen[k];
-                            verdicts[k] = evaluate(part, cands, o, total, layouts[k].fixels, layouts[k], &joins);
-                          }
-                        });
-    });
-    evaluated += static_cast<long>(chosen.size());
-    for (std::size_t k = 0; k < chosen.size(); ++k) {
-      switch (verdicts[k]) {
-        case Verdict::kSingular:  // the bound's determinant said otherwise
-          throw InternalError("design: triple " + std::to_string(chosen[k]) + " is singular after all");
-        case Verdict::kNoFormClosure:
-          ++stats.no_form_closure;
-          break;
-        case Verdict::kJEmpty:
-          ++stats.j_empty;
-          top.push_back(std::move(layouts[k]));
-          break;
-        case Verdict::kScored:
-          ++stats.regions;
-          top.push_back(std::move(layouts[k]));
-          break;
-      }
-    }
-    rank_layouts(top, o.top);
+    DesignStats chunk;
+    score_into(chosen, part, cands, o, total, joins, arena, top, chunk);
+    if (chunk.singular) throw InternalError("design: a triple the bound found regular is singular");
+    stats.no_form_closure += chunk.no_form_closure;
+    stats.j_empty += chunk.j_empty;
+    stats.regions += chunk.regions;
+    scored += static_cast<long>(chosen.size());
   }
-  stats.bounded = T - stats.singular - evaluated;
+  stats.bounded = T - stats.singular - stats.no_form_closure - stats.j_empty - stats.regions;
   result.layouts = std::move(top);
   return true;
 }

@@ -174,6 +174,30 @@ GTEST_TEST(Design, TheBoundedSearchReportsTheLayoutsOfScoringEveryTriple) {
   EXPECT_GE(skipped_somewhere, 6);
 }
 
+// On nonunique_part every layout scores 0 (J is empty, or its region has no
+// IN stretch): the pilot (32 triples spread over the indices) scores
+// nothing above 0, and the search then scores every triple rather than pay
+// for the pair regions.
+GTEST_TEST(Design, APartWhosePilotScoresNothingAboveZeroIsSearchedWithoutTheBound) {
+  const Scene part = scene_file("nonunique_part");
+  std::vector<DesignCandidate> all = boundary_candidates(part, std::nullopt), c;
+  for (std::size_t k = 0; k < all.size(); k += 3) c.push_back(all[k]);  // 8 candidates, 56 triples
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  o.jobs = 1;
+  reset_filter_stats();
+  const DesignResult bounded = design(part, c, o);
+  const FilterCounts counted = filter_stats().at(FilterSite::kDesignBound);
+  EXPECT_EQ(counted.certified + counted.fallbacks, 0);  // no triple was bounded
+  o.bound = false;
+  const DesignResult every = design(part, c, o);
+  expect_same_layouts(bounded, every, "nonunique_part");
+  EXPECT_EQ(bounded.stats.bounded, 0);
+  EXPECT_EQ(bounded.stats.j_empty, every.stats.j_empty);
+  ASSERT_FALSE(every.layouts.empty());
+  EXPECT_EQ(every.layouts.front().score, 0);  // the best scores 0, so every layout does
+}
+
 // The rule at the K-th layout, directly: a triple whose exact bound equals
 // the K-th score may still tie it, and then enters only with an earlier
 // index; an upper end equal to the K-th score proves nothing about the
