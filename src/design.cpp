@@ -57,6 +57,25 @@ void advance(std::array<int, 3>& f, long n) {
   }
 }
 
+// Counts a scored triple by its verdict; a ranked one joins `best`.
+void tally(Verdict verdict, DesignLayout&& layout, std::vector<DesignLayout>& best, DesignStats& stats) {
+  switch (verdict) {
+    case Verdict::kSingular:
+      ++stats.singular;
+      return;
+    case Verdict::kNoFormClosure:
+      ++stats.no_form_closure;
+      return;
+    case Verdict::kJEmpty:
+      ++stats.j_empty;
+      break;
+    case Verdict::kScored:
+      ++stats.regions;
+      break;
+  }
+  best.push_back(std::move(layout));
+}
+
 template <class OnLayout>
 std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignCandidate>& cands,
                                     const DesignOptions& o, long first, long count, DesignStats& stats,
@@ -70,22 +89,7 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
     DesignLayout layout;
     layout.fixels = f;
     layout.index = first + k;
-    switch (evaluate(part, cands, o, total, f, layout, &joins)) {
-      case Verdict::kSingular:
-        ++stats.singular;
-        break;
-      case Verdict::kNoFormClosure:
-        ++stats.no_form_closure;
-        break;
-      case Verdict::kJEmpty:
-        ++stats.j_empty;
-        best.push_back(std::move(layout));
-        break;
-      case Verdict::kScored:
-        ++stats.regions;
-        best.push_back(std::move(layout));
-        break;
-    }
+    tally(evaluate(part, cands, o, total, f, layout, &joins), std::move(layout), best, stats);
     if (static_cast<int>(best.size()) > 2 * o.top) rank_layouts(best, o.top);
     on_layout();
     if (k + 1 < count) advance(f, n);
@@ -132,34 +136,19 @@ void score_into(const std::vector<long>& chosen, const Scene& part, const std::v
                         }
                       });
   });
-  for (std::size_t k = 0; k < chosen.size(); ++k) {
-    switch (verdicts[k]) {
-      case Verdict::kSingular:
-        ++stats.singular;
-        break;
-      case Verdict::kNoFormClosure:
-        ++stats.no_form_closure;
-        break;
-      case Verdict::kJEmpty:
-        ++stats.j_empty;
-        top.push_back(std::move(layouts[k]));
-        break;
-      case Verdict::kScored:
-        ++stats.regions;
-        top.push_back(std::move(layouts[k]));
-        break;
-    }
-  }
+  for (std::size_t k = 0; k < chosen.size(); ++k) tally(verdicts[k], std::move(layouts[k]), top, stats);
   rank_layouts(top, o.top);
 }
 
 // The sustained ranking with the pair bound (docs/design.md, "The bound").
 // A pilot first: kChunk triples spread evenly over the indices are scored.
 // If none of them scores above 0, the K-th score may well stay 0, and then
-// the bound could skip only triples whose bound is exactly 0: not worth its
-// pair regions, so the caller scores every triple (false is returned). Otherwise every pair's half-space region, every
-// other triple's bound, then those triples in order of decreasing bound, kChunk at a time, until none left can enter
-// the top K. False too when there are too many triples to keep a bound for each.
+// the bound could skip only triples whose bound is exactly 0: not worth
+// its pair regions, so the caller scores every triple (false is returned).
+// Otherwise every pair's half-space region, every other triple's bound,
+// then those triples in order of decreasing bound, kChunk at a time, until
+// none left can enter the top K. False too when there are too many triples
+// to keep a bound for each.
 bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
                  tbb::task_arena& arena, DesignResult& result) {
   const long n = static_cast<long>(cands.size()), T = triple_count(n);
@@ -224,9 +213,9 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
       return a.upper != b.upper ? a.upper > b.upper : a.index < b.index;
     });
   });
-  long scored = kChunk;
   for (std::size_t pos = 0; pos < ranked.size(); pos += kChunk) {
-    poll(o.control, "design", stats.singular + scored + static_cast<long>(pos), T, "layouts");
+    // Triples done: the singular ones, the pilot's and those ranked before pos.
+    poll(o.control, "design", stats.singular + kChunk + static_cast<long>(pos), T, "layouts");
     const bool full = static_cast<int>(top.size()) == o.top;
     // Every triple left has an upper end at most this one's: when it is
     // below the K-th score, none can enter.
@@ -243,7 +232,6 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
     stats.no_form_closure += chunk.no_form_closure;
     stats.j_empty += chunk.j_empty;
     stats.regions += chunk.regions;
-    scored += static_cast<long>(chosen.size());
   }
   stats.bounded = T - stats.singular - stats.no_form_closure - stats.j_empty - stats.regions;
   result.layouts = std::move(top);

@@ -7,9 +7,9 @@
 // A sustained-region IN point needs a frictionless push w strictly inside
 // K = −cone(W_n): a_k · w > 0 for K's three rows, and each row is ±W_a × W_b
 // for a pair {a, b} of the triple. Per pair, one region against the open
-// half-space c · w > 0 (c = W_a × W_b), at the design's resolution, gives the
-// stretches of the outline where c · w > 0 may hold (IN or PARTIAL) and
-// where c · w < 0 may (OUT or PARTIAL). A triple's bound is the parameter
+// half-space c · w > 0 (c = W_a × W_b), on a grid coarser than the score's
+// (below), gives the stretches of the outline where c · w > 0 may hold (IN
+// or PARTIAL) and where c · w < 0 may (OUT or PARTIAL). A triple's bound is the parameter
 // length of the intersection of its three rows' stretches, over the
 // outline's: an exact rational, at least the triple's sustained score.
 
