@@ -166,7 +166,7 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
   stats.no_form_closure = pilot_stats.no_form_closure;
   stats.j_empty = pilot_stats.j_empty;
   stats.regions = pilot_stats.regions;
-  internal::PairBound bound(part, cands, o.resolution);
+  internal::PairBound bound(part, cands, o);
   SharedPoll poll_shared(o.control);
   std::atomic<long> done{0};
   const long pairs = bound.pair_count();

@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/design_detail.h"
 #include "fixel/internal/enclosed_plane.h"
@@ -38,6 +39,22 @@ void append(std::vector<Span>& list, const Span& s) {
     list.push_back(s);
 }
 
+// The cells of `list` not in `cut` (both sorted, disjoint runs).
+std::vector<Span> minus(const std::vector<Span>& list, const std::vector<Span>& cut) {
+  std::vector<Span> out;
+  std::size_t j = 0;
+  for (Span s : list) {
+    while (j < cut.size() && (cut[j].piece < s.piece || (cut[j].piece == s.piece && cut[j].hi <= s.lo))) ++j;
+    for (std::size_t k = j; k < cut.size() && cut[k].piece == s.piece && cut[k].lo < s.hi; ++k) {
+      if (cut[k].lo > s.lo) append(out, {s.piece, s.lo, cut[k].lo});
+      s.lo = std::max(s.lo, cut[k].hi);
+      if (s.lo >= s.hi) break;
+    }
+    if (s.lo < s.hi) append(out, s);
+  }
+  return out;
+}
+
 }  // namespace
 
 struct PairBound::Impl {
@@ -49,8 +66,10 @@ struct PairBound::Impl {
 
   const Scene& part;
   Rational resolution;
+  Rational mu;  // the fixels' friction J is judged at
   int n = 0;
   std::vector<VectorQ> wrench;
+  std::vector<VectorQ> tangent_wrench;  // (t, r ⊗ t), t the normal turned +90°
   std::vector<FGen> wrench_enclosed;
   std::vector<int> depth;      // per piece
   std::vector<int> cls;        // per piece: its cell length's class
@@ -58,11 +77,14 @@ struct PairBound::Impl {
   std::vector<FI> unit_enclosed;
   std::vector<Pair> pairs;
 
-  Impl(const Scene& p, const Rational& r) : part(p), resolution(r) {}
+  Impl(const Scene& p, const Rational& r, const Rational& m) : part(p), resolution(r), mu(m) {}
 
   long pair_index(int a, int b) const {  // a < b
     return static_cast<long>(a) * (2L * n - a - 1) / 2 + (b - a - 1);
   }
+  std::vector<std::pair<int, int>> pair_of;  // index → (a, b)
+  int first_of(long p) const { return pair_of[p].first; }
+  int second_of(long p) const { return pair_of[p].second; }
 
   // Sign of det W_n = W_f0 · (W_f1 × W_f2): the enclosures, else exact.
   int det_sign(const std::array<int, 3>& f) const {
@@ -128,14 +150,17 @@ struct PairBound::Impl {
   }
 };
 
-PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cands, const Rational& resolution)
-    : impl_(std::make_unique<Impl>(part, std::max(resolution, total_length(boundary_of(part)) / kCells))) {
+PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& options)
+    : impl_(std::make_unique<Impl>(part, std::max(options.resolution, total_length(boundary_of(part)) / kCells),
+                                   options.mu_hi.value_or(options.mu))) {
   Impl& m = *impl_;
   const Boundary& b = boundary_of(part);
   m.n = static_cast<int>(cands.size());
   for (const auto& c : cands) {
-    m.wrench.push_back(contact_wrench(sub(c.point, part.body.p_AoCm_A), c.normal, 3));
+    const Vec2 r = sub(c.point, part.body.p_AoCm_A);
+    m.wrench.push_back(contact_wrench(r, c.normal, 3));
     m.wrench_enclosed.push_back(enclose(m.wrench.back()));
+    m.tangent_wrench.push_back(contact_wrench(r, Vec2{-c.normal.y, c.normal.x}, 3));
   }
   const Rational total = total_length(b);
   std::map<Rational, int> classes;
@@ -160,6 +185,7 @@ PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cand
   m.pairs.resize(static_cast<std::size_t>(m.n) * (m.n - 1) / 2);
   for (int a = 0; a < m.n; ++a)
     for (int c = a + 1; c < m.n; ++c) {
+      m.pair_of.emplace_back(a, c);
       auto& p = m.pairs[m.pair_index(a, c)];
       p.c = cross(m.wrench[a], m.wrench[c]);
       p.c_enclosed = enclose(p.c);
@@ -172,16 +198,18 @@ PairBound& PairBound::operator=(PairBound&&) noexcept = default;
 
 long PairBound::pair_count() const { return static_cast<long>(impl_->pairs.size()); }
 
-void PairBound::compute_pair(long index, const std::vector<Join>& joins) {
-  Impl& m = *impl_;
-  Impl::Pair& p = m.pairs.at(index);
-  if (p.c.isZero()) return;  // parallel wrenches: every triple with both is singular
-  const auto target = open_half_space_target(p.c);
+namespace {
+
+// The region of a frictionless finger against `target` on the grid, as
+// runs of cells: `in` gets the IN ones, `not_in` the others, `not_out` the
+// ones that are not OUT.
+void grid_region(const PairBound::Impl& m, RegionTarget& target, const std::vector<Join>& joins,
+                 std::vector<Span>* not_out, std::vector<Span>* not_in, std::vector<Span>* in) {
   RegionOptions options;
   options.resolution = m.resolution;
   options.pusher_mu = Rational(0);
   options.merge = false;  // one interval per grid stretch of one piece
-  const Region region = compute_region_joined(m.part, *target, options, &joins, /*locate=*/false);
+  const Region region = compute_region_joined(m.part, target, options, &joins, /*locate=*/false);
   const auto& pieces = m.part.body.boundary->pieces;
   std::size_t k = 0;
   for (const auto& iv : region.intervals) {
@@ -195,9 +223,29 @@ void PairBound::compute_pair(long index, const std::vector<Join>& joins) {
       throw InternalError("design bound: a region interval is not on its piece's grid");
     const Span span{static_cast<std::int32_t>(k), boost::multiprecision::numerator(lo).convert_to<std::int32_t>(),
                     boost::multiprecision::numerator(hi).convert_to<std::int32_t>()};
-    if (iv.status != RegionStatus::kOut) append(p.side[0], span);
-    if (iv.status != RegionStatus::kIn) append(p.side[1], span);
+    if (not_out && iv.status != RegionStatus::kOut) append(*not_out, span);
+    if (not_in && iv.status != RegionStatus::kIn) append(*not_in, span);
+    if (in && iv.status == RegionStatus::kIn) append(*in, span);
   }
+}
+
+}  // namespace
+
+void PairBound::compute_pair(long index, const std::vector<Join>& joins) {
+  Impl& m = *impl_;
+  Impl::Pair& p = m.pairs.at(index);
+  if (p.c.isZero()) return;  // parallel wrenches: every triple with both is singular
+  grid_region(m, *open_half_space_target(p.c), joins, &p.side[0], &p.side[1], nullptr);
+  if (m.mu == 0) return;  // the jam cone is a plane's wedge: it holds no stretch's pushes
+  // Stretches whose every push the pair can hold, −(FC_a + FC_b), have no
+  // point of J's region (docs/theory.md §10.6): off both sides.
+  std::vector<VectorQ> jam;
+  for (int i : {m.first_of(index), m.second_of(index)})
+    for (int s : {1, -1}) jam.push_back(-(m.wrench[i] + Rational(s) * m.mu * m.tangent_wrench[i]));
+  std::vector<Span> held;
+  grid_region(m, *closed_cone_target(cone_facet_normals(jam, 3)), joins, nullptr, nullptr, &held);
+  if (held.empty()) return;
+  for (auto& side : p.side) side = minus(side, held);
 }
 
 bool PairBound::singular(const std::array<int, 3>& f) const { return impl_->det_sign(f) == 0; }

@@ -47,16 +47,19 @@ bool in_open_k(const std::array<VectorQ, 3>& rows, const VectorQ& w) {
   return true;
 }
 
-// The open polyhedral cone {w : a_k · w > 0 for every row a_k} as a region
-// target. With K's three rows ("−w strictly inside cone(W_n)"), a
-// frictionless finger's point is IN when its push and the three fixels'
-// normal wrenches are in form closure; with one row it is an open half-space
-// (the pair bound, design_bound.cpp). `misses` is conservative (one
-// separating row; exact for one row), so an undecided stretch stays PARTIAL
-// and is never counted as OUT.
-class OpenConeTarget final : public RegionTarget, public internal::IntervalTarget {
+// A polyhedral cone as a region target: {w : a_k · w > 0 for every row}
+// (open) or {w : a_k · w ≥ 0} (closed). With K's three rows, open ("−w
+// strictly inside cone(W_n)"), a frictionless finger's point is IN when its
+// push and the three fixels' normal wrenches are in form closure; with one
+// row it is an open half-space, and closed with a jam cone's facets it
+// holds the pushes a pair of fixels can hold (both for the pair bound,
+// design_bound.cpp). `misses` is conservative (one separating row; exact
+// for one row), so an undecided stretch stays PARTIAL and is never counted
+// as OUT.
+class ConeTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
-  OpenConeTarget(std::vector<VectorQ> rows, const char* name) : rows_(std::move(rows)), name_(name) {
+  ConeTarget(std::vector<VectorQ> rows, bool open, const char* name)
+      : rows_(std::move(rows)), open_(open), name_(name) {
     for (const auto& a : rows_) {
       internal::FGen e;
       for (int k = 0; k < 3; ++k) e[k] = internal::to_interval(a[k]);
@@ -68,14 +71,14 @@ class OpenConeTarget final : public RegionTarget, public internal::IntervalTarge
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
     for (const auto& g : gens)
       for (const auto& a : rows_)
-        if (a.dot(g) <= 0) return false;
+        if (!inside(sign(a.dot(g)))) return false;
     if (detail) detail->half_line = true;
     return true;
   }
   bool misses(const std::vector<VectorQ>& gens) override {
     for (const auto& a : rows_) {
       bool outside = true;
-      for (const auto& g : gens) outside = outside && a.dot(g) <= 0;
+      for (const auto& g : gens) outside = outside && !inside(sign(a.dot(g)));
       if (outside) return true;
     }
     return false;
@@ -87,15 +90,15 @@ class OpenConeTarget final : public RegionTarget, public internal::IntervalTarge
   internal::IntervalTarget* interval_target() override { return this; }
   bool in_answers_have_magnitudes() const override { return false; }
   int interval_ray_hits(const internal::FGen& g) const override {
-    bool open = false;
+    bool undecided = false;
     for (const auto& a : rows_enclosed_) {
       const int s = sign_of_dot(a, g);
       if (s == internal::kUndecided)
-        open = true;
-      else if (s <= 0)
+        undecided = true;
+      else if (!inside(s))
         return 0;
     }
-    return open ? internal::kUndecided : 1;
+    return undecided ? internal::kUndecided : 1;
   }
   // misses(): a row with a·g ≤ 0 for every generator (no LP: none counted).
   int certify_out_test(const internal::FGen* gens, std::size_t n) override {
@@ -106,7 +109,7 @@ class OpenConeTarget final : public RegionTarget, public internal::IntervalTarge
         const int s = sign_of_dot(a, gens[k]);
         if (s == internal::kUndecided)
           row_open = true;
-        else if (s > 0)
+        else if (inside(s))
           outside = false;
       }
       if (outside && !row_open) return 1;
@@ -122,8 +125,12 @@ class OpenConeTarget final : public RegionTarget, public internal::IntervalTarge
     return internal::certain_sign(a[0] * g[0] + a[1] * g[1] + a[2] * g[2]);
   }
 
+  // A row's side of a·g (a certified sign) holds the cone.
+  bool inside(int s) const { return open_ ? s > 0 : s >= 0; }
+
   std::vector<VectorQ> rows_;
   std::vector<internal::FGen> rows_enclosed_;
+  bool open_;
   const char* name_;
 };
 
@@ -230,11 +237,15 @@ namespace internal {
 std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& Wn) {
   const auto rows = k_rows(Wn);
   if (!rows) return nullptr;
-  return std::make_unique<OpenConeTarget>(std::vector<VectorQ>(rows->begin(), rows->end()), "K");
+  return std::make_unique<ConeTarget>(std::vector<VectorQ>(rows->begin(), rows->end()), true, "K");
 }
 
 std::unique_ptr<RegionTarget> open_half_space_target(const VectorQ& a) {
-  return std::make_unique<OpenConeTarget>(std::vector<VectorQ>{a}, "H");
+  return std::make_unique<ConeTarget>(std::vector<VectorQ>{a}, true, "H");
+}
+
+std::unique_ptr<RegionTarget> closed_cone_target(std::vector<VectorQ> rows) {
+  return std::make_unique<ConeTarget>(std::move(rows), false, "jam");
 }
 
 // Filters and scores one triple by the ranking push model.
@@ -255,7 +266,7 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
       break;
     }
   if (!closure) {  // some interval of the region against int K is not OUT (the first found is enough)
-    OpenConeTarget target(std::vector<VectorQ>(rows->begin(), rows->end()), "K");
+    ConeTarget target(std::vector<VectorQ>(rows->begin(), rows->end()), true, "K");
     closure = region_reaches(scene, target, region_options(o, Rational(0)), joins);
   }
   if (!closure) return Verdict::kNoFormClosure;

@@ -25,7 +25,7 @@ std::vector<DesignCandidate> every_other(const Scene& part) {
 }
 
 PairBound bound_of(const Scene& part, const std::vector<DesignCandidate>& c, const DesignOptions& o) {
-  PairBound b(part, c, o.resolution);
+  PairBound b(part, c, o);
   const auto joins = internal::joins(*part.body.boundary);
   for (long p = 0; p < b.pair_count(); ++p) b.compute_pair(p, joins);
   return b;
@@ -52,9 +52,13 @@ GTEST_TEST(PairBound, IsAtLeastEveryTriplesSustainedScoreAndItsUpperEndAtLeastTh
     const long n = static_cast<long>(c.size());
     const auto joins = internal::joins(*part.body.boundary);
     const Rational total = internal::total_length(*part.body.boundary);
-    for (const Rational& pusher_mu : {Rational(0), Rational(1, 5)}) {
+    // Pusher μ 0 and 1/5 with the fixels' μ 1/10; and fixel μ in [0, 1/5]
+    // (J judged at 1/5, so are the jam cones).
+    for (int variant = 0; variant < 3; ++variant) {
       DesignOptions o;
-      o.pusher_mu = pusher_mu;
+      o.pusher_mu = variant == 1 ? Rational(1, 5) : Rational(0);
+      if (variant == 2) o.mu = 0, o.mu_hi = Rational(1, 5);
+      const Rational& pusher_mu = o.pusher_mu;
       const PairBound b = bound_of(part, c, o);
       int scored = 0, informative = 0;
       for (long index = 0; index < triple_count(n); ++index) {
@@ -77,11 +81,46 @@ GTEST_TEST(PairBound, IsAtLeastEveryTriplesSustainedScoreAndItsUpperEndAtLeastTh
   }
 }
 
+// Whether w lies in the closed cone of `gens` (three dimensions), by
+// Carathéodory: in the cone of some three independent generators, with
+// coefficients from Cramer's rule (no facets, unlike the code under test).
+bool in_closed_cone(const std::vector<VectorQ>& gens, const VectorQ& w) {
+  auto det = [](const VectorQ& a, const VectorQ& b, const VectorQ& c) {
+    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+  };
+  const std::size_t m = gens.size();
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j)
+      for (std::size_t k = j + 1; k < m; ++k) {
+        const Rational d = det(gens[i], gens[j], gens[k]);
+        if (d == 0) continue;
+        const Rational li = det(w, gens[j], gens[k]) / d, lj = det(gens[i], w, gens[k]) / d,
+                       lk = det(gens[i], gens[j], w) / d;
+        if (li >= 0 && lj >= 0 && lk >= 0) return true;
+      }
+  return false;
+}
+
+// The jam cone −(FC_a + FC_b) of two candidates (docs/theory.md §10.2):
+// its four generators −(W_n ± μ W_t).
+std::vector<VectorQ> jam_generators(const Scene& part, const DesignCandidate& a, const DesignCandidate& b,
+                                    const Rational& mu) {
+  std::vector<VectorQ> g;
+  for (const DesignCandidate* c : {&a, &b}) {
+    const Vec2 r = sub(c->point, part.body.p_AoCm_A);
+    const VectorQ n = contact_wrench(r, c->normal, 3), t = contact_wrench(r, Vec2{-c->normal.y, c->normal.x}, 3);
+    g.push_back(-(n + mu * t));
+    g.push_back(-(n - mu * t));
+  }
+  return g;
+}
+
 // A second method: at the midpoint of every cell of the pairs' grid, the
-// exact push wrench and K's rows from their definition. Where all three
-// rows are positive there, each row's region cannot have found that cell
-// OUT, so the bound counts it.
-GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideK) {
+// exact push wrench, K's rows from their definition and the jam cones from
+// their generators. Where all three rows are positive there and no pair's
+// jam cone holds the push, no row's region can have found that cell OUT
+// and no jam cone can hold the whole cell, so the bound counts it.
+GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideKAndOutsideTheJamCones) {
   for (const char* name : {"polygon", "example2_rounded", "blob"}) {
     const Scene part = scene_file(name);
     const auto c = every_other(part);
@@ -98,6 +137,9 @@ GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideK) {
       std::array<VectorQ, 3> W;
       for (int i = 0; i < 3; ++i) W[i] = contact_wrench(sub(c[f[i]].point, part.body.p_AoCm_A), c[f[i]].normal, 3);
       const auto rows = k_rows(W);
+      const std::array<std::vector<VectorQ>, 3> jams = {jam_generators(part, c[f[0]], c[f[1]], o.mu),
+                                                        jam_generators(part, c[f[0]], c[f[2]], o.mu),
+                                                        jam_generators(part, c[f[1]], c[f[2]], o.mu)};
       Rational inside = 0;
       for (const auto& piece : outline.pieces) {
         Rational cell = piece.u1 - piece.u0;
@@ -108,7 +150,9 @@ GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideK) {
           const Vec2 t = piece.derivative(s);
           if (t.x == 0 && t.y == 0) continue;
           const VectorQ w = contact_wrench(sub(piece.point(s), part.body.p_AoCm_A), Vec2{-t.y, t.x}, 3);
-          if (rows[0].dot(w) > 0 && rows[1].dot(w) > 0 && rows[2].dot(w) > 0) inside += cell / total;
+          if (rows[0].dot(w) > 0 && rows[1].dot(w) > 0 && rows[2].dot(w) > 0 && !in_closed_cone(jams[0], w) &&
+              !in_closed_cone(jams[1], w) && !in_closed_cone(jams[2], w))
+            inside += cell / total;
         }
       }
       EXPECT_GE(b.exact(f), inside) << name << " triple " << index;

@@ -30,7 +30,8 @@ class PairBound {
   // parameter length over kCells, whichever is coarser (measured: a finer
   // grid costs more in pair regions than it saves in layouts scored,
   // docs/performance.md). Throws what the region would (no outline).
-  PairBound(const Scene& part, const std::vector<DesignCandidate>& candidates, const Rational& resolution);
+  // The jam cones use the fixels' friction J is judged at (mu_hi, else mu).
+  PairBound(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
   static constexpr int kCells = 256;
 
   long pair_count() const;
@@ -64,8 +65,9 @@ class PairBound {
   PairBound(PairBound&&) noexcept;
   PairBound& operator=(PairBound&&) noexcept;
 
- private:
   struct Impl;  // src/design_bound.cpp: keeps the interval types out of design.cpp
+
+ private:
   std::unique_ptr<Impl> impl_;
 };
 

@@ -32,6 +32,10 @@ std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& 
 // half-space of one row (the pair bound, design_bound.h).
 std::unique_ptr<RegionTarget> open_half_space_target(const VectorQ& a);
 
+// The target "a_k · w ≥ 0 for every row" (a closed cone; no rows: all of
+// R³), for a frictionless finger: the pair bound's jam cones.
+std::unique_ptr<RegionTarget> closed_cone_target(std::vector<VectorQ> rows);
+
 enum class Verdict { kSingular, kNoFormClosure, kJEmpty, kScored };
 
 // Filters and scores one triple by the ranking push model. `joins`: those
