@@ -22,12 +22,6 @@ struct Span {  // cells [lo, hi) of piece `piece`'s grid
   std::int32_t piece, lo, hi;
 };
 
-VectorQ cross(const VectorQ& a, const VectorQ& b) {
-  VectorQ c(3);
-  c << a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0];
-  return c;
-}
-
 FGen enclose(const VectorQ& v) { return {to_interval(v[0]), to_interval(v[1]), to_interval(v[2])}; }
 
 // Appends [lo, hi) to a list kept sorted, joining it to the last span when
@@ -187,7 +181,7 @@ PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cand
     for (int c = a + 1; c < m.n; ++c) {
       m.pair_of.emplace_back(a, c);
       auto& p = m.pairs[m.pair_index(a, c)];
-      p.c = cross(m.wrench[a], m.wrench[c]);
+      p.c = cross3(m.wrench[a], m.wrench[c]);
       p.c_enclosed = enclose(p.c);
     }
 }

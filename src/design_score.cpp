@@ -26,16 +26,11 @@ VectorQ wrench_at(const Scene& part, const Vec2& point, const Vec2& d) {
 // Rows a_k with w ∈ int K ⇔ a_k · w > 0 for every k, where
 // K = {w : −w ∈ int cone(W_n)} (docs/theory.md §10.2); none if W_n is singular.
 std::optional<std::array<VectorQ, 3>> k_rows(const std::array<VectorQ, 3>& Wn) {
-  auto cross = [](const VectorQ& a, const VectorQ& b) {
-    VectorQ c(3);
-    c << a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0];
-    return c;
-  };
-  const Rational det = Wn[0].dot(cross(Wn[1], Wn[2]));
+  const Rational det = Wn[0].dot(internal::cross3(Wn[1], Wn[2]));
   if (det == 0) return std::nullopt;
   std::array<VectorQ, 3> rows;
   for (int i = 0; i < 3; ++i) {
-    rows[i] = cross(Wn[(i + 1) % 3], Wn[(i + 2) % 3]);  // row i of adj(W_n)
+    rows[i] = internal::cross3(Wn[(i + 1) % 3], Wn[(i + 2) % 3]);  // row i of adj(W_n)
     if (det > 0) rows[i] = -rows[i];
   }
   return rows;
@@ -233,6 +228,12 @@ void score_step(const Scene& scene, const DesignOptions& o, const Rational& tota
 }  // namespace
 
 namespace internal {
+
+VectorQ cross3(const VectorQ& a, const VectorQ& b) {
+  VectorQ c(3);
+  c << a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0];
+  return c;
+}
 
 std::unique_ptr<RegionTarget> form_closure_target(const std::array<VectorQ, 3>& Wn) {
   const auto rows = k_rows(Wn);

@@ -9,9 +9,12 @@
 // for a pair {a, b} of the triple. Per pair, one region against the open
 // half-space c · w > 0 (c = W_a × W_b), on a grid coarser than the score's
 // (below), gives the stretches of the outline where c · w > 0 may hold (IN
-// or PARTIAL) and where c · w < 0 may (OUT or PARTIAL). A triple's bound is the parameter
-// length of the intersection of its three rows' stretches, over the
-// outline's: an exact rational, at least the triple's sustained score.
+// or PARTIAL) and where c · w < 0 may (OUT or PARTIAL). A second region, against
+// the pair's jam cone −(FC_a + FC_b), takes off both sides the stretches
+// whose every push the pair can hold (no IN point of J's region lies
+// there). A triple's bound is the parameter length of the intersection of
+// its three rows' stretches, over the outline's: an exact rational, at
+// least the triple's sustained score.
 
 #include <array>
 #include <memory>

@@ -19,6 +19,9 @@ const Boundary& boundary_of(const Scene& part);
 // The summed parameter length of the outline's curves.
 Rational total_length(const Boundary& b);
 
+// The cross product of two wrenches (three entries each), exact.
+VectorQ cross3(const VectorQ& a, const VectorQ& b);
+
 // A rational unit vector near the direction of n, and the angle between them.
 Vec2 unit_near(const Vec2& n, double* angle_error);
 
