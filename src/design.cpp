@@ -6,7 +6,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -15,8 +14,8 @@
 #include <mutex>
 #include <utility>
 
+#include "fixel/design_search.h"
 #include "fixel/error.h"
-#include "fixel/internal/design_bound.h"
 #include "fixel/internal/design_detail.h"
 #include "fixel/progress.h"
 
@@ -32,11 +31,8 @@ using internal::Verdict;
 constexpr int kMaxJobs = 256;
 constexpr long kBatch = 8;  // triples per unit of work of the thread pool
 // The bounded search: triples scored between two checks of the K-th score
-// (fixed, so that the counts do not depend on --jobs), triples bounded per
-// unit of work, and the most triples it keeps a bound for (16 bytes each).
+// (fixed, so that the counts do not depend on --jobs).
 constexpr long kChunk = 32;
-constexpr long kBoundBatch = 1024;
-constexpr long kMaxBoundedTriples = 1L << 25;
 
 bool better(const DesignLayout& a, const DesignLayout& b) {
   if (a.score != b.score) return a.score > b.score;
@@ -76,16 +72,25 @@ void tally(Verdict verdict, DesignLayout&& layout, std::vector<DesignLayout>& be
   best.push_back(std::move(layout));
 }
 
+// Scores triples [first, first + count), less those in `scored` (sorted:
+// the pilot's, already scored).
 template <class OnLayout>
 std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignCandidate>& cands,
                                     const DesignOptions& o, long first, long count, DesignStats& stats,
-                                    OnLayout&& on_layout) {
+                                    OnLayout&& on_layout, const std::vector<long>& scored = {}) {
   const long n = static_cast<long>(cands.size());
   const Rational total = total_length(boundary_of(part));
   const std::vector<internal::Join> joins = internal::joins(boundary_of(part));  // one outline: made once
   std::vector<DesignLayout> best;
   std::array<int, 3> f = triple_at(n, first);
+  auto next_scored = std::lower_bound(scored.begin(), scored.end(), first);
   for (long k = 0; k < count; ++k) {
+    if (next_scored != scored.end() && *next_scored == first + k) {
+      ++next_scored;
+      on_layout();
+      if (k + 1 < count) advance(f, n);
+      continue;
+    }
     DesignLayout layout;
     layout.fixels = f;
     layout.index = first + k;
@@ -97,26 +102,6 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
   rank_layouts(best, o.top);
   return best;
 }
-
-// Polls `control` from whichever thread gets the mutex without waiting.
-class SharedPoll {
- public:
-  explicit SharedPoll(RunControl* control) : control_(control) {}
-  void operator()(const char* task, long done, long total, const char* unit) {
-    if (!control_) return;
-    std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
-    if (lock.owns_lock()) control_->poll(task, done, total, unit);
-  }
-
- private:
-  RunControl* control_;
-  std::mutex mutex_;
-};
-
-struct Ranked {
-  long index;
-  double upper;  // ≥ the triple's exact bound
-};
 
 // Scores the triples `chosen` in parallel and merges them, in the order
 // given, into `top` (the best K) and the counts.
@@ -140,101 +125,34 @@ void score_into(const std::vector<long>& chosen, const Scene& part, const std::v
   rank_layouts(top, o.top);
 }
 
-// The sustained ranking with the pair bound (docs/design.md, "The bound").
-// A pilot first: kChunk triples spread evenly over the indices are scored.
-// If none of them scores above 0, the K-th score may well stay 0, and then
-// the bound could skip only triples whose bound is exactly 0: not worth
-// its pair regions, so the caller scores every triple (false is returned).
-// Otherwise every pair's half-space region, every other triple's bound,
-// then those triples in order of decreasing bound, kChunk at a time, until
-// none left can enter the top K. False too when there are too many triples
-// to keep a bound for each.
+// The sustained ranking with the pair bound (docs/design.md, "The bound"):
+// the pilot, then kChunk triples at a time in the search's order until none
+// left can enter the top K. False when the bound does not apply, or when the
+// pilot scores nothing above 0: then `result` holds the pilot's best K and
+// counts, and `pilot` its triples, for the caller to score the others.
 bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
-                 tbb::task_arena& arena, DesignResult& result) {
-  const long n = static_cast<long>(cands.size()), T = triple_count(n);
-  if (T > kMaxBoundedTriples || T <= kChunk) return false;
+                 tbb::task_arena& arena, DesignResult& result, std::vector<long>& pilot) {
+  DesignSearch search(part, cands, o);
+  if (!search.applies()) return false;
   const std::vector<internal::Join> joins = internal::joins(boundary_of(part));
   const Rational total = total_length(boundary_of(part));
   DesignStats& stats = result.stats;
-  std::vector<long> pilot;
-  for (long k = 0; k < kChunk; ++k) pilot.push_back(k * T / kChunk);
-  std::vector<DesignLayout> top;
-  DesignStats pilot_stats;
-  score_into(pilot, part, cands, o, total, joins, arena, top, pilot_stats);
-  if (std::none_of(top.begin(), top.end(), [](const DesignLayout& l) { return l.score > 0; })) return false;
-  stats.singular = pilot_stats.singular;
-  stats.no_form_closure = pilot_stats.no_form_closure;
-  stats.j_empty = pilot_stats.j_empty;
-  stats.regions = pilot_stats.regions;
-  internal::PairBound bound(part, cands, o);
-  SharedPoll poll_shared(o.control);
-  std::atomic<long> done{0};
-  const long pairs = bound.pair_count();
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<long>(0, pairs, 1), [&](const tbb::blocked_range<long>& r) {
-      for (long p = r.begin(); p != r.end(); ++p) {
-        bound.compute_pair(p, joins);
-        poll_shared("design: pair bounds", ++done, pairs, "pairs");
-      }
-    });
-  });
-  // Each other triple's bound, in batches of consecutive indices (kept in index order).
-  const long batches = (T + kBoundBatch - 1) / kBoundBatch;
-  std::vector<std::vector<Ranked>> ranked_in(batches);
-  std::vector<long> singular_in(batches, 0);
-  done = 0;
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<long>(0, batches, 1), [&](const tbb::blocked_range<long>& r) {
-      for (long b = r.begin(); b != r.end(); ++b) {
-        const long first = b * kBoundBatch, count = std::min(kBoundBatch, T - first);
-        std::array<int, 3> f = triple_at(n, first);
-        auto next_pilot = std::lower_bound(pilot.begin(), pilot.end(), first);
-        for (long k = 0; k < count; ++k, advance(f, n)) {
-          if (next_pilot != pilot.end() && *next_pilot == first + k) {
-            ++next_pilot;  // scored already
-          } else if (bound.singular(f)) {
-            ++singular_in[b];
-          } else {
-            ranked_in[b].push_back({first + k, bound.upper(f)});
-          }
-        }
-        poll_shared("design: triple bounds", done += count, T, "triples");
-      }
-    });
-  });
-  std::vector<Ranked> ranked;
-  for (long b = 0; b < batches; ++b) {
-    stats.singular += singular_in[b];
-    ranked.insert(ranked.end(), ranked_in[b].begin(), ranked_in[b].end());
+  std::vector<DesignLayout>& top = result.layouts;
+  score_into(search.pilot(), part, cands, o, total, joins, arena, top, stats);
+  if (!search.start(top)) {
+    pilot = search.pilot();
+    return false;
   }
-  ranked_in.clear();
-  arena.execute([&] {
-    tbb::parallel_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
-      return a.upper != b.upper ? a.upper > b.upper : a.index < b.index;
-    });
-  });
-  for (std::size_t pos = 0; pos < ranked.size(); pos += kChunk) {
-    // Triples done: the singular ones, the pilot's and those ranked before pos.
-    poll(o.control, "design", stats.singular + kChunk + static_cast<long>(pos), T, "layouts");
-    const bool full = static_cast<int>(top.size()) == o.top;
-    // Every triple left has an upper end at most this one's: when it is
-    // below the K-th score, none can enter.
-    if (full && bound.none_can_enter(ranked[pos].upper, top.back().score, static_cast<long>(ranked.size() - pos)))
-      break;
-    std::vector<long> chosen;
-    for (std::size_t k = pos; k < std::min(ranked.size(), pos + kChunk); ++k)
-      if (!full || bound.can_enter(triple_at(n, ranked[k].index), ranked[k].index, ranked[k].upper, top.back().score,
-                                   top.back().index))
-        chosen.push_back(ranked[k].index);
+  stats.singular += search.singular();
+  while (auto chosen = search.next(top, kChunk)) {
     DesignStats chunk;
-    score_into(chosen, part, cands, o, total, joins, arena, top, chunk);
+    score_into(*chosen, part, cands, o, total, joins, arena, top, chunk);
     if (chunk.singular) throw InternalError("design: a triple the bound found regular is singular");
     stats.no_form_closure += chunk.no_form_closure;
     stats.j_empty += chunk.j_empty;
     stats.regions += chunk.regions;
   }
-  stats.bounded = T - stats.singular - stats.no_form_closure - stats.j_empty - stats.regions;
-  result.layouts = std::move(top);
+  stats.bounded = stats.triples - stats.singular - stats.no_form_closure - stats.j_empty - stats.regions;
   return true;
 }
 
@@ -298,6 +216,30 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
   return run_range(part, cands, o, first, count, stats, [&] { poll(o.control, "design", ++done, count, "layouts"); });
 }
 
+std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& cands,
+                                       const DesignOptions& o, const std::vector<long>& indices, DesignStats& stats) {
+  check_design(part, o);
+  const long n = static_cast<long>(cands.size());
+  for (std::size_t k = 0; k < indices.size(); ++k)
+    if (indices[k] < 0 || indices[k] >= triple_count(n))
+      throw InputError("batch[" + std::to_string(k) + "]", std::to_string(indices[k]),
+                       "is outside the " + std::to_string(triple_count(n)) + " triples");
+  const Rational total = total_length(boundary_of(part));
+  const std::vector<internal::Join> joins = internal::joins(boundary_of(part));
+  std::vector<DesignLayout> best;
+  long done = 0;
+  for (long index : indices) {
+    DesignLayout layout;
+    layout.fixels = triple_at(n, index);
+    layout.index = index;
+    tally(evaluate(part, cands, o, total, layout.fixels, layout, &joins), std::move(layout), best, stats);
+    if (static_cast<int>(best.size()) > 2 * o.top) rank_layouts(best, o.top);
+    poll(o.control, "design", ++done, static_cast<long>(indices.size()), "layouts");
+  }
+  rank_layouts(best, o.top);
+  return best;
+}
+
 DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o) {
   check_design(part, o);
   const auto start = std::chrono::steady_clock::now();
@@ -313,7 +255,8 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
     return result;
   }
   tbb::task_arena arena(jobs);
-  if (o.push == DesignPush::kSustained && o.bound && run_bounded(part, cands, o, arena, result)) {
+  std::vector<long> pilot;  // scored already when the bound gives up after its pilot
+  if (run_bounded(part, cands, o, arena, result, pilot)) {
     complete_layouts(part, cands, o, result.layouts);
     result.no_layout = no_layout_reason(result.stats, result.layouts.size());
     result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -335,7 +278,7 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
     tbb::parallel_for(tbb::blocked_range<long>(0, batches, 1), [&](const tbb::blocked_range<long>& r) {
       for (long b = r.begin(); b != r.end(); ++b) {
         const long first = b * kBatch, count = std::min(kBatch, T - first);
-        best[b] = run_range(part, cands, o, first, count, counts[b], on_layout);
+        best[b] = run_range(part, cands, o, first, count, counts[b], on_layout, pilot);
       }
     });
   });

@@ -165,6 +165,12 @@ Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& candid
 std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& candidates,
                                        const DesignOptions& options, long first, long count, DesignStats& stats);
 
+/// The same for the triples of lexicographic index `indices`, in that order
+/// (what DesignSearch hands out). Throws InputError naming `batch[k]` for an
+/// index out of range.
+std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& candidates,
+                                       const DesignOptions& options, const std::vector<long>& indices,
+                                       DesignStats& stats);
 /// Best first: higher score, then lower triple index. Keeps the first `top`.
 void rank_layouts(std::vector<DesignLayout>& layouts, int top);
 

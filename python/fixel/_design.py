@@ -2,7 +2,8 @@
 
 ``fixel.design(part, ...)`` runs on the C++ oneTBB thread pool, or, with
 ``client=`` a ``dask.distributed.Client`` (or a scheduler address), maps
-batches of triples over a Dask cluster. Exact results travel as strings and
+batches of triples over a Dask cluster, in rounds in the order of the pair
+bound (or, exhaustive, every triple). Exact results travel as strings and
 come back as ``Fraction``; a batch is a pure function of its arguments, so
 Dask's retries recompute a lost one, and a JSON-lines ``output`` file lets a
 rerun skip the batches that already finished.
@@ -11,7 +12,6 @@ rerun skip the batches that already finished.
 import hashlib
 import json
 import os
-import threading
 import time
 import uuid
 from dataclasses import dataclass
@@ -182,11 +182,12 @@ def _connect(address, timeout):
         ) from e
 
 
-def _run_batch(scene_dict, candidates, options, first, count, fail_once=None):
-    """One batch of triples (runs on a Dask worker). Pure: the same
-    arguments give the same result, so a retry after a lost worker is safe.
-    `fail_once` (tests only) is a file path: the first call that finds it
-    missing creates it and raises, as a worker that dies mid-batch would."""
+def _run_batch(scene_dict, candidates, options, first, count, fail_once=None, indices=None):
+    """One batch of triples (runs on a Dask worker): [first, first + count),
+    or the triples `indices` when given. Pure: the same arguments give the
+    same result, so a retry after a lost worker is safe. `fail_once` (tests
+    only) is a file path: the first call that finds it missing creates it
+    and raises, as a worker that dies mid-batch would."""
     if fail_once is not None and not os.path.exists(fail_once):
         with open(fail_once, "w") as f:
             f.write("failed once\n")
@@ -194,7 +195,10 @@ def _run_batch(scene_dict, candidates, options, first, count, fail_once=None):
     from . import Scene
 
     scene = Scene.from_dict(scene_dict)
-    layouts, counts = _fixel.design_batch(scene._impl, candidates, options, first, count)
+    if indices is None:
+        layouts, counts = _fixel.design_batch(scene._impl, candidates, options, first, count)
+    else:
+        layouts, counts = _fixel.design_batch_indices(scene._impl, candidates, options, indices)
     return {"first": first, "count": count, "layouts": [list(l) for l in layouts], "counts": list(counts)}
 
 
@@ -206,6 +210,8 @@ def _run_key(scene_dict, candidates, options):
 
 
 def _read_finished(output, key):
+    """Finished batches of run `key` in `output`: a range batch under its
+    number, a batch of listed triples under the tuple of its triples."""
     finished = {}
     if output is None or not os.path.exists(output):
         return finished
@@ -219,7 +225,7 @@ def _read_finished(output, key):
             except json.JSONDecodeError:
                 continue  # a line cut short by a crash: that batch runs again
             if rec.get("run") == key:
-                finished[rec["batch"]] = rec
+                finished[tuple(rec["triples"]) if "triples" in rec else rec["batch"]] = rec
     return finished
 
 
@@ -236,6 +242,7 @@ def design(
     resolution="1/256",
     client=None,
     batch_size=64,
+    wave=8,
     output=None,
     progress=False,
     retries=2,
@@ -250,14 +257,18 @@ def design(
     a candidate file path, or a list of (curve, u). push: "sustained" or
     "step" (the ranking score). mu: a number or (lo, hi); default the
     scene's largest fixel mu, else 1/10. jobs: threads of the C++ pool
-    (default one per core). client: a dask.distributed.Client or a scheduler
-    address: batches of `batch_size` triples are mapped over the cluster
-    with `retries`; `output` (a .jsonl path) records each finished batch and
-    a rerun with the same file skips those; `progress=True` shows Dask's
-    progress bar. exhaustive: score every triple on the thread pool
-    (default: in order of the pair bound, stopping when no triple left can
-    enter the top; the same layouts, docs/design.md). The cluster always
-    scores every triple. Returns a `Design`.
+    (default one per core). exhaustive: score every triple (default: in
+    order of the pair bound, stopping when no triple left can enter the
+    top; the same layouts, docs/design.md).
+
+    client: a dask.distributed.Client or a scheduler address: batches of
+    `batch_size` triples are mapped over the cluster with `retries`. With
+    the bound, this process computes the bound (on `jobs` threads) and the
+    cluster scores rounds of `wave` batches in its order; without it, every
+    triple in ranges of consecutive indices. `output` (a .jsonl path)
+    records each finished batch and a rerun with the same file skips those;
+    `progress=True` shows a tqdm bar of finished batches. Returns a
+    `Design`.
     """
     scene = _part(part)
     options = _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive)
@@ -265,83 +276,161 @@ def design(
     cands = _candidates(scene, candidates, spacing)
     if client is None:
         return _design_of(json.loads(_fixel.design_json(scene._impl, cands, options)))
-    if not isinstance(batch_size, int) or batch_size <= 0:
+    if not isinstance(batch_size, int) or isinstance(batch_size, bool) or batch_size <= 0:
         raise InputError.make("batch_size", repr(batch_size), "must be a positive int")
+    if not isinstance(wave, int) or isinstance(wave, bool) or wave <= 0:
+        raise InputError.make("wave", repr(wave), "must be a positive int")
     if isinstance(client, str):
         client = _connect(client, timeout)
-    return _design_dask(scene, cands, options, client, batch_size, output, progress, retries, _fail_once)
+    return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _fail_once)
 
 
-def _design_dask(scene, cands, options, client, batch_size, output, progress, retries, fail_once):
+class _Batches:
+    """Maps batches over the cluster with retries, records each finished one
+    in `output` and takes those a previous run recorded."""
+
+    def __init__(self, client, scene_dict, cands, options, key, output, progress, retries, fail_once):
+        self.client, self.scene_dict, self.cands, self.options = client, scene_dict, cands, options
+        self.key, self.output, self.retries = key, output, retries
+        self.fail = fail_once if isinstance(fail_once, tuple) else None
+        self.finished = _read_finished(output, key)
+        self.nonce = uuid.uuid4().hex[:8]
+        self.batches = self.resumed = 0
+        self.bar = None
+        if progress:
+            from tqdm import tqdm  # imported only when asked for
+
+            self.bar = tqdm(desc="design: batches", unit="batch", leave=False)
+
+    def run(self, specs):
+        """specs: [(number, first, count, triples or None)]. Returns their
+        records in that order; raises Error when one failed after its retries."""
+        records, todo = {}, []
+        for number, first, count, triples in specs:
+            self.batches += 1
+            rec = self.finished.get(number if triples is None else tuple(triples))
+            if rec is not None:
+                records[number] = rec
+                self.resumed += 1
+            else:
+                todo.append((number, first, count, triples))
+        errors = []
+        if todo:
+            futures = self.client.map(
+                _run_batch,
+                [self.scene_dict] * len(todo),
+                [self.cands] * len(todo),
+                [self.options] * len(todo),
+                [first for _, first, _, _ in todo],
+                [count for _, _, count, _ in todo],
+                [self.fail[1] if self.fail and self.fail[0] == b else None for b, _, _, _ in todo],
+                [triples for _, _, _, triples in todo],
+                # A fresh suffix per call: a rerun must not meet an erred task the
+                # scheduler still remembers under the same key.
+                key=[f"fixel-design-{self.key}-{b}-{self.nonce}" for b, _, _, _ in todo],
+                retries=self.retries,
+                pure=False,
+            )
+            spec_of = {f.key: t for t, f in zip(todo, futures)}
+            from dask.distributed import as_completed
+
+            sink = open(self.output, "a") if self.output is not None else None
+            try:
+                for f in as_completed(futures):
+                    number, _, _, triples = spec_of[f.key]
+                    if f.status != "finished":
+                        errors.append((number, f.exception()))
+                        continue
+                    rec = dict(f.result(), run=self.key, batch=number)
+                    if triples is not None:
+                        rec["triples"] = list(triples)
+                    records[number] = rec
+                    if sink is not None:
+                        sink.write(json.dumps(rec) + "\n")
+                        sink.flush()
+                    if self.bar is not None:
+                        self.bar.update(1)
+            finally:
+                if sink is not None:
+                    sink.close()
+        if errors:
+            b, e = errors[0]
+            where = (
+                f"; {self.batches - len(errors)} finished batches are in {self.output}: rerun with it to resume"
+                if self.output
+                else ""
+            )
+            raise Error(f"design: {len(errors)} batch(es) failed after {self.retries} retries (first: batch {b}: {e}){where}")
+        return [records[number] for number, _, _, _ in specs]
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+def _merge(records, top, counts, k):
+    """Adds the batches' counts and keeps the best k layouts, best first:
+    higher score, then lower triple index (as the C++ pool)."""
+    for rec in records:
+        for i in range(4):
+            counts[i] += rec["counts"][i]
+        top.extend(rec["layouts"])
+    top.sort(key=lambda l: (-Fraction(l[4]), l[3]))
+    del top[k:]
+
+
+def _bounded(search, batches, options, batch_size, wave, total):
+    """The bounded search (docs/design.md): the pilot, then rounds of `wave`
+    blocks of `batch_size` triples in order of their pair bound, each asked
+    for with the best K known before the round. None when the pilot scores
+    nothing above 0 (then every triple is scored, as on the thread pool)."""
+    top, counts = [], [0, 0, 0, 0]
+    pilot = list(search.pilot())
+    _merge(batches.run([(0, pilot[0], len(pilot), pilot)]), top, counts, options["top"])
+    if not search.start([(l[3], l[4]) for l in top]):
+        return None
+    counts[0] += search.singular()
+    number, rounds, over = 1, 0, False
+    while not over:
+        blocks = []
+        for _ in range(wave):
+            chosen = search.next([(l[3], l[4]) for l in top], batch_size)
+            if chosen is None:
+                over = True
+                break
+            if chosen:
+                blocks.append(chosen)
+        if blocks:
+            rounds += 1
+            specs = [(number + i, b[0], len(b), b) for i, b in enumerate(blocks)]
+            number += len(blocks)
+            _merge(batches.run(specs), top, counts, options["top"])
+    return top, counts + [total - sum(counts)], rounds
+
+
+def _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, fail_once):
     start = time.perf_counter()
     scene_dict = scene.to_dict()
     total = _fixel.design_triples(len(cands))
     key = _run_key(scene_dict, cands, options)
-    finished = _read_finished(output, key)
-    batches = [(b, first, min(batch_size, total - first)) for b, first in enumerate(range(0, total, batch_size))]
-    todo = [b for b in batches if b[0] not in finished]
-    futures = {}
-    if todo:
-        fail = fail_once if isinstance(fail_once, tuple) else None
-        nonce = uuid.uuid4().hex[:8]
-        futures_list = client.map(
-            _run_batch,
-            [scene_dict] * len(todo),
-            [cands] * len(todo),
-            [options] * len(todo),
-            [first for _, first, _ in todo],
-            [count for _, _, count in todo],
-            [fail[1] if fail and fail[0] == b else None for b, _, _ in todo],
-            # A fresh suffix per call: a rerun must not meet an erred task the
-            # scheduler still remembers under the same key.
-            key=[f"fixel-design-{key}-{b}-{nonce}" for b, _, _ in todo],
-            retries=retries,
-            pure=False,
-        )
-        futures = {f.key: (b, f) for (b, _, _), f in zip(todo, futures_list)}
-    bar = None
-    if progress and futures:
-        from dask.distributed import progress as dask_progress
-
-        bar = threading.Thread(target=dask_progress, args=(list(f for _, f in futures.values()),), daemon=True)
-        bar.start()
-    errors = []
-    if futures:
-        from dask.distributed import as_completed
-
-        sink = open(output, "a") if output is not None else None
-        try:
-            for f in as_completed([f for _, f in futures.values()]):
-                b = futures[f.key][0]
-                if f.status != "finished":
-                    errors.append((b, f.exception()))
-                    continue
-                rec = dict(f.result(), run=key, batch=b)
-                finished[b] = rec
-                if sink is not None:
-                    sink.write(json.dumps(rec) + "\n")
-                    sink.flush()
-        finally:
-            if sink is not None:
-                sink.close()
-    if bar is not None:
-        bar.join(timeout=5)
-    if errors:
-        b, e = errors[0]
-        where = f"; {len(finished)} finished batches are in {output}: rerun with it to resume" if output else ""
-        raise Error(f"design: {len(errors)} batch(es) failed after {retries} retries (first: batch {b}: {e}){where}")
-    counts = [0, 0, 0, 0]
-    layouts = []
-    for rec in finished.values():
-        for k in range(4):
-            counts[k] += rec["counts"][k]
-        layouts.extend(rec["layouts"])
-    # Best first: higher score, then lower triple index (as the C++ pool).
-    layouts.sort(key=lambda l: (-Fraction(l[4]), l[3]))
-    indices = [l[3] for l in layouts[: options["top"]]]
+    batches = _Batches(client, scene_dict, cands, options, key, output, progress, retries, fail_once)
+    try:
+        search = _fixel.DesignSearch(scene._impl, cands, options)
+        found = _bounded(search, batches, options, batch_size, wave, total) if search.applies() else None
+        rounds = 0
+        if found is None:  # every triple, in ranges of consecutive indices
+            top, counts = [], [0, 0, 0, 0]
+            specs = [(b, first, min(batch_size, total - first), None) for b, first in enumerate(range(0, total, batch_size))]
+            _merge(batches.run(specs), top, counts, options["top"])
+            counts.append(0)
+        else:
+            top, counts, rounds = found
+    finally:
+        batches.close()
     seconds = time.perf_counter() - start
     workers = len(client.scheduler_info().get("workers", {}))
-    doc = json.loads(_fixel.design_report(scene._impl, cands, options, indices, counts, seconds, workers))
-    doc["stats"]["batches"] = len(batches)
-    doc["stats"]["batches_resumed"] = len(batches) - len(todo)
+    doc = json.loads(_fixel.design_report(scene._impl, cands, options, [l[3] for l in top], counts, seconds, workers))
+    doc["stats"]["batches"] = batches.batches
+    doc["stats"]["batches_resumed"] = batches.resumed
+    doc["stats"]["rounds"] = rounds
     return _design_of(doc)

@@ -1,6 +1,7 @@
 /// @file
-/// Fixture design (docs/design.md): candidates, the thread-pool run, and the
-/// batch function that fixel.design maps over a Dask cluster. Candidates
+/// Fixture design (docs/design.md): candidates, the thread-pool run, the
+/// batch functions that fixel.design maps over a Dask cluster and the
+/// bounded search that orders them. Candidates
 /// cross as (curve, u) with u exact text, options as a dict of exact texts,
 /// results as exact texts or the `fixel design --json` document.
 
@@ -10,6 +11,7 @@
 
 #include "bindings.h"
 #include "fixel/design.h"
+#include "fixel/design_search.h"
 
 namespace fixel::python {
 namespace {
@@ -54,6 +56,30 @@ DesignOptions options_of(const py::dict& d) {
   return o;
 }
 
+// A batch's answer: ([(i, j, k, index, score)], (singular, no_form_closure,
+// j_empty, regions)).
+py::tuple batch_tuple(const std::vector<DesignLayout>& best, const DesignStats& stats) {
+  py::list layouts;
+  for (const auto& l : best)
+    layouts.append(py::make_tuple(l.fixels[0], l.fixels[1], l.fixels[2], l.index, to_string(l.score)));
+  return py::make_tuple(layouts, py::make_tuple(stats.singular, stats.no_form_closure, stats.j_empty, stats.regions));
+}
+
+using TopList = std::vector<std::pair<long, std::string>>;
+
+std::vector<DesignLayout> layouts_of(const TopList& top) {
+  std::vector<DesignLayout> out(top.size());
+  for (std::size_t k = 0; k < top.size(); ++k) {
+    out[k].index = top[k].first;
+    out[k].score = parse_rational(top[k].second, "top[" + std::to_string(k) + "].score");
+  }
+  return out;
+}
+
+struct SearchBox {
+  DesignSearch search;
+};
+
 }  // namespace
 
 void bind_design(py::module_& m) {
@@ -86,22 +112,51 @@ void bind_design(py::module_& m) {
   });
   // One batch (idempotent): ([(i, j, k, index, score)], (singular,
   // no_form_closure, j_empty, regions)).
-  m.def("design_batch", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, long first,
-                           long count) {
-    const Scene& s = checked(scene, "scene");
-    const auto cands = candidates_of(s, list);
-    DesignOptions o = options_of(opts);
-    DesignStats stats;
-    std::vector<DesignLayout> best;
-    {
-      py::gil_scoped_release release;
-      best = design_batch(s, cands, o, first, count, stats);
-    }
-    py::list layouts;
-    for (const auto& l : best)
-      layouts.append(py::make_tuple(l.fixels[0], l.fixels[1], l.fixels[2], l.index, to_string(l.score)));
-    return py::make_tuple(layouts, py::make_tuple(stats.singular, stats.no_form_closure, stats.j_empty, stats.regions));
-  });
+  m.def("design_batch",
+        [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, long first, long count) {
+          const Scene& s = checked(scene, "scene");
+          const auto cands = candidates_of(s, list);
+          DesignOptions o = options_of(opts);
+          DesignStats stats;
+          std::vector<DesignLayout> best;
+          {
+            py::gil_scoped_release release;
+            best = design_batch(s, cands, o, first, count, stats);
+          }
+          return batch_tuple(best, stats);
+        });
+  // The same for a list of triple indices (what DesignSearch hands out).
+  m.def("design_batch_indices",
+        [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, const std::vector<long>& indices) {
+          const Scene& s = checked(scene, "scene");
+          const auto cands = candidates_of(s, list);
+          DesignOptions o = options_of(opts);
+          DesignStats stats;
+          std::vector<DesignLayout> best;
+          {
+            py::gil_scoped_release release;
+            best = design_batch(s, cands, o, indices, stats);
+          }
+          return batch_tuple(best, stats);
+        });
+  // The bounded search, driven by fixel.design's Dask path: the best K so
+  // far crosses as [(index, score text)], best first.
+  py::class_<SearchBox>(m, "DesignSearch")
+      .def(py::init([](const ScenePtr& scene, const CandidateList& list, const py::dict& opts) {
+        const Scene& s = checked(scene, "scene");
+        const auto cands = candidates_of(s, list);
+        return std::make_unique<SearchBox>(SearchBox{DesignSearch(s, cands, options_of(opts))});
+      }))
+      .def("applies", [](const SearchBox& b) { return b.search.applies(); })
+      .def("pilot", [](const SearchBox& b) { return b.search.pilot(); })
+      .def("singular", [](const SearchBox& b) { return b.search.singular(); })
+      .def("start",
+           [](SearchBox& b, const TopList& top) {
+             const auto layouts = layouts_of(top);
+             py::gil_scoped_release release;
+             return b.search.start(layouts);
+           })
+      .def("next", [](SearchBox& b, const TopList& top, long block) { return b.search.next(layouts_of(top), block); });
   // The report of a distributed run: re-scores the chosen triples (their
   // scores are a pure function of the triple), completes them and writes
   // the `fixel design --json` document with the run's counts.
@@ -111,7 +166,8 @@ void bind_design(py::module_& m) {
           const Scene& s = checked(scene, "scene");
           const auto cands = candidates_of(s, list);
           DesignOptions o = options_of(opts);
-          if (counts.size() != 4) throw InputError("counts", std::to_string(counts.size()), "must have 4 entries");
+          if (counts.size() != 4 && counts.size() != 5)
+            throw InputError("counts", std::to_string(counts.size()), "must have 4 or 5 entries");
           py::gil_scoped_release release;
           DesignResult r;
           r.candidates = cands;
@@ -121,6 +177,7 @@ void bind_design(py::module_& m) {
           r.stats.no_form_closure = counts[1];
           r.stats.j_empty = counts[2];
           r.stats.regions = counts[3];
+          if (counts.size() == 5) r.stats.bounded = counts[4];
           r.stats.seconds = seconds;
           r.stats.jobs = jobs;
           DesignStats ignored;

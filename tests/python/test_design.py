@@ -45,6 +45,12 @@ def polygon_candidates():
     return [(c.curve, c.u) for c in fixel.design_candidates(SCENE_DIR / "polygon.json")[::3]]
 
 
+@pytest.fixture(scope="module")
+def twelve_candidates():
+    # Every other default candidate: 12 candidates, 220 triples.
+    return [(c.curve, c.u) for c in fixel.design_candidates(SCENE_DIR / "polygon.json")[::2]]
+
+
 def test_the_house_ranks_its_mirror_pair_first_with_equal_exact_scores():
     d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=0, pusher_mu=0, resolution="1/64", top=10, jobs=1)
     assert d.stats["triples"] == 4 and d.stats["singular"] == 2
@@ -67,14 +73,34 @@ def test_the_python_thread_pool_agrees_with_the_cli(tmp_path, polygon_candidates
 def test_dask_gives_the_thread_pools_ranking(client, polygon_candidates):
     pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, exhaustive=True, **SMALL)
     dask = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
-                        **SMALL)  # fmt: skip
+                        exhaustive=True, **SMALL)  # fmt: skip
     assert dask.ranking() == pool.ranking()
     assert len(pool.layouts) == 5
-    # Both score every triple (the cluster always does).
+    # Both score every triple.
     for key in ("triples", "singular", "no_form_closure", "j_empty", "regions", "bounded"):
         assert dask.stats[key] == pool.stats[key]
-    assert pool.stats["bounded"] == 0
+    assert pool.stats["bounded"] == 0 and dask.stats["batches"] == 6 and dask.stats["rounds"] == 0
     assert [l.step_score for l in dask.layouts] == [l.step_score for l in pool.layouts]
+
+
+def test_dask_scores_in_the_bounds_order_and_gives_the_exhaustive_ranking(client, twelve_candidates):
+    every = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=2, exhaustive=True, **SMALL)
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=2, **SMALL)
+    for batch_size, wave in ((3, 1), (4, 2), (32, 1)):
+        dask = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, client=client,
+                            batch_size=batch_size, wave=wave, **SMALL)  # fmt: skip
+        assert dask.ranking() == every.ranking()
+        s = dask.stats
+        assert s["singular"] + s["no_form_closure"] + s["j_empty"] + s["regions"] + s["bounded"] == s["triples"] == 220
+        assert s["singular"] == every.stats["singular"] and s["bounded"] > 0
+        # The pilot is one batch; the rest come in rounds of at most `wave`.
+        assert s["rounds"] >= 1 and s["batches"] <= 1 + wave * s["rounds"]
+        if (batch_size, wave) == (32, 1):  # the thread pool's blocks: its counts too
+            for key in ("no_form_closure", "j_empty", "regions", "bounded"):
+                assert s[key] == pool.stats[key]
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, client=client, wave=0)
+    assert (e.value.field, e.value.value) == ("wave", "0")
 
 
 def test_the_bound_skips_triples_and_keeps_the_exhaustive_ranking(polygon_candidates):
@@ -90,11 +116,11 @@ def test_the_bound_skips_triples_and_keeps_the_exhaustive_ranking(polygon_candid
         fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, exhaustive="yes")
 
 
-def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, polygon_candidates, tmp_path):
-    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=1, **SMALL)
+def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, twelve_candidates, tmp_path):
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=1, **SMALL)
     marker = str(tmp_path / "failed-once")
-    d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
-                     retries=1, _fail_once=(2, marker), **SMALL)  # fmt: skip
+    d = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, client=client, batch_size=3, wave=1,
+                     retries=1, _fail_once=(1, marker), **SMALL)  # fmt: skip
     assert (tmp_path / "failed-once").exists()  # it did fail once
     assert d.ranking() == pool.ranking()
 
@@ -105,13 +131,33 @@ def test_a_rerun_with_the_output_file_resumes_after_a_failed_batch(client, polyg
     marker = str(tmp_path / "failed-once")
     with pytest.raises(fixel.Error, match="rerun with it to resume"):
         fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
-                     retries=0, output=out, _fail_once=(3, marker), **SMALL)  # fmt: skip
+                     retries=0, output=out, exhaustive=True, _fail_once=(3, marker), **SMALL)  # fmt: skip
     with open(out) as f:
         assert len(f.readlines()) == 5  # 6 batches of 56 triples, one failed
     d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
-                     retries=0, output=out, **SMALL)  # fmt: skip
+                     retries=0, output=out, exhaustive=True, **SMALL)  # fmt: skip
     assert d.stats["batches"] == 6 and d.stats["batches_resumed"] == 5
     assert d.ranking() == pool.ranking()
+
+
+def test_a_bounded_rerun_resumes_the_batches_it_would_hand_out_again(client, twelve_candidates, tmp_path):
+    every = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=1, exhaustive=True, **SMALL)
+    out = str(tmp_path / "design.jsonl")
+    marker = str(tmp_path / "failed-once")
+    run = dict(candidates=twelve_candidates, client=client, batch_size=3, wave=2, retries=0, output=out, **SMALL)
+    with pytest.raises(fixel.Error, match="rerun with it to resume"):
+        fixel.design(SCENE_DIR / "polygon.json", _fail_once=(2, marker), **run)
+    with open(out) as f:
+        recorded = [json.loads(line) for line in f]
+    assert [r["batch"] for r in recorded] == [0, 1]  # the pilot, and batch 2's partner in its round
+    assert all(len(r["triples"]) == r["count"] for r in recorded)
+    d = fixel.design(SCENE_DIR / "polygon.json", **run)
+    assert d.stats["batches_resumed"] == 2 and d.stats["batches"] > 2
+    assert d.ranking() == every.ranking()
+    # A third run finds every batch it hands out in the file.
+    again = fixel.design(SCENE_DIR / "polygon.json", **run)
+    assert again.stats["batches_resumed"] == again.stats["batches"] == d.stats["batches"]
+    assert again.ranking() == every.ranking()
 
 
 def test_an_unreachable_scheduler_is_a_clear_error_within_a_bounded_time():
