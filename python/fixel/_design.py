@@ -327,7 +327,8 @@ class _Batches:
                 [triples for _, _, _, triples in todo],
                 # A fresh suffix per call: a rerun must not meet an erred task the
                 # scheduler still remembers under the same key.
-                key=[f"fixel-design-{self.key}-{b}-{self.nonce}" for b, _, _, _ in todo],
+                # Ranges and blocks of listed triples are numbered apart.
+                key=[f"fixel-design-{self.key}-{'r' if t is None else 't'}{b}-{self.nonce}" for b, _, _, t in todo],
                 retries=self.retries,
                 pure=False,
             )

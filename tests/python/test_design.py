@@ -116,6 +116,17 @@ def test_the_bound_skips_triples_and_keeps_the_exhaustive_ranking(polygon_candid
         fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, exhaustive="yes")
 
 
+def test_dask_scores_every_triple_once_when_the_pilot_scores_nothing(client):
+    # On nonunique_part every layout scores 0: after the pilot, the ranges.
+    cands = [(c.curve, c.u) for c in fixel.design_candidates(SCENE_DIR / "nonunique_part.json")[::2]]
+    pool = fixel.design(SCENE_DIR / "nonunique_part.json", candidates=cands, jobs=2, **SMALL)
+    dask = fixel.design(SCENE_DIR / "nonunique_part.json", candidates=cands, client=client, batch_size=16, **SMALL)
+    assert dask.ranking() == pool.ranking() and pool.layouts[0].score == 0
+    for key in ("triples", "singular", "no_form_closure", "j_empty", "regions", "bounded"):
+        assert dask.stats[key] == pool.stats[key]
+    assert dask.stats["batches"] == 1 + 14 and dask.stats["rounds"] == 0  # the pilot, then 220 triples by 16
+
+
 def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, twelve_candidates, tmp_path):
     pool = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=1, **SMALL)
     marker = str(tmp_path / "failed-once")
