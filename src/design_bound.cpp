@@ -5,6 +5,7 @@
 #include "fixel/internal/design_bound.h"
 
 #include <map>
+#include <mutex>
 #include <string>
 
 #include "fixel/cone.h"
@@ -13,6 +14,7 @@
 #include "fixel/internal/enclosed_plane.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/region_context.h"
+#include "fixel/wrench_cone.h"
 
 namespace fixel::internal {
 
@@ -71,7 +73,41 @@ struct PairBound::Impl {
   std::vector<FI> unit_enclosed;
   std::vector<Pair> pairs;
 
+  // A node of a piece's subdivision (heap order: node 1 is the piece, node
+  // i's halves are 2i and 2i + 1): its exact sub-piece and the frictionless
+  // finger's tight wrench cone there, made once, on first use, by whichever
+  // pair's thread gets there first, then shared by every pair.
+  struct Node {
+    std::once_flag made;
+    BezierPiece segment;
+    bool pointed = false;        // false: no cone (the tangents turn by π), always split
+    std::vector<VectorQ> cone;   // generators
+    std::vector<FGen> enclosed;  // their enclosures
+  };
+  std::vector<std::vector<std::unique_ptr<Node>>> nodes;  // per piece, 2^(depth + 1) slots
+
   Impl(const Scene& p, const Rational& r, const Rational& m) : part(p), resolution(r), mu(m) {}
+
+  const Node& node(int piece, std::size_t i) const {
+    Node& node = *nodes[piece][i];
+    std::call_once(node.made, [&] {
+      const auto& pieces = part.body.boundary->pieces;
+      if (i == 1) {
+        node.segment = pieces[piece];
+      } else {
+        auto halves = this->node(piece, i / 2).segment.split(Rational(1, 2));
+        node.segment = std::move(i % 2 == 0 ? halves.first : halves.second);
+      }
+      const SegmentBounds bounds = segment_bounds(node.segment, false);
+      if (auto c = segment_wrench_cone(bounds, part.body.p_AoCm_A, EdgeFamily::kNormal, Rational(0), ConeMethod::kTight,
+                                       /*with_facets=*/false)) {
+        node.pointed = true;
+        node.cone = std::move(c->generators);
+        for (const auto& g : node.cone) node.enclosed.push_back(enclose(g));
+      }
+    });
+    return node;
+  }
 
   long pair_index(int a, int b) const {  // a < b
     return static_cast<long>(a) * (2L * n - a - 1) / 2 + (b - a - 1);
@@ -176,6 +212,10 @@ PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cand
     }
     m.cls.push_back(it->second);
   }
+  for (int d : m.depth) {
+    m.nodes.emplace_back(std::size_t(2) << d);
+    for (auto& slot : m.nodes.back()) slot = std::make_unique<Impl::Node>();
+  }
   m.pairs.resize(static_cast<std::size_t>(m.n) * (m.n - 1) / 2);
   for (int a = 0; a < m.n; ++a)
     for (int c = a + 1; c < m.n; ++c) {
@@ -194,50 +234,122 @@ long PairBound::pair_count() const { return static_cast<long>(impl_->pairs.size(
 
 namespace {
 
-// The region of a frictionless finger against `target` on the grid, as
-// runs of cells: `in` gets the IN ones, `not_in` the others, `not_out` the
-// ones that are not OUT.
-void grid_region(const PairBound::Impl& m, RegionTarget& target, const std::vector<Join>& joins,
-                 std::vector<Span>* not_out, std::vector<Span>* not_in, std::vector<Span>* in) {
-  RegionOptions options;
-  options.resolution = m.resolution;
-  options.pusher_mu = Rational(0);
-  options.merge = false;  // one interval per grid stretch of one piece
-  const Region region = compute_region_joined(m.part, target, options, &joins, /*locate=*/false);
-  const auto& pieces = m.part.body.boundary->pieces;
-  std::size_t k = 0;
-  for (const auto& iv : region.intervals) {
-    if (iv.u0 == iv.u1) continue;  // a corner: no length
-    while (k < pieces.size() && !(pieces[k].curve == iv.curve && pieces[k].u0 <= iv.u0 && iv.u1 <= pieces[k].u1)) ++k;
-    if (k == pieces.size()) throw InternalError("design bound: a region interval lies in no piece of the outline");
-    const BezierPiece& piece = pieces[k];
-    const Rational scale = Rational(1L << m.depth[k]) / (piece.u1 - piece.u0);
-    const Rational lo = (iv.u0 - piece.u0) * scale, hi = (iv.u1 - piece.u0) * scale;
-    if (boost::multiprecision::denominator(lo) != 1 || boost::multiprecision::denominator(hi) != 1)
-      throw InternalError("design bound: a region interval is not on its piece's grid");
-    const Span span{static_cast<std::int32_t>(k), boost::multiprecision::numerator(lo).convert_to<std::int32_t>(),
-                    boost::multiprecision::numerator(hi).convert_to<std::int32_t>()};
-    if (not_out && iv.status != RegionStatus::kOut) append(*not_out, span);
-    if (not_in && iv.status != RegionStatus::kIn) append(*not_in, span);
-    if (in && iv.status == RegionStatus::kIn) append(*in, span);
+// Signs of a · g for the generators g of a node's cone: the enclosures
+// (one rounding-mode scope per node), else exact. Counts its decisions for
+// one batched record_filter per pair.
+struct Signs {
+  long certified = 0, fallbacks = 0;
+  const int* of(const VectorQ& a, const FGen& a_enclosed, const PairBound::Impl::Node& node) {
+    const std::size_t n = node.cone.size();
+    signs.resize(n);
+    if (!force_exact()) {
+      Protect guard;
+      for (std::size_t k = 0; k < n; ++k) {
+        const FGen& g = node.enclosed[k];
+        signs[k] = certain_sign(a_enclosed[0] * g[0] + a_enclosed[1] * g[1] + a_enclosed[2] * g[2]);
+      }
+    } else {
+      std::fill(signs.begin(), signs.end(), kUndecided);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      if (signs[k] != kUndecided) {
+        ++certified;
+        continue;
+      }
+      if (!force_exact()) ++fallbacks;
+      signs[k] = sign(a.dot(node.cone[k]));
+    }
+    return signs.data();
   }
+  ~Signs() {
+    if (certified + fallbacks > 0) record_filter(FilterSite::kDesignBound, certified, fallbacks);
+  }
+  std::vector<int> signs;
+};
+
+enum class Side { kIn, kOut, kPartial };
+
+// The open half-space c · w > 0 against a node's cone: IN when every
+// generator is in it, OUT when none is (the cone lies in c · w ≤ 0), else
+// partial. This is the region's segment test for that target
+// (docs/theory.md §10.6), on the same cone.
+Side half_space_side(const PairBound::Impl::Pair& p, const PairBound::Impl::Node& node, Signs& signs) {
+  if (!node.pointed) return Side::kPartial;
+  const int* s = signs.of(p.c, p.c_enclosed, node);
+  bool all_in = true, none_in = true;
+  for (std::size_t k = 0; k < node.cone.size(); ++k) {
+    all_in = all_in && s[k] > 0;
+    none_in = none_in && s[k] <= 0;
+  }
+  return all_in ? Side::kIn : none_in ? Side::kOut : Side::kPartial;
+}
+
+// The closed cone {w : a · w ≥ 0 for every facet a} against a node's cone:
+// IN when every generator is in it; OUT when one facet has every generator
+// strictly outside (no child can be IN then either); else partial.
+Side cone_side(const std::vector<VectorQ>& facets, const std::vector<FGen>& facets_enclosed,
+               const PairBound::Impl::Node& node, Signs& signs) {
+  if (!node.pointed) return Side::kPartial;
+  bool all_in = true;
+  for (std::size_t j = 0; j < facets.size(); ++j) {
+    const int* s = signs.of(facets[j], facets_enclosed[j], node);
+    bool all_out = true;
+    for (std::size_t k = 0; k < node.cone.size(); ++k) {
+      all_in = all_in && s[k] >= 0;
+      all_out = all_out && s[k] < 0;
+    }
+    if (all_out) return Side::kOut;
+  }
+  return all_in ? Side::kIn : Side::kPartial;
+}
+
+// Walks piece `piece`'s subdivision from node i (at `level`) down to the
+// grid, splitting the nodes `side_of` calls partial, and passes each
+// decided node or partial cell, as a span of cells, to `take`.
+template <class SideOf, class Take>
+void walk(const PairBound::Impl& m, int piece, std::size_t i, int level, SideOf&& side_of, Take&& take) {
+  const Side side = side_of(m.node(piece, i));
+  const int d = m.depth[piece];
+  if (side != Side::kPartial || level == d) {
+    const std::int32_t first = static_cast<std::int32_t>(i - (std::size_t(1) << level)) << (d - level);
+    take(side, Span{piece, first, first + (std::int32_t(1) << (d - level))});
+    return;
+  }
+  walk(m, piece, 2 * i, level + 1, side_of, take);
+  walk(m, piece, 2 * i + 1, level + 1, side_of, take);
 }
 
 }  // namespace
 
-void PairBound::compute_pair(long index, const std::vector<Join>& joins) {
+void PairBound::compute_pair(long index) {
   Impl& m = *impl_;
   Impl::Pair& p = m.pairs.at(index);
   if (p.c.isZero()) return;  // parallel wrenches: every triple with both is singular
-  grid_region(m, *open_half_space_target(p.c), joins, &p.side[0], &p.side[1], nullptr);
+  const int pieces = static_cast<int>(m.depth.size());
+  Signs signs;
+  for (int k = 0; k < pieces; ++k)
+    walk(
+        m, k, 1, 0, [&](const Impl::Node& node) { return half_space_side(p, node, signs); },
+        [&](Side side, const Span& span) {
+          if (side != Side::kOut) append(p.side[0], span);
+          if (side != Side::kIn) append(p.side[1], span);
+        });
   if (m.mu == 0) return;  // the jam cone is a plane's wedge: it holds no stretch's pushes
   // Stretches whose every push the pair can hold, −(FC_a + FC_b), have no
   // point of J's region (docs/theory.md §10.6): off both sides.
   std::vector<VectorQ> jam;
   for (int i : {m.first_of(index), m.second_of(index)})
     for (int s : {1, -1}) jam.push_back(-(m.wrench[i] + Rational(s) * m.mu * m.tangent_wrench[i]));
+  const std::vector<VectorQ> facets = cone_facet_normals(jam, 3);
+  std::vector<FGen> facets_enclosed;
+  for (const auto& a : facets) facets_enclosed.push_back(enclose(a));
   std::vector<Span> held;
-  grid_region(m, *closed_cone_target(cone_facet_normals(jam, 3)), joins, nullptr, nullptr, &held);
+  for (int k = 0; k < pieces; ++k)
+    walk(
+        m, k, 1, 0, [&](const Impl::Node& node) { return cone_side(facets, facets_enclosed, node, signs); },
+        [&](Side side, const Span& span) {
+          if (side == Side::kIn) append(held, span);
+        });
   if (held.empty()) return;
   for (auto& side : p.side) side = minus(side, held);
 }

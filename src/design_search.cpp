@@ -116,7 +116,6 @@ bool DesignSearch::start(const std::vector<DesignLayout>& top) {
   }
   const int jobs = s.options.jobs > 0 ? s.options.jobs : std::max(1, tbb::info::default_concurrency());
   tbb::task_arena arena(jobs);
-  const std::vector<internal::Join> joins = internal::joins(internal::boundary_of(s.part));
   s.bound.emplace(s.part, s.cands, s.options);
   internal::PairBound& bound = *s.bound;
   SharedPoll poll_shared(s.options.control);
@@ -125,7 +124,7 @@ bool DesignSearch::start(const std::vector<DesignLayout>& top) {
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<long>(0, pairs, 1), [&](const tbb::blocked_range<long>& r) {
       for (long p = r.begin(); p != r.end(); ++p) {
-        bound.compute_pair(p, joins);
+        bound.compute_pair(p);
         poll_shared("design: pair bounds", ++done, pairs, "pairs");
       }
     });

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <tuple>
+
 #include "fixel/design.h"
 #include "fixel/filter.h"
 #include "fixel/internal/design_detail.h"
@@ -26,8 +29,7 @@ std::vector<DesignCandidate> every_other(const Scene& part) {
 
 PairBound bound_of(const Scene& part, const std::vector<DesignCandidate>& c, const DesignOptions& o) {
   PairBound b(part, c, o);
-  const auto joins = internal::joins(*part.body.boundary);
-  for (long p = 0; p < b.pair_count(); ++p) b.compute_pair(p, joins);
+  for (long p = 0; p < b.pair_count(); ++p) b.compute_pair(p);
   return b;
 }
 
@@ -113,6 +115,107 @@ std::vector<VectorQ> jam_generators(const Scene& part, const DesignCandidate& a,
     g.push_back(-(n - mu * t));
   }
   return g;
+}
+
+// Stretches of the outline as (curve, u0, u1), in loop order.
+using Stretches = std::vector<std::tuple<int, Rational, Rational>>;
+
+// The stretches of a frictionless finger's region against `target`, at the
+// pair bound's resolution, whose status `keep` accepts (corners dropped).
+template <class Keep>
+Stretches region_stretches(const Scene& part, RegionTarget& target, const Rational& resolution, Keep&& keep) {
+  RegionOptions o;
+  o.resolution = resolution;
+  o.pusher_mu = Rational(0);
+  o.merge = false;
+  Stretches out;
+  for (const auto& iv : compute_region(part, target, o).intervals)
+    if (iv.u0 != iv.u1 && keep(iv.status)) out.emplace_back(iv.curve, iv.u0, iv.u1);
+  return out;
+}
+
+// What both lists hold (sorted, disjoint stretches).
+Stretches intersect(const Stretches& a, const Stretches& b) {
+  Stretches out;
+  for (const auto& [ca, a0, a1] : a)
+    for (const auto& [cb, b0, b1] : b)
+      if (ca == cb && std::max(a0, b0) < std::min(a1, b1)) out.emplace_back(ca, std::max(a0, b0), std::min(a1, b1));
+  return out;
+}
+
+// What `a` holds outside `cut`.
+Stretches minus(const Stretches& a, const Stretches& cut) {
+  Stretches out;
+  for (auto [ca, lo, hi] : a) {
+    for (const auto& [cc, c0, c1] : cut) {
+      if (cc != ca || c1 <= lo || c0 >= hi) continue;
+      if (c0 > lo) out.emplace_back(ca, lo, c0);
+      lo = std::max(lo, c1);
+      if (lo >= hi) break;
+    }
+    if (lo < hi) out.emplace_back(ca, lo, hi);
+  }
+  return out;
+}
+
+// A second method for the whole bound: the pair regions made by the region
+// code itself (compute_region against the pair's open half-space and its
+// jam cone, at the same resolution), K's rows from their definition, and
+// the intersection's length in rationals. PairBound makes the same tests on
+// cones it builds once per node of the grid and shares between pairs, so
+// the two must agree exactly, triple by triple.
+GTEST_TEST(PairBound, IsTheBoundOfTheRegionsAgainstEachPairsHalfSpaceAndJamCone) {
+  for (const char* name : {"polygon", "blob"}) {
+    const Scene part = scene_file(name);
+    const auto all = boundary_candidates(part, std::nullopt);
+    std::vector<DesignCandidate> c;
+    for (std::size_t k = 0; k < all.size(); k += 3) c.push_back(all[k]);  // 8 candidates, 56 triples
+    const int n = static_cast<int>(c.size());
+    const Rational total = internal::total_length(*part.body.boundary);
+    DesignOptions o;
+    o.mu = Rational(1, 5);
+    const Rational resolution = std::max(o.resolution, total / PairBound::kCells);
+    std::vector<VectorQ> W;
+    for (const auto& x : c) W.push_back(contact_wrench(sub(x.point, part.body.p_AoCm_A), x.normal, 3));
+    // Per pair a < b: [0] c · w > 0 may hold, [1] c · w < 0 may, less the jam cone's IN stretches.
+    std::map<std::pair<int, int>, std::array<Stretches, 2>> sides;
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) {
+        const VectorQ cab = internal::cross3(W[a], W[b]);
+        if (cab.isZero()) continue;
+        auto half = internal::open_half_space_target(cab);
+        const Stretches may_pos =
+            region_stretches(part, *half, resolution, [](RegionStatus s) { return s != RegionStatus::kOut; });
+        const Stretches may_neg =
+            region_stretches(part, *half, resolution, [](RegionStatus s) { return s != RegionStatus::kIn; });
+        std::vector<VectorQ> jam = jam_generators(part, c[a], c[b], o.mu);
+        auto cone = internal::closed_cone_target(cone_facet_normals(jam, 3));
+        const Stretches held =
+            region_stretches(part, *cone, resolution, [](RegionStatus s) { return s == RegionStatus::kIn; });
+        sides[{a, b}] = {minus(may_pos, held), minus(may_neg, held)};
+      }
+    const PairBound bound = bound_of(part, c, o);
+    int below_one = 0;
+    for (long index = 0; index < triple_count(n); ++index) {
+      const auto f = triple_at(n, index);
+      if (bound.singular(f)) continue;
+      const auto rows = k_rows({W[f[0]], W[f[1]], W[f[2]]});
+      Stretches shared{{-1, Rational(0), Rational(0)}};
+      for (int i = 0; i < 3; ++i) {
+        const int a = f[(i + 1) % 3], b = f[(i + 2) % 3];
+        const VectorQ cab = internal::cross3(W[std::min(a, b)], W[std::max(a, b)]);
+        // Row i is a positive multiple of c_ab or of −c_ab.
+        const bool along = rows[i].dot(cab) > 0;
+        const Stretches& side = sides.at({std::min(a, b), std::max(a, b)})[along ? 0 : 1];
+        shared = i == 0 ? side : intersect(shared, side);
+      }
+      Rational length(0);
+      for (const auto& [curve, u0, u1] : shared) length += u1 - u0;
+      EXPECT_EQ(bound.exact(f), length / total) << name << " triple " << index;
+      below_one += length < total;
+    }
+    EXPECT_GE(below_one, 20) << name;
+  }
 }
 
 // A second method: at the midpoint of every cell of the pairs' grid, the

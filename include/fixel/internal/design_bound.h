@@ -38,10 +38,11 @@ class PairBound {
   static constexpr int kCells = 256;
 
   long pair_count() const;
-  // Computes pair p (a < b, lexicographic) by one region against its
-  // half-space; safe to call for distinct p from several threads. `joins`:
-  // those of the part's outline.
-  void compute_pair(long p, const std::vector<Join>& joins);
+  // Computes pair p (a < b, lexicographic): its half-space's and its jam
+  // cone's stretches, by the region's segment test on each piece's grid
+  // (the pieces' subdivision and their cones are made once and shared by
+  // every pair); safe to call for distinct p from several threads.
+  void compute_pair(long p);
 
   // Whether W_n of triple f (increasing candidate indices) is singular
   // (filtered sign of its determinant, exact fallback).
