@@ -4,6 +4,7 @@
 // the length of the stretches its three rows of K share.
 #include "fixel/internal/design_bound.h"
 
+#include <algorithm>
 #include <map>
 #include <mutex>
 #include <string>
@@ -73,16 +74,24 @@ struct PairBound::Impl {
   std::vector<FI> unit_enclosed;
   std::vector<Pair> pairs;
 
+  // The pusher's edge families at its friction: the normal alone for 0,
+  // else the fan's two edges n ± μ_p t (an IN point's whole fan is in J).
+  Rational pusher_mu;
+  std::vector<EdgeFamily> families;
+
   // A node of a piece's subdivision (heap order: node 1 is the piece, node
-  // i's halves are 2i and 2i + 1): its exact sub-piece and the frictionless
-  // finger's tight wrench cone there, made once, on first use, by whichever
-  // pair's thread gets there first, then shared by every pair.
+  // i's halves are 2i and 2i + 1): its exact sub-piece and, per family, the
+  // tight wrench cone there, made once, on first use, by whichever pair's
+  // thread gets there first, then shared by every pair.
+  struct Cone {
+    bool pointed = false;        // false: no cone (the directions turn by π), always split
+    std::vector<VectorQ> gens;   // generators
+    std::vector<FGen> enclosed;  // their enclosures
+  };
   struct Node {
     std::once_flag made;
     BezierPiece segment;
-    bool pointed = false;        // false: no cone (the tangents turn by π), always split
-    std::vector<VectorQ> cone;   // generators
-    std::vector<FGen> enclosed;  // their enclosures
+    std::vector<Cone> cones;  // per family
   };
   std::vector<std::vector<std::unique_ptr<Node>>> nodes;  // per piece, 2^(depth + 1) slots
 
@@ -99,11 +108,14 @@ struct PairBound::Impl {
         node.segment = std::move(i % 2 == 0 ? halves.first : halves.second);
       }
       const SegmentBounds bounds = segment_bounds(node.segment, false);
-      if (auto c = segment_wrench_cone(bounds, part.body.p_AoCm_A, EdgeFamily::kNormal, Rational(0), ConeMethod::kTight,
-                                       /*with_facets=*/false)) {
-        node.pointed = true;
-        node.cone = std::move(c->generators);
-        for (const auto& g : node.cone) node.enclosed.push_back(enclose(g));
+      for (EdgeFamily family : families) {
+        Cone& cone = node.cones.emplace_back();
+        if (auto c = segment_wrench_cone(bounds, part.body.p_AoCm_A, family, pusher_mu, ConeMethod::kTight,
+                                         /*with_facets=*/false)) {
+          cone.pointed = true;
+          cone.gens = std::move(c->generators);
+          for (const auto& g : cone.gens) cone.enclosed.push_back(enclose(g));
+        }
       }
     });
     return node;
@@ -185,6 +197,11 @@ PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cand
                                    options.mu_hi.value_or(options.mu))) {
   Impl& m = *impl_;
   const Boundary& b = boundary_of(part);
+  m.pusher_mu = options.pusher_mu;
+  if (m.pusher_mu == 0)
+    m.families = {EdgeFamily::kNormal};
+  else
+    m.families = {EdgeFamily::kMinus, EdgeFamily::kPlus};
   m.n = static_cast<int>(cands.size());
   for (const auto& c : cands) {
     const Vec2 r = sub(c.point, part.body.p_AoCm_A);
@@ -239,13 +256,13 @@ namespace {
 // one batched record_filter per pair.
 struct Signs {
   long certified = 0, fallbacks = 0;
-  const int* of(const VectorQ& a, const FGen& a_enclosed, const PairBound::Impl::Node& node) {
-    const std::size_t n = node.cone.size();
+  const int* of(const VectorQ& a, const FGen& a_enclosed, const PairBound::Impl::Cone& cone) {
+    const std::size_t n = cone.gens.size();
     signs.resize(n);
     if (!force_exact()) {
       Protect guard;
       for (std::size_t k = 0; k < n; ++k) {
-        const FGen& g = node.enclosed[k];
+        const FGen& g = cone.enclosed[k];
         signs[k] = certain_sign(a_enclosed[0] * g[0] + a_enclosed[1] * g[1] + a_enclosed[2] * g[2]);
       }
     } else {
@@ -257,7 +274,7 @@ struct Signs {
         continue;
       }
       if (!force_exact()) ++fallbacks;
-      signs[k] = sign(a.dot(node.cone[k]));
+      signs[k] = sign(a.dot(cone.gens[k]));
     }
     return signs.data();
   }
@@ -269,32 +286,31 @@ struct Signs {
 
 enum class Side { kIn, kOut, kPartial };
 
-// The open half-space c · w > 0 against a node's cone: IN when every
-// generator is in it, OUT when none is (the cone lies in c · w ≤ 0), else
-// partial. This is the region's segment test for that target
-// (docs/theory.md §10.6), on the same cone.
-Side half_space_side(const PairBound::Impl::Pair& p, const PairBound::Impl::Node& node, Signs& signs) {
-  if (!node.pointed) return Side::kPartial;
-  const int* s = signs.of(p.c, p.c_enclosed, node);
+// The open half-space c · w > 0 against a cone: IN when every generator is
+// in it, OUT when none is (the cone lies in c · w ≤ 0), else partial. This
+// is the region's segment test for that target (docs/theory.md §10.6).
+Side half_space_side(const PairBound::Impl::Pair& p, const PairBound::Impl::Cone& cone, Signs& signs) {
+  if (!cone.pointed) return Side::kPartial;
+  const int* s = signs.of(p.c, p.c_enclosed, cone);
   bool all_in = true, none_in = true;
-  for (std::size_t k = 0; k < node.cone.size(); ++k) {
+  for (std::size_t k = 0; k < cone.gens.size(); ++k) {
     all_in = all_in && s[k] > 0;
     none_in = none_in && s[k] <= 0;
   }
   return all_in ? Side::kIn : none_in ? Side::kOut : Side::kPartial;
 }
 
-// The closed cone {w : a · w ≥ 0 for every facet a} against a node's cone:
-// IN when every generator is in it; OUT when one facet has every generator
-// strictly outside (no child can be IN then either); else partial.
+// The closed cone {w : a · w ≥ 0 for every facet a} against a cone: IN when
+// every generator is in it; OUT when one facet has every generator
+// strictly outside (no sub-piece can be IN then either); else partial.
 Side cone_side(const std::vector<VectorQ>& facets, const std::vector<FGen>& facets_enclosed,
-               const PairBound::Impl::Node& node, Signs& signs) {
-  if (!node.pointed) return Side::kPartial;
+               const PairBound::Impl::Cone& cone, Signs& signs) {
+  if (!cone.pointed) return Side::kPartial;
   bool all_in = true;
   for (std::size_t j = 0; j < facets.size(); ++j) {
-    const int* s = signs.of(facets[j], facets_enclosed[j], node);
+    const int* s = signs.of(facets[j], facets_enclosed[j], cone);
     bool all_out = true;
-    for (std::size_t k = 0; k < node.cone.size(); ++k) {
+    for (std::size_t k = 0; k < cone.gens.size(); ++k) {
       all_in = all_in && s[k] >= 0;
       all_out = all_out && s[k] < 0;
     }
@@ -303,20 +319,31 @@ Side cone_side(const std::vector<VectorQ>& facets, const std::vector<FGen>& face
   return all_in ? Side::kIn : Side::kPartial;
 }
 
+// Whether a node's cells belong to a list: certainly, certainly not, or
+// not known at this node (split it; a cell of the grid left unknown
+// belongs).
+enum class Member { kYes, kNo, kMaybe };
+
 // Walks piece `piece`'s subdivision from node i (at `level`) down to the
-// grid, splitting the nodes `side_of` calls partial, and passes each
-// decided node or partial cell, as a span of cells, to `take`.
-template <class SideOf, class Take>
-void walk(const PairBound::Impl& m, int piece, std::size_t i, int level, SideOf&& side_of, Take&& take) {
-  const Side side = side_of(m.node(piece, i));
+// grid. `decide(node, lists)` settles each list still kMaybe at the node;
+// a settled list holds for the node's sub-pieces too. A node is split while
+// a list is kMaybe; each settled node or grid cell goes to `take(span,
+// lists)` with kMaybe read as kYes.
+template <std::size_t L, class Decide, class Take>
+void walk(const PairBound::Impl& m, int piece, std::size_t i, int level, std::array<Member, L> lists, Decide&& decide,
+          Take&& take) {
+  decide(m.node(piece, i), lists);
   const int d = m.depth[piece];
-  if (side != Side::kPartial || level == d) {
+  const bool settled = std::none_of(lists.begin(), lists.end(), [](Member x) { return x == Member::kMaybe; });
+  if (settled || level == d) {
     const std::int32_t first = static_cast<std::int32_t>(i - (std::size_t(1) << level)) << (d - level);
-    take(side, Span{piece, first, first + (std::int32_t(1) << (d - level))});
+    std::array<bool, L> in{};
+    for (std::size_t k = 0; k < L; ++k) in[k] = lists[k] != Member::kNo;
+    take(Span{piece, first, first + (std::int32_t(1) << (d - level))}, in);
     return;
   }
-  walk(m, piece, 2 * i, level + 1, side_of, take);
-  walk(m, piece, 2 * i + 1, level + 1, side_of, take);
+  walk(m, piece, 2 * i, level + 1, lists, decide, take);
+  walk(m, piece, 2 * i + 1, level + 1, lists, decide, take);
 }
 
 }  // namespace
@@ -327,29 +354,53 @@ void PairBound::compute_pair(long index) {
   if (p.c.isZero()) return;  // parallel wrenches: every triple with both is singular
   const int pieces = static_cast<int>(m.depth.size());
   Signs signs;
+  // Side 0, "c · w > 0 may hold for every family": no family's cone is OUT.
+  // Side 1, "c · w < 0 may hold for every family": none is IN.
+  const auto halves = [&](const Impl::Node& node, std::array<Member, 2>& lists) {
+    bool all_in = true, all_out = true;
+    for (const auto& cone : node.cones) {
+      const Side side = half_space_side(p, cone, signs);
+      if (side == Side::kOut) lists[0] = Member::kNo;
+      if (side == Side::kIn) lists[1] = Member::kNo;
+      all_in = all_in && side == Side::kIn;
+      all_out = all_out && side == Side::kOut;
+    }
+    if (all_in && lists[0] == Member::kMaybe) lists[0] = Member::kYes;
+    if (all_out && lists[1] == Member::kMaybe) lists[1] = Member::kYes;
+  };
   for (int k = 0; k < pieces; ++k)
-    walk(
-        m, k, 1, 0, [&](const Impl::Node& node) { return half_space_side(p, node, signs); },
-        [&](Side side, const Span& span) {
-          if (side != Side::kOut) append(p.side[0], span);
-          if (side != Side::kIn) append(p.side[1], span);
-        });
+    walk<2>(m, k, 1, 0, {Member::kMaybe, Member::kMaybe}, halves, [&](const Span& span, const std::array<bool, 2>& in) {
+      if (in[0]) append(p.side[0], span);
+      if (in[1]) append(p.side[1], span);
+    });
   if (m.mu == 0) return;  // the jam cone is a plane's wedge: it holds no stretch's pushes
-  // Stretches whose every push the pair can hold, −(FC_a + FC_b), have no
-  // point of J's region (docs/theory.md §10.6): off both sides.
+  // Stretches where one family's every push the pair can hold, −(FC_a +
+  // FC_b), have no point of J's region (docs/theory.md §10.6): off both sides.
   std::vector<VectorQ> jam;
   for (int i : {m.first_of(index), m.second_of(index)})
     for (int s : {1, -1}) jam.push_back(-(m.wrench[i] + Rational(s) * m.mu * m.tangent_wrench[i]));
   const std::vector<VectorQ> facets = cone_facet_normals(jam, 3);
   std::vector<FGen> facets_enclosed;
   for (const auto& a : facets) facets_enclosed.push_back(enclose(a));
+  // The list "not held": no family's cone is IN the jam cone. A cell left
+  // unknown is not known to be held, so it stays.
+  const auto free = [&](const Impl::Node& node, std::array<Member, 1>& not_held) {
+    bool all_out = true;
+    for (const auto& cone : node.cones) {
+      const Side side = cone_side(facets, facets_enclosed, cone, signs);
+      if (side == Side::kIn) {
+        not_held[0] = Member::kNo;
+        return;
+      }
+      all_out = all_out && side == Side::kOut;
+    }
+    if (all_out) not_held[0] = Member::kYes;
+  };
   std::vector<Span> held;
   for (int k = 0; k < pieces; ++k)
-    walk(
-        m, k, 1, 0, [&](const Impl::Node& node) { return cone_side(facets, facets_enclosed, node, signs); },
-        [&](Side side, const Span& span) {
-          if (side == Side::kIn) append(held, span);
-        });
+    walk<1>(m, k, 1, 0, {Member::kMaybe}, free, [&](const Span& span, const std::array<bool, 1>& not_held) {
+      if (!not_held[0]) append(held, span);
+    });
   if (held.empty()) return;
   for (auto& side : p.side) side = minus(side, held);
 }

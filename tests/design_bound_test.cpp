@@ -224,45 +224,57 @@ GTEST_TEST(PairBound, IsTheBoundOfTheRegionsAgainstEachPairsHalfSpaceAndJamCone)
 // jam cone holds the push, no row's region can have found that cell OUT
 // and no jam cone can hold the whole cell, so the bound counts it.
 GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideKAndOutsideTheJamCones) {
-  for (const char* name : {"polygon", "example2_rounded", "blob"}) {
-    const Scene part = scene_file(name);
-    const auto c = every_other(part);
-    const long n = static_cast<long>(c.size());
-    DesignOptions o;
-    const PairBound b = bound_of(part, c, o);
-    const Boundary& outline = *part.body.boundary;
-    const Rational total = internal::total_length(outline);
-    const Rational resolution = std::max(o.resolution, total / PairBound::kCells);
-    int checked = 0;
-    for (long index = 0; index < triple_count(n); index += 7) {
-      const auto f = triple_at(n, index);
-      if (b.singular(f)) continue;
-      std::array<VectorQ, 3> W;
-      for (int i = 0; i < 3; ++i) W[i] = contact_wrench(sub(c[f[i]].point, part.body.p_AoCm_A), c[f[i]].normal, 3);
-      const auto rows = k_rows(W);
-      const std::array<std::vector<VectorQ>, 3> jams = {jam_generators(part, c[f[0]], c[f[1]], o.mu),
-                                                        jam_generators(part, c[f[0]], c[f[2]], o.mu),
-                                                        jam_generators(part, c[f[1]], c[f[2]], o.mu)};
-      Rational inside = 0;
-      for (const auto& piece : outline.pieces) {
-        Rational cell = piece.u1 - piece.u0;
-        int cells = 1;
-        while (cell > resolution) cell /= 2, cells *= 2;
-        for (int k = 0; k < cells; ++k) {
-          const Rational s = (Rational(k) + Rational(1, 2)) / cells;  // the cell's midpoint, piece-local
-          const Vec2 t = piece.derivative(s);
-          if (t.x == 0 && t.y == 0) continue;
-          const VectorQ w = contact_wrench(sub(piece.point(s), part.body.p_AoCm_A), Vec2{-t.y, t.x}, 3);
-          if (rows[0].dot(w) > 0 && rows[1].dot(w) > 0 && rows[2].dot(w) > 0 && !in_closed_cone(jams[0], w) &&
-              !in_closed_cone(jams[1], w) && !in_closed_cone(jams[2], w))
-            inside += cell / total;
+  for (const char* name : {"polygon", "example2_rounded", "blob"})
+    for (const Rational& pusher_mu : {Rational(0), Rational(1, 5)}) {
+      const Scene part = scene_file(name);
+      const auto c = every_other(part);
+      const long n = static_cast<long>(c.size());
+      DesignOptions o;
+      o.pusher_mu = pusher_mu;
+      const PairBound b = bound_of(part, c, o);
+      const Boundary& outline = *part.body.boundary;
+      const Rational total = internal::total_length(outline);
+      const Rational resolution = std::max(o.resolution, total / PairBound::kCells);
+      int checked = 0;
+      for (long index = 0; index < triple_count(n); index += pusher_mu > 0 ? 3 : 7) {
+        const auto f = triple_at(n, index);
+        if (b.singular(f)) continue;
+        std::array<VectorQ, 3> W;
+        for (int i = 0; i < 3; ++i) W[i] = contact_wrench(sub(c[f[i]].point, part.body.p_AoCm_A), c[f[i]].normal, 3);
+        const auto rows = k_rows(W);
+        const std::array<std::vector<VectorQ>, 3> jams = {jam_generators(part, c[f[0]], c[f[1]], o.mu),
+                                                          jam_generators(part, c[f[0]], c[f[2]], o.mu),
+                                                          jam_generators(part, c[f[1]], c[f[2]], o.mu)};
+        Rational inside = 0;
+        for (const auto& piece : outline.pieces) {
+          Rational cell = piece.u1 - piece.u0;
+          int cells = 1;
+          while (cell > resolution) cell /= 2, cells *= 2;
+          for (int k = 0; k < cells; ++k) {
+            const Rational s = (Rational(k) + Rational(1, 2)) / cells;  // the cell's midpoint, piece-local
+            const Vec2 t = piece.derivative(s);
+            if (t.x == 0 && t.y == 0) continue;
+            // The push's fan edges n ± μ_p t (n the tangent turned +90°, as
+            // long as t): the normal alone without friction.
+            const Vec2 normal{-t.y, t.x};
+            std::vector<Vec2> edges{normal};
+            if (pusher_mu > 0)
+              edges = {Vec2{normal.x + pusher_mu * t.x, normal.y + pusher_mu * t.y},
+                       Vec2{normal.x - pusher_mu * t.x, normal.y - pusher_mu * t.y}};
+            bool counts = true;
+            for (const Vec2& d : edges) {
+              const VectorQ w = contact_wrench(sub(piece.point(s), part.body.p_AoCm_A), d, 3);
+              counts = counts && rows[0].dot(w) > 0 && rows[1].dot(w) > 0 && rows[2].dot(w) > 0 &&
+                       !in_closed_cone(jams[0], w) && !in_closed_cone(jams[1], w) && !in_closed_cone(jams[2], w);
+            }
+            if (counts) inside += cell / total;
+          }
         }
+        EXPECT_GE(b.exact(f), inside) << name << " triple " << index << " pusher mu " << pusher_mu;
+        checked += inside > 0;
       }
-      EXPECT_GE(b.exact(f), inside) << name << " triple " << index;
-      checked += inside > 0;
+      EXPECT_GE(checked, 5) << name << " pusher mu " << pusher_mu;
     }
-    EXPECT_GE(checked, 5) << name;
-  }
 }
 
 void expect_same_layouts(const DesignResult& a, const DesignResult& b, const std::string& what) {
