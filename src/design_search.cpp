@@ -17,15 +17,19 @@
 #include "fixel/error.h"
 #include "fixel/internal/design_bound.h"
 #include "fixel/internal/design_detail.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/progress.h"
 
 namespace fixel {
 
 namespace {
 
-constexpr long kPilot = 32;                    // triples the pilot scores
-constexpr long kBoundBatch = 1024;             // triples bounded per unit of work
-constexpr long kMaxBoundedTriples = 1L << 25;  // bounds kept: 16 bytes each
+constexpr long kPilot = 32;         // triples the pilot scores
+constexpr long kBoundBatch = 1024;  // triples bounded per unit of work
+// Memory: the pairs' stretches (a few hundred bytes a pair) and the bounds
+// kept (16 bytes a triple; only those that may beat the pilot's K-th).
+constexpr long kMaxPairs = 1L << 19;  // 1,024 candidates
+constexpr long kMaxKept = 1L << 25;
 
 struct Ranked {
   long index;
@@ -96,7 +100,7 @@ DesignSearch& DesignSearch::operator=(DesignSearch&&) noexcept = default;
 bool DesignSearch::applies() const {
   const Impl& s = *impl_;
   return s.options.push == DesignPush::kSustained && s.options.bound && s.triples > kPilot &&
-         s.triples <= kMaxBoundedTriples;
+         s.n * (s.n - 1) / 2 <= kMaxPairs;
 }
 
 const std::vector<long>& DesignSearch::pilot() const { return impl_->pilot; }
@@ -129,31 +133,58 @@ bool DesignSearch::start(const std::vector<DesignLayout>& top) {
       }
     });
   });
-  // Each other triple's bound, in batches of consecutive indices (kept in index order).
+  // Each other triple's bound, in batches of consecutive indices (kept in
+  // index order). When the pilot filled the top K, a triple whose bound is
+  // below its K-th score can never enter (the K-th score only grows): it is
+  // not kept. Filtered: an upper end below a double under that score
+  // proves it; forced exact: the exact bound. Either way such a triple
+  // would only ever be skipped, so the search hands out the same triples.
   const long T = s.triples, n = s.n;
+  const bool full = static_cast<int>(top.size()) >= s.options.top;
+  const Rational floor = full ? top[s.options.top - 1].score : Rational(0);
+  double floor_below;
+  {
+    internal::Protect guard;
+    floor_below = internal::to_interval(floor).inf();
+  }
   const long batches = (T + kBoundBatch - 1) / kBoundBatch;
   std::vector<std::vector<Ranked>> ranked_in(batches);
   std::vector<long> singular_in(batches, 0);
+  std::atomic<long> kept{0};
+  std::atomic<bool> too_many{false};
   done = 0;
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<long>(0, batches, 1), [&](const tbb::blocked_range<long>& r) {
-      for (long b = r.begin(); b != r.end(); ++b) {
+      for (long b = r.begin(); b != r.end() && !too_many; ++b) {
         const long first = b * kBoundBatch, count = std::min(kBoundBatch, T - first);
         std::array<int, 3> f = triple_at(n, first);
         auto next_pilot = std::lower_bound(s.pilot.begin(), s.pilot.end(), first);
+        long below = 0;
         for (long k = 0; k < count; ++k, advance(f, n)) {
           if (next_pilot != s.pilot.end() && *next_pilot == first + k) {
             ++next_pilot;  // scored already
           } else if (bound.singular(f)) {
             ++singular_in[b];
           } else {
-            ranked_in[b].push_back({first + k, bound.upper(f)});
+            const double upper = bound.upper(f);
+            if (full && (force_exact() ? bound.exact(f) < floor : upper < floor_below)) {
+              ++below;
+              continue;
+            }
+            ranked_in[b].push_back({first + k, upper});
           }
         }
+        if (below && !force_exact()) internal::record_filter(FilterSite::kDesignBound, below, 0);
+        if ((kept += static_cast<long>(ranked_in[b].size())) > kMaxKept) too_many = true;
         poll_shared("design: triple bounds", done += count, T, "triples");
       }
     });
   });
+  if (too_many) {  // more bounds than memory allows: score every triple
+    s.over = true;
+    s.bound.reset();
+    return false;
+  }
   for (long b = 0; b < batches; ++b) {
     s.singular += singular_in[b];
     s.ranked.insert(s.ranked.end(), ranked_in[b].begin(), ranked_in[b].end());
@@ -171,29 +202,29 @@ std::optional<std::vector<long>> DesignSearch::next(const std::vector<DesignLayo
   Impl& s = *impl_;
   if (block < 1) throw InputError("DesignSearch.next block", std::to_string(block), "must be >= 1");
   if (!s.bound) throw InputError("DesignSearch", "next", "needs start() to have returned true");
-  if (s.over || s.pos >= s.ranked.size()) {
-    s.over = true;
-    return std::nullopt;
-  }
+  if (s.over) return std::nullopt;
   // Triples done: the singular ones, the pilot's and those ranked before pos.
   poll(s.options.control, "design", s.singular + kPilot + static_cast<long>(s.pos), s.triples, "layouts");
   const bool full = static_cast<int>(top.size()) >= s.options.top;
   const internal::PairBound& bound = *s.bound;
-  // Every triple left has an upper end at most this one's: when it is
-  // below the K-th score, none can enter.
-  if (full && bound.none_can_enter(s.ranked[s.pos].upper, top[s.options.top - 1].score,
-                                   static_cast<long>(s.ranked.size() - s.pos))) {
-    s.over = true;
-    return std::nullopt;
-  }
   std::vector<long> chosen;
-  const std::size_t end = std::min(s.ranked.size(), s.pos + static_cast<std::size_t>(block));
-  for (; s.pos < end; ++s.pos) {
+  for (; s.pos < s.ranked.size() && static_cast<long>(chosen.size()) < block; ++s.pos) {
     const Ranked& r = s.ranked[s.pos];
-    if (!full || bound.can_enter(triple_at(s.n, r.index), r.index, r.upper, top[s.options.top - 1].score,
-                                 top[s.options.top - 1].index))
+    if (!full) {
       chosen.push_back(r.index);
+      continue;
+    }
+    const DesignLayout& kth = top[s.options.top - 1];
+    // Every triple left has an upper end at most this one's: when it is
+    // below the K-th score, none can enter.
+    if (bound.none_can_enter(r.upper, kth.score, static_cast<long>(s.ranked.size() - s.pos))) {
+      s.over = true;
+      break;
+    }
+    if (bound.can_enter(triple_at(s.n, r.index), r.index, r.upper, kth.score, kth.index)) chosen.push_back(r.index);
   }
+  if (s.pos >= s.ranked.size()) s.over = true;
+  if (chosen.empty()) return std::nullopt;
   return chosen;
 }
 

@@ -236,7 +236,7 @@ GTEST_TEST(PairBound, CountsEveryCellWhoseMidpointPushIsStrictlyInsideKAndOutsid
       const Rational total = internal::total_length(outline);
       const Rational resolution = std::max(o.resolution, total / PairBound::kCells);
       int checked = 0;
-      for (long index = 0; index < triple_count(n); index += pusher_mu > 0 ? 3 : 7) {
+      for (long index = 0; index<triple_count(n); index += pusher_mu> 0 ? 3 : 7) {
         const auto f = triple_at(n, index);
         if (b.singular(f)) continue;
         std::array<VectorQ, 3> W;

@@ -24,25 +24,28 @@ class DesignSearch {
   DesignSearch(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
 
   /// Whether the bound applies: the sustained ranking with
-  /// DesignOptions::bound, and more than 32 but at most 2^25 triples (the
-  /// bounds take 16 bytes a triple). When it does not, score every triple.
+  /// DesignOptions::bound, more than 32 triples and at most 1,024 candidates
+  /// (the pairs' stretches take a few hundred bytes a pair). When it does
+  /// not, score every triple.
   bool applies() const;
   /// The pilot's triple indices (32 spread evenly over them, increasing);
   /// empty when the bound does not apply.
   const std::vector<long>& pilot() const;
   /// After the pilot: `top` is its best K, best first. Returns false when
-  /// no pilot layout scores above 0 (the bound would skip almost nothing:
-  /// score every triple, the pilot's too). Otherwise computes every pair's
-  /// regions and every other triple's bound on DesignOptions::jobs threads,
-  /// sorts them by decreasing bound, and returns true. Polls
-  /// DesignOptions::control. Throws InputError if the bound does not apply
-  /// or start() already ran.
+  /// no pilot layout scores above 0 (the bound would skip almost nothing),
+  /// or when more than 2^25 triples may still beat the pilot's K-th score
+  /// (their bounds would not fit in half a gigabyte): then score every
+  /// other triple. Otherwise computes every pair's stretches and every
+  /// other triple's bound on DesignOptions::jobs threads, keeps those that
+  /// may beat the pilot's K-th score, sorts them by decreasing bound, and
+  /// returns true. Polls DesignOptions::control. Throws InputError if the
+  /// bound does not apply or start() already ran.
   bool start(const std::vector<DesignLayout>& top);
-  /// The next `block` triples in order of decreasing bound (ties by index),
-  /// less those whose exact bound shows they cannot enter `top` (the best K
-  /// so far, best first): possibly none of them. std::nullopt when no
-  /// triple left can enter, or none is left: the search is over. Throws
-  /// InputError for block < 1 or before start() returned true.
+  /// The next triples, at most `block`, in order of decreasing bound (ties
+  /// by index) that may still enter `top` (the best K so far, best first):
+  /// those whose exact bound cannot are passed over. std::nullopt when no
+  /// triple left can enter: the search is over. Throws InputError for
+  /// block < 1 or before start() returned true.
   std::optional<std::vector<long>> next(const std::vector<DesignLayout>& top, long block);
   /// Triples the bound found singular (never handed out; the pilot's are
   /// counted by whoever scored it).
