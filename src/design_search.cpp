@@ -30,6 +30,7 @@ constexpr long kBoundBatch = 1024;  // triples bounded per unit of work
 // kept (16 bytes a triple; only those that may beat the pilot's K-th).
 constexpr long kMaxPairs = 1L << 19;  // 1,024 candidates
 constexpr long kMaxKept = 1L << 25;
+std::atomic<long> kept_limit{kMaxKept};  // internal::set_design_kept_limit
 
 struct Ranked {
   long index;
@@ -65,6 +66,8 @@ void advance(std::array<int, 3>& f, long n) {
 }
 
 }  // namespace
+
+void internal::set_design_kept_limit(long limit) { kept_limit = limit; }
 
 struct DesignSearch::Impl {
   Scene part;
@@ -175,7 +178,7 @@ bool DesignSearch::start(const std::vector<DesignLayout>& top) {
           }
         }
         if (below && !force_exact()) internal::record_filter(FilterSite::kDesignBound, below, 0);
-        if ((kept += static_cast<long>(ranked_in[b].size())) > kMaxKept) too_many = true;
+        if ((kept += static_cast<long>(ranked_in[b].size())) > kept_limit) too_many = true;
         poll_shared("design: triple bounds", done += count, T, "triples");
       }
     });

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "fixel/error.h"
+#include "fixel/internal/design_detail.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -153,6 +154,34 @@ GTEST_TEST(DesignSearch, APilotThatScoresNothingAboveZeroEndsTheSearch) {
   EXPECT_EQ(top.front().score, 0);
   EXPECT_FALSE(search.start(top));
   EXPECT_THROW(search.next(top, 32), InputError);  // nothing to hand out: score every triple
+}
+
+// With more bounds to keep than memory allows (here, more than 5), the
+// search gives up after the pilot and design() scores every other triple:
+// the exhaustive layouts and counts, the pilot's triples scored once.
+GTEST_TEST(DesignSearch, TooManyBoundsToKeepSendTheRunToTheExhaustiveSearch) {
+  const Scene part = scene_file("polygon");
+  const std::vector<DesignCandidate> c = every_other(part);
+  DesignOptions o = small(3);
+  o.bound = false;
+  const DesignResult every = design(part, c, o);
+  o.bound = true;
+  internal::set_design_kept_limit(5);
+  DesignSearch search(part, c, o);
+  DesignStats stats;
+  const std::vector<DesignLayout> top = design_batch(part, c, o, search.pilot(), stats);
+  const bool started = search.start(top);
+  const DesignResult run = design(part, c, o);
+  internal::set_design_kept_limit(1L << 25);
+  EXPECT_FALSE(started);
+  EXPECT_EQ(search.singular(), 0);  // nothing counted from the abandoned pass
+  expect_same_ranking(run.layouts, every.layouts, "polygon");
+  EXPECT_EQ(
+      std::make_tuple(run.stats.singular, run.stats.no_form_closure, run.stats.j_empty, run.stats.regions,
+                      run.stats.bounded),
+      std::make_tuple(every.stats.singular, every.stats.no_form_closure, every.stats.j_empty, every.stats.regions, 0L));
+  // Without the switch the same run keeps its bounds and skips triples.
+  EXPECT_GT(design(part, c, o).stats.bounded, 0);
 }
 
 GTEST_TEST(DesignSearch, ThePilotIsThirtyTwoSpreadTriplesAndOnlyWhenTheBoundApplies) {

@@ -39,6 +39,11 @@ std::unique_ptr<RegionTarget> open_half_space_target(const VectorQ& a);
 // R³), for a frictionless finger: the pair bound's jam cones.
 std::unique_ptr<RegionTarget> closed_cone_target(std::vector<VectorQ> rows);
 
+// Test switch: the most triple bounds DesignSearch::start keeps (default
+// 2^25, half a gigabyte); with more, the run scores every triple. Set it
+// before a run, not during one.
+void set_design_kept_limit(long limit);
+
 enum class Verdict { kSingular, kNoFormClosure, kJEmpty, kScored };
 
 // Filters and scores one triple by the ranking push model. `joins`: those
