@@ -29,7 +29,8 @@ using internal::total_length;
 using internal::Verdict;
 
 constexpr int kMaxJobs = 256;
-constexpr long kBatch = 8;  // triples per unit of work of the thread pool
+constexpr long kBatch = 8;          // triples per unit of work of the thread pool
+constexpr long kWindow = 1L << 14;  // batches run between two merges (about 131,000 triples)
 // The bounded search: triples scored between two checks of the K-th score
 // (fixed, so that the counts do not depend on --jobs).
 constexpr long kChunk = 32;
@@ -264,8 +265,6 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
   }
   const long T = result.stats.triples;
   const long batches = (T + kBatch - 1) / kBatch;
-  std::vector<std::vector<DesignLayout>> best(batches);
-  std::vector<DesignStats> counts(batches);
   std::atomic<long> done{0};
   std::mutex poll_mutex;
   auto on_layout = [&] {
@@ -274,20 +273,29 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
     std::unique_lock<std::mutex> lock(poll_mutex, std::try_to_lock);
     if (lock.owns_lock()) o.control->poll("design", d, T, "layouts");
   };
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<long>(0, batches, 1), [&](const tbb::blocked_range<long>& r) {
-      for (long b = r.begin(); b != r.end(); ++b) {
-        const long first = b * kBatch, count = std::min(kBatch, T - first);
-        best[b] = run_range(part, cands, o, first, count, counts[b], on_layout, pilot);
-      }
+  // A window of batches at a time, so that memory does not grow with the
+  // triples (C(n, 3) / 8 slots would not fit for thousands of candidates).
+  std::vector<std::vector<DesignLayout>> best(std::min(batches, kWindow));
+  std::vector<DesignStats> counts(best.size());
+  for (long window = 0; window < batches; window += kWindow) {
+    const long size = std::min(kWindow, batches - window);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<long>(0, size, 1), [&](const tbb::blocked_range<long>& r) {
+        for (long w = r.begin(); w != r.end(); ++w) {
+          const long first = (window + w) * kBatch, count = std::min(kBatch, T - first);
+          counts[w] = DesignStats{};
+          best[w] = run_range(part, cands, o, first, count, counts[w], on_layout, pilot);
+        }
+      });
     });
-  });
-  for (long b = 0; b < batches; ++b) {
-    for (auto& l : best[b]) result.layouts.push_back(std::move(l));
-    result.stats.singular += counts[b].singular;
-    result.stats.no_form_closure += counts[b].no_form_closure;
-    result.stats.j_empty += counts[b].j_empty;
-    result.stats.regions += counts[b].regions;
+    for (long w = 0; w < size; ++w) {
+      for (auto& l : best[w]) result.layouts.push_back(std::move(l));
+      result.stats.singular += counts[w].singular;
+      result.stats.no_form_closure += counts[w].no_form_closure;
+      result.stats.j_empty += counts[w].j_empty;
+      result.stats.regions += counts[w].regions;
+    }
+    rank_layouts(result.layouts, o.top);
   }
   rank_layouts(result.layouts, o.top);
   complete_layouts(part, cands, o, result.layouts);

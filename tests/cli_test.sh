@@ -335,6 +335,8 @@ expect 2 'body.boundary: is missing' -- "$fixel" design "$src/data/scenes/exampl
 expect 2 'cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --svg "$tmp/no/x.svg"
 expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --exhaustive --spacing 1/4 --max-seconds 0.5 --quiet
 expect 4 'time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --spacing 1/16 --max-seconds 0.2 --quiet
+# Past 1,024 candidates every triple is scored, and said so; 4,121 candidates (11.7e9 triples) must not exhaust memory.
+expect 4 'the pair bound applies up to 1024, so every one of the 11655753980 triples is scored' -- "$fixel" design "$src/data/scenes/polygon.json" --spacing 1/500 --max-seconds 0.5 --quiet
 # The pair bound: same best layout as scoring every triple, most triples never scored.
 expect 0 'never scored (pair bound below the K-th score)' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1

@@ -369,6 +369,9 @@ class _Batches:
             self.bar.close()
 
 
+_MAX_RANGES = 10_000_000  # range batches mapped at once when every triple is scored
+
+
 def _merge(records, top, counts, k):
     """Adds the batches' counts and keeps the best k layouts, best first:
     higher score, then lower triple index (as the C++ pool)."""
@@ -420,6 +423,12 @@ def _design_dask(scene, cands, options, client, batch_size, wave, output, progre
         found = _bounded(search, batches, options, batch_size, wave, total) if search.applies() else None
         rounds = 0
         if found is None:  # every triple, in ranges of consecutive indices
+            if -(-total // batch_size) > _MAX_RANGES:
+                raise InputError.make(
+                    "batch_size",
+                    repr(batch_size),
+                    f"cuts the {total} triples into more than {_MAX_RANGES} batches: raise it",
+                )
             top, counts = [], [0, 0, 0, 0]
             specs = [(b, first, min(batch_size, total - first), None) for b, first in enumerate(range(0, total, batch_size))]
             _merge(batches.run(specs), top, counts, options["top"])

@@ -9,6 +9,7 @@
 
 #include "cli.h"
 #include "fixel/design.h"
+#include "fixel/design_search.h"
 #include "fixel/error.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
@@ -80,6 +81,10 @@ int run_design(const DesignArgs& a) {
     throw InputError("--spacing", a.spacing, "applies to --candidates boundary only");
   const auto candidates =
       a.candidates == "boundary" ? boundary_candidates(part, spacing) : load_candidates(part, a.candidates);
+  const long triples = triple_count(static_cast<long>(candidates.size()));
+  if (o.push == DesignPush::kSustained && o.bound && triples > 32 && !DesignSearch(part, candidates, o).applies())
+    std::cerr << "note: " << candidates.size() << " candidates: the pair bound applies up to 1024, so every one of the "
+              << triples << " triples is scored (docs/design.md)\n";
   DesignResult r;
   try {
     r = design(part, candidates, o);

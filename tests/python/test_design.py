@@ -127,6 +127,14 @@ def test_dask_scores_every_triple_once_when_the_pilot_scores_nothing(client):
     assert dask.stats["batches"] == 1 + 14 and dask.stats["rounds"] == 0  # the pilot, then 220 triples by 16
 
 
+def test_too_many_range_batches_is_a_clear_error_before_any_is_mapped(client):
+    # 4,121 candidates: 11,655,753,980 triples in batches of 64.
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(SCENE_DIR / "polygon.json", spacing="1/500", client=client, exhaustive=True)
+    assert (e.value.field, e.value.value) == ("batch_size", "64")
+    assert "11655753980 triples" in str(e.value)
+
+
 def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, twelve_candidates, tmp_path):
     pool = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=1, **SMALL)
     marker = str(tmp_path / "failed-once")
