@@ -18,12 +18,12 @@ from . import _fixel
 from ._exact import exact, frac, fracs, text, vector
 from ._design import Candidate, Design, Layout, design, design_candidates
 from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
-from .errors import Error, InputError, ParseError, SceneError, UnsupportedError
+from .errors import Error, InputError, ParseError, SceneError, StoppedError, UnsupportedError
 
 __version__ = _fixel.__version__
 
 __all__ = [
-    "Error", "InputError", "ParseError", "SceneError", "UnsupportedError",
+    "Error", "InputError", "ParseError", "SceneError", "StoppedError", "UnsupportedError",
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes", "AlgebraicEnd",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
     "to_off", "to_svg", "SustainedSet", "sustained_set", "push",

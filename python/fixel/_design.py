@@ -12,6 +12,7 @@ rerun skip the batches that already finished.
 import hashlib
 import json
 import os
+import threading
 import time
 import uuid
 from dataclasses import dataclass
@@ -248,6 +249,7 @@ def design(
     retries=2,
     timeout=10,
     exhaustive=False,
+    max_seconds=None,
     _fail_once=None,
 ):
     """The best `top` layouts of three fixels for `part` (a Scene, a scene
@@ -269,13 +271,24 @@ def design(
     records each finished batch and a rerun with the same file skips those;
     `progress=True` shows a tqdm bar of finished batches. Returns a
     `Design`.
+
+    On the thread pool, `progress=True` shows a tqdm bar per stage (pair
+    bounds, triple bounds, layouts), or a callable(task, done, total, unit)
+    gets the reports; `max_seconds` stops the run with StoppedError, and
+    Ctrl-C stops it and raises KeyboardInterrupt.
     """
     scene = _part(part)
     options = _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive)
     _fixel.design_check_options(scene._impl, options)
     cands = _candidates(scene, candidates, spacing)
+    if max_seconds is not None and (isinstance(max_seconds, bool) or not isinstance(max_seconds, (int, float))):
+        raise TypeError(f"max_seconds: {max_seconds!r} is not a number")
     if client is None:
-        return _design_of(json.loads(_fixel.design_json(scene._impl, cands, options)))
+        control = _fixel.Control(None if max_seconds is None else float(max_seconds))
+        work = lambda: _fixel.design_json(scene._impl, cands, options, control)  # noqa: E731
+        return _design_of(json.loads(_controlled(work, control, progress)))
+    if max_seconds is not None:
+        raise InputError.make("max_seconds", repr(max_seconds), "applies to the thread pool, not to a cluster")
     if not isinstance(batch_size, int) or isinstance(batch_size, bool) or batch_size <= 0:
         raise InputError.make("batch_size", repr(batch_size), "must be a positive int")
     if not isinstance(wave, int) or isinstance(wave, bool) or wave <= 0:
@@ -283,6 +296,71 @@ def design(
     if isinstance(client, str):
         client = _connect(client, timeout)
     return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _fail_once)
+
+
+class _Bar:
+    """progress=True on the thread pool: a tqdm bar per stage of the run."""
+
+    def __init__(self):
+        self.bar, self.task = None, None
+
+    def __call__(self, task, done, total, unit):
+        from tqdm import tqdm  # imported only when asked for
+
+        if task != self.task:
+            if self.bar is not None:
+                self.bar.close()
+            self.bar = tqdm(desc=task, total=total or None, unit=unit.split()[0] if unit else "it", leave=False)
+            self.task = task
+        self.bar.update(done - self.bar.n)
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+def _controlled(work, control, progress, interval=0.1):
+    """Runs ``work`` (a C++ call that releases the GIL and polls `control`)
+    in a worker thread. Ctrl-C (KeyboardInterrupt) cancels the core, waits
+    for it to stop and is raised again; progress (True: a tqdm bar, or a
+    callable(task, done, total, unit)) gets the core's reports."""
+    if progress is True:
+        report = _Bar()
+    elif progress is None or progress is False:
+        report = None
+    elif callable(progress):
+        report = progress
+    else:
+        raise TypeError(f"progress: {progress!r} is neither a callable, True nor False")
+    result, error = [], []
+
+    def target():
+        try:
+            result.append(work())
+        except BaseException as e:  # re-raised in the caller's thread
+            error.append(e)
+
+    worker = threading.Thread(target=target, name="fixel-design", daemon=True)
+    worker.start()
+    seen = None
+    try:
+        while worker.is_alive():
+            worker.join(interval)
+            if report is not None:
+                snap = control.snapshot()
+                if snap[0] and snap != seen:
+                    seen = snap
+                    report(*snap)
+    except KeyboardInterrupt:
+        control.cancel()
+        worker.join()  # the core stops at its next poll; never leave it running unseen
+        raise
+    finally:
+        if isinstance(report, _Bar):
+            report.close()
+    if error:
+        raise error[0]
+    return result[0]
 
 
 class _Batches:

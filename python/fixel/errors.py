@@ -35,3 +35,8 @@ class SceneError(InputError):
 
 class UnsupportedError(InputError, NotImplementedError):
     """Valid input that fixel does not handle yet."""
+
+
+class StoppedError(Error):
+    """A long run stopped before its answer: its time limit (``max_seconds``)
+    passed or it was cancelled. ``str(e)`` says how far it got."""

@@ -6,12 +6,16 @@
 /// results as exact texts or the `fixel design --json` document.
 
 #include <chrono>
+#include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <string>
 
 #include "bindings.h"
 #include "fixel/design.h"
 #include "fixel/design_search.h"
+#include "fixel/progress.h"
 
 namespace fixel::python {
 namespace {
@@ -80,6 +84,35 @@ struct SearchBox {
   DesignSearch search;
 };
 
+// A run's control from Python: cancel() from any thread, an optional time
+// limit, and the last progress report, read by the caller's thread.
+struct Control {
+  RunControl run;
+  std::mutex mutex;
+  std::string task, unit;
+  long done = 0, total = 0;
+};
+
+std::unique_ptr<Control> make_control(const std::optional<double>& max_seconds) {
+  auto c = std::make_unique<Control>();
+  if (max_seconds) {
+    if (!(*max_seconds > 0) || !std::isfinite(*max_seconds))
+      throw InputError("max_seconds", std::to_string(*max_seconds), "must be a positive number of seconds");
+    c->run.deadline = RunControl::Clock::now() + std::chrono::duration_cast<RunControl::Clock::duration>(
+                                                     std::chrono::duration<double>(*max_seconds));
+  }
+  c->run.interval = std::chrono::milliseconds(100);
+  Control* p = c.get();
+  c->run.on_progress = [p](const char* task, long done, long total, const char* unit) {
+    std::lock_guard<std::mutex> lock(p->mutex);
+    p->task = task;
+    p->unit = unit;
+    p->done = done;
+    p->total = total;
+  };
+  return c;
+}
+
 }  // namespace
 
 void bind_design(py::module_& m) {
@@ -101,15 +134,28 @@ void bind_design(py::module_& m) {
                           std::vector<std::string>{to_string(c.normal.x), to_string(c.normal.y)});
   });
   m.def("design_triples", [](long n) { return triple_count(n); });
+  py::class_<Control>(m, "Control")
+      .def(py::init(&make_control), py::arg("max_seconds") = py::none())
+      .def("cancel", [](Control& c) { c.run.cancel = true; })
+      .def("snapshot", [](Control& c) {
+        std::lock_guard<std::mutex> lock(c.mutex);
+        return py::make_tuple(c.task, c.done, c.total, c.unit);
+      });
   // The whole run on the C++ thread pool: the `fixel design --json` document.
-  m.def("design_json", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts) {
-    const Scene& s = checked(scene, "scene");
-    const auto cands = candidates_of(s, list);
-    const DesignOptions o = options_of(opts);
-    py::gil_scoped_release release;
-    const DesignResult r = design(s, cands, o);
-    return design_json(s, r, o, shipped_layout(s, o));
-  });
+  // `control` (or None) stops it and takes its progress.
+  m.def(
+      "design_json",
+      [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, Control* control) {
+        const Scene& s = checked(scene, "scene");
+        const auto cands = candidates_of(s, list);
+        DesignOptions o = options_of(opts);
+        if (control) o.control = &control->run;
+        py::gil_scoped_release release;
+        const DesignResult r = design(s, cands, o);
+        o.control = nullptr;
+        return design_json(s, r, o, shipped_layout(s, o));
+      },
+      py::arg("scene"), py::arg("candidates"), py::arg("options"), py::arg("control") = nullptr);
   // One batch (idempotent): ([(i, j, k, index, score)], (singular,
   // no_form_closure, j_empty, regions)).
   m.def("design_batch",

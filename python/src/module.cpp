@@ -6,6 +6,7 @@
 
 #include "bindings.h"
 #include "fixel/error.h"
+#include "fixel/progress.h"
 
 namespace fixel::python {
 
@@ -63,6 +64,8 @@ void translate(std::exception_ptr p) {
     raise("ParseError", e.what(), e.field(), e.value());
   } catch (const InputError& e) {
     raise("InputError", e.what(), e.field(), e.value());
+  } catch (const StoppedError& e) {
+    raise("StoppedError", e.what(), "", "");
   } catch (const Error& e) {
     raise("Error", e.what(), "", "");
   }

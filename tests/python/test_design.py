@@ -188,6 +188,53 @@ def test_an_unreachable_scheduler_is_a_clear_error_within_a_bounded_time():
     assert time.monotonic() - t0 < 30
 
 
+def test_max_seconds_stops_the_thread_pool_with_stopped_error():
+    # 100 candidates, 161,700 triples, every one scored: about 35 s; stopped at 0.3 s.
+    t0 = time.monotonic()
+    with pytest.raises(fixel.StoppedError, match="design: time limit reached after"):
+        fixel.design(SCENE_DIR / "blob.json", spacing="1/8", exhaustive=True, max_seconds=0.3)
+    assert time.monotonic() - t0 < 10
+
+
+def test_ctrl_c_stops_the_core_and_raises_keyboard_interrupt():
+    import _thread
+    import threading
+
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    t0 = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            # max_seconds is only a safety net: a missed interrupt fails with StoppedError instead of hanging.
+            fixel.design(SCENE_DIR / "blob.json", spacing="1/8", exhaustive=True, max_seconds=20)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - t0 < 10
+    # The core stopped: the next run has the pool to itself and answers.
+    assert fixel.design(SCENE_DIR / "polygon.json", top=1, resolution="1/32").layouts
+
+
+def test_a_progress_callable_gets_the_runs_reports():
+    reports = []
+    fixel.design(SCENE_DIR / "blob.json", exhaustive=True, jobs=1, progress=lambda *r: reports.append(r))
+    assert reports, "a run of about 0.7 s reports every 0.1 s"
+    assert all(r[0] == "design" and r[2] == 2024 and r[3] == "layouts" for r in reports)
+    assert [r[1] for r in reports] == sorted(r[1] for r in reports)
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, max_seconds=0)
+    assert e.value.field == "max_seconds"
+    with pytest.raises(TypeError, match="max_seconds"):
+        fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, max_seconds="1")
+    with pytest.raises(TypeError, match="progress"):
+        fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, progress="yes")
+
+
+def test_max_seconds_is_refused_with_a_cluster(client):
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, client=client, max_seconds=5)
+    assert e.value.field == "max_seconds"
+
+
 def test_fewer_than_three_candidates_is_no_layout_with_a_reason():
     d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES[:2])
     assert d.layouts == [] and "only 2 candidates" in d.no_layout
