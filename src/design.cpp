@@ -25,6 +25,7 @@ namespace {
 
 using internal::boundary_of;
 using internal::evaluate;
+using internal::next_triple;
 using internal::total_length;
 using internal::Verdict;
 
@@ -38,20 +39,6 @@ constexpr long kChunk = 32;
 bool better(const DesignLayout& a, const DesignLayout& b) {
   if (a.score != b.score) return a.score > b.score;
   return a.index < b.index;
-}
-
-// The next triple in lexicographic order.
-void advance(std::array<int, 3>& f, long n) {
-  if (f[2] + 1 < n) {
-    ++f[2];
-  } else if (f[1] + 2 < n) {
-    ++f[1];
-    f[2] = f[1] + 1;
-  } else {
-    ++f[0];
-    f[1] = f[0] + 1;
-    f[2] = f[0] + 2;
-  }
 }
 
 // Counts a scored triple by its verdict; a ranked one joins `best`.
@@ -89,7 +76,7 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
     if (next_scored != scored.end() && *next_scored == first + k) {
       ++next_scored;
       on_layout();
-      if (k + 1 < count) advance(f, n);
+      if (k + 1 < count) next_triple(f, n);
       continue;
     }
     DesignLayout layout;
@@ -98,7 +85,7 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
     tally(evaluate(part, cands, o, total, f, layout, &joins), std::move(layout), best, stats);
     if (static_cast<int>(best.size()) > 2 * o.top) rank_layouts(best, o.top);
     on_layout();
-    if (k + 1 < count) advance(f, n);
+    if (k + 1 < count) next_triple(f, n);
   }
   rank_layouts(best, o.top);
   return best;

@@ -52,19 +52,6 @@ class SharedPoll {
   std::mutex mutex_;
 };
 
-void advance(std::array<int, 3>& f, long n) {
-  if (f[2] + 1 < n) {
-    ++f[2];
-  } else if (f[1] + 2 < n) {
-    ++f[1];
-    f[2] = f[1] + 1;
-  } else {
-    ++f[0];
-    f[1] = f[0] + 1;
-    f[2] = f[0] + 2;
-  }
-}
-
 }  // namespace
 
 void internal::set_design_kept_limit(long limit) { kept_limit = limit; }
@@ -163,7 +150,7 @@ bool DesignSearch::start(const std::vector<DesignLayout>& top) {
         std::array<int, 3> f = triple_at(n, first);
         auto next_pilot = std::lower_bound(s.pilot.begin(), s.pilot.end(), first);
         long below = 0;
-        for (long k = 0; k < count; ++k, advance(f, n)) {
+        for (long k = 0; k < count; ++k, internal::next_triple(f, n)) {
           if (next_pilot != s.pilot.end() && *next_pilot == first + k) {
             ++next_pilot;  // scored already
           } else if (bound.singular(f)) {

@@ -12,7 +12,6 @@ rerun skip the batches that already finished.
 import hashlib
 import json
 import os
-import threading
 import time
 import uuid
 from dataclasses import dataclass
@@ -21,6 +20,7 @@ from typing import List, Optional, Tuple
 
 from . import _fixel
 from ._exact import frac, text
+from ._worker import in_worker
 from .errors import Error, InputError
 
 
@@ -332,35 +332,21 @@ def _controlled(work, control, progress, interval=0.1):
         report = progress
     else:
         raise TypeError(f"progress: {progress!r} is neither a callable, True nor False")
-    result, error = [], []
+    seen = [None]
 
-    def target():
-        try:
-            result.append(work())
-        except BaseException as e:  # re-raised in the caller's thread
-            error.append(e)
+    def tick():
+        if report is None:
+            return
+        snap = control.snapshot()
+        if snap[0] and snap != seen[0]:
+            seen[0] = snap
+            report(*snap)
 
-    worker = threading.Thread(target=target, name="fixel-design", daemon=True)
-    worker.start()
-    seen = None
     try:
-        while worker.is_alive():
-            worker.join(interval)
-            if report is not None:
-                snap = control.snapshot()
-                if snap[0] and snap != seen:
-                    seen = snap
-                    report(*snap)
-    except KeyboardInterrupt:
-        control.cancel()
-        worker.join()  # the core stops at its next poll; never leave it running unseen
-        raise
+        return in_worker(work, tick, interval, on_interrupt=control.cancel, name="fixel-design")
     finally:
         if isinstance(report, _Bar):
             report.close()
-    if error:
-        raise error[0]
-    return result[0]
 
 
 class _Batches:

@@ -1,7 +1,6 @@
 """The pushing region: exact result objects and progress reporting."""
 
 import json
-import threading
 import time
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -9,6 +8,7 @@ from typing import Optional, Tuple
 
 from . import _fixel
 from ._exact import frac, text
+from ._worker import in_worker
 from .errors import InputError, UnsupportedError
 
 
@@ -168,29 +168,12 @@ def _run(work, progress, description, interval=0.1):
     callback = _TqdmProgress(description) if progress is True else progress
     if not callable(callback):
         raise TypeError(f"progress: {progress!r} is neither a callable, True nor None")
-    result, error = [], []
-
-    def target():
-        try:
-            result.append(work())
-        except BaseException as e:  # re-raised in the caller's thread
-            error.append(e)
-
     start = time.perf_counter()
     callback("start", 0.0)
-    worker = threading.Thread(target=target, name="fixel-region", daemon=True)
-    worker.start()
     try:
-        while worker.is_alive():
-            worker.join(interval)
-            if worker.is_alive():
-                callback("running", time.perf_counter() - start)
+        return in_worker(work, lambda: callback("running", time.perf_counter() - start), interval, name="fixel-region")
     finally:
-        worker.join()  # the core cannot be interrupted; never leave it running unseen
         callback("done", time.perf_counter() - start)
-    if error:
-        raise error[0]
-    return result[0]
 
 
 def _guaranteed_impl(guaranteed, scene, S):

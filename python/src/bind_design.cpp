@@ -69,6 +69,22 @@ py::tuple batch_tuple(const std::vector<DesignLayout>& best, const DesignStats& 
   return py::make_tuple(layouts, py::make_tuple(stats.singular, stats.no_form_closure, stats.j_empty, stats.regions));
 }
 
+// A batch from Python: `score(part, candidates, options, stats)` (a
+// design_batch call with its triples) with the GIL released.
+template <class Score>
+py::tuple run_batch(const ScenePtr& scene, const CandidateList& list, const py::dict& opts, Score&& score) {
+  const Scene& s = checked(scene, "scene");
+  const auto cands = candidates_of(s, list);
+  const DesignOptions o = options_of(opts);
+  DesignStats stats;
+  std::vector<DesignLayout> best;
+  {
+    py::gil_scoped_release release;
+    best = score(s, cands, o, stats);
+  }
+  return batch_tuple(best, stats);
+}
+
 using TopList = std::vector<std::pair<long, std::string>>;
 
 std::vector<DesignLayout> layouts_of(const TopList& top) {
@@ -158,33 +174,19 @@ void bind_design(py::module_& m) {
       py::arg("scene"), py::arg("candidates"), py::arg("options"), py::arg("control") = nullptr);
   // One batch (idempotent): ([(i, j, k, index, score)], (singular,
   // no_form_closure, j_empty, regions)).
-  m.def("design_batch",
-        [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, long first, long count) {
-          const Scene& s = checked(scene, "scene");
-          const auto cands = candidates_of(s, list);
-          DesignOptions o = options_of(opts);
-          DesignStats stats;
-          std::vector<DesignLayout> best;
-          {
-            py::gil_scoped_release release;
-            best = design_batch(s, cands, o, first, count, stats);
-          }
-          return batch_tuple(best, stats);
-        });
+  m.def("design_batch", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, long first,
+                           long count) {
+    return run_batch(scene, list, opts, [&](const Scene& s, const auto& c, const DesignOptions& o, DesignStats& st) {
+      return design_batch(s, c, o, first, count, st);
+    });
+  });
   // The same for a list of triple indices (what DesignSearch hands out).
-  m.def("design_batch_indices",
-        [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, const std::vector<long>& indices) {
-          const Scene& s = checked(scene, "scene");
-          const auto cands = candidates_of(s, list);
-          DesignOptions o = options_of(opts);
-          DesignStats stats;
-          std::vector<DesignLayout> best;
-          {
-            py::gil_scoped_release release;
-            best = design_batch(s, cands, o, indices, stats);
-          }
-          return batch_tuple(best, stats);
-        });
+  m.def("design_batch_indices", [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts,
+                                   const std::vector<long>& indices) {
+    return run_batch(scene, list, opts, [&](const Scene& s, const auto& c, const DesignOptions& o, DesignStats& st) {
+      return design_batch(s, c, o, indices, st);
+    });
+  });
   // The bounded search, driven by fixel.design's Dask path: the best K so
   // far crosses as [(index, score text)], best first.
   py::class_<SearchBox>(m, "DesignSearch")

@@ -22,6 +22,21 @@ Rational total_length(const Boundary& b);
 // The cross product of two wrenches (three entries each), exact.
 VectorQ cross3(const VectorQ& a, const VectorQ& b);
 
+// The triple after f (increasing candidate indices) in lexicographic order
+// among n candidates; f must not be the last.
+inline void next_triple(std::array<int, 3>& f, long n) {
+  if (f[2] + 1 < n) {
+    ++f[2];
+  } else if (f[1] + 2 < n) {
+    ++f[1];
+    f[2] = f[1] + 1;
+  } else {
+    ++f[0];
+    f[1] = f[0] + 1;
+    f[2] = f[0] + 2;
+  }
+}
+
 // A rational unit vector near the direction of n, and the angle between them.
 Vec2 unit_near(const Vec2& n, double* angle_error);
 
