@@ -18,6 +18,7 @@ from . import _fixel
 from ._exact import exact, frac, fracs, text, vector
 from ._design import Candidate, Design, Layout, design, design_candidates
 from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
+from ._worker import stoppable
 from .errors import Error, InputError, ParseError, SceneError, StoppedError, UnsupportedError
 
 __version__ = _fixel.__version__
@@ -183,13 +184,14 @@ class GuaranteedSet:
         return frac(self._impl.lost_fraction(grid))
 
 
-def guaranteed_set(scene, seating=None, progress=None):
-    """G for a scene; pass its SeatingSet to reuse it. ``progress`` as in region."""
+def guaranteed_set(scene, seating=None, progress=None, max_seconds=None):
+    """G for a scene; pass its SeatingSet to reuse it. ``progress``,
+    ``max_seconds`` and Ctrl-C as in region."""
     from ._region import _run
 
     scene = _scene(scene)
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
-    impl = _run(lambda: _fixel.guaranteed_set(scene._impl, S._impl), progress, "fixel.guaranteed_set")
+    impl = _run(lambda c: _fixel.guaranteed_set(scene._impl, S._impl, c), progress, "fixel.guaranteed_set", max_seconds)
     return GuaranteedSet(S, impl)
 
 
@@ -197,15 +199,26 @@ def _vectors(d, keys):
     return {k: (fracs(v) if k in keys else v) for k, v in d.items()}
 
 
-def simulate(scene, impulse, steps=1):
+# At most this many steps, without max_seconds, simulate runs in the
+# caller's thread (docs/python.md, "Stopping a run").
+_SHORT_SIMULATION = 100
+
+
+def simulate(scene, impulse, steps=1, max_seconds=None):
     """Simulates ``steps`` steps, applying ``impulse`` in the first (or a list
     of impulses, one per step). Returns SimpleNamespace(seated, steps) where
-    each step has q, velocity, gaps, p_n, p_f (Fractions) and pivots."""
+    each step has q, velocity, gaps, p_n, p_f (Fractions) and pivots.
+    ``max_seconds`` and Ctrl-C stop it as in region (Ctrl-C only past 100
+    steps: a shorter run is not worth a worker thread)."""
     scene = _scene(scene)
     if not isinstance(steps, int) or isinstance(steps, bool):
         raise TypeError(f"steps: {steps!r} is not an int")
     impulses = impulse if _is_list_of_vectors(impulse) else [impulse]
-    seated, records = _fixel.simulate(scene._impl, [vector(p, "impulse") for p in impulses], steps)
+    p = [vector(x, "impulse") for x in impulses]
+    if steps <= _SHORT_SIMULATION and max_seconds is None:
+        seated, records = _fixel.simulate(scene._impl, p, steps, None)  # a worker would cost half a step
+    else:
+        seated, records = stoppable(lambda c: _fixel.simulate(scene._impl, p, steps, c), max_seconds)
     keys = {"q", "velocity", "gaps", "p_n", "p_f"}
     return SimpleNamespace(seated=seated, steps=[SimpleNamespace(**_vectors(r, keys)) for r in records])
 
@@ -214,13 +227,14 @@ def _is_list_of_vectors(x):
     return isinstance(x, (list, tuple)) and len(x) > 0 and all(isinstance(e, (list, tuple)) for e in x)
 
 
-def solutions(scene, impulse):
+def solutions(scene, impulse, max_seconds=None):
     """Every distinct outcome of one step at ``impulse`` (the CLI's
     ``solutions``): SimpleNamespaces with seated, modes, velocity, gaps, p_n,
-    p_t, isolated."""
+    p_t, isolated. ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
     keys = {"velocity", "gaps", "p_n", "p_t"}
-    out = _fixel.solutions(scene._impl, vector(impulse, "impulse"))
+    p = vector(impulse, "impulse")
+    out = stoppable(lambda c: _fixel.solutions(scene._impl, p, c), max_seconds)
     return [SimpleNamespace(**_vectors(o, keys)) for o in out]
 
 

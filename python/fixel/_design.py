@@ -20,7 +20,7 @@ from typing import List, Optional, Tuple
 
 from . import _fixel
 from ._exact import frac, text
-from ._worker import in_worker
+from ._worker import seconds_limit, stoppable
 from .errors import Error, InputError
 
 
@@ -281,12 +281,10 @@ def design(
     options = _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive)
     _fixel.design_check_options(scene._impl, options)
     cands = _candidates(scene, candidates, spacing)
-    if max_seconds is not None and (isinstance(max_seconds, bool) or not isinstance(max_seconds, (int, float))):
-        raise TypeError(f"max_seconds: {max_seconds!r} is not a number")
+    seconds_limit(max_seconds)
     if client is None:
-        control = _fixel.Control(None if max_seconds is None else float(max_seconds))
-        work = lambda: _fixel.design_json(scene._impl, cands, options, control)  # noqa: E731
-        return _design_of(json.loads(_controlled(work, control, progress)))
+        work = lambda control: _fixel.design_json(scene._impl, cands, options, control)  # noqa: E731
+        return _design_of(json.loads(_controlled(work, max_seconds, progress)))
     if max_seconds is not None:
         raise InputError.make("max_seconds", repr(max_seconds), "applies to the thread pool, not to a cluster")
     if not isinstance(batch_size, int) or isinstance(batch_size, bool) or batch_size <= 0:
@@ -319,11 +317,11 @@ class _Bar:
             self.bar.close()
 
 
-def _controlled(work, control, progress, interval=0.1):
-    """Runs ``work`` (a C++ call that releases the GIL and polls `control`)
-    in a worker thread. Ctrl-C (KeyboardInterrupt) cancels the core, waits
-    for it to stop and is raised again; progress (True: a tqdm bar, or a
-    callable(task, done, total, unit)) gets the core's reports."""
+def _controlled(work, max_seconds, progress, interval=0.1):
+    """Runs ``work(control)`` (a C++ call that releases the GIL and polls
+    `control`) in a worker thread (fixel/_worker.py: max_seconds and Ctrl-C
+    stop it); progress (True: a tqdm bar, or a callable(task, done, total,
+    unit)) gets the core's reports."""
     if progress is True:
         report = _Bar()
     elif progress is None or progress is False:
@@ -334,7 +332,7 @@ def _controlled(work, control, progress, interval=0.1):
         raise TypeError(f"progress: {progress!r} is neither a callable, True nor False")
     seen = [None]
 
-    def tick():
+    def tick(control):
         if report is None:
             return
         snap = control.snapshot()
@@ -343,7 +341,7 @@ def _controlled(work, control, progress, interval=0.1):
             report(*snap)
 
     try:
-        return in_worker(work, tick, interval, on_interrupt=control.cancel, name="fixel-design")
+        return stoppable(work, max_seconds, tick, interval)
     finally:
         if isinstance(report, _Bar):
             report.close()

@@ -8,7 +8,7 @@ from typing import Optional, Tuple
 
 from . import _fixel
 from ._exact import frac, text
-from ._worker import in_worker
+from ._worker import seconds_limit, stoppable
 from .errors import InputError, UnsupportedError
 
 
@@ -156,22 +156,27 @@ class _TqdmProgress:
             self.bar.close()
 
 
-def _run(work, progress, description, interval=0.1):
-    """Runs ``work`` (a C++ call that releases the GIL) and reports progress.
+def _run(work, progress, description, max_seconds=None, interval=0.1):
+    """Runs ``work(control)`` (a C++ call that releases the GIL and polls
+    ``control``) in a worker thread: past ``max_seconds`` it stops with
+    StoppedError, and Ctrl-C stops it and raises KeyboardInterrupt
+    (fixel/_worker.py).
 
-    The C++ region has no progress hook, so the callback is told
-    ("start", 0.0), then ("running", elapsed_seconds) every ``interval``
-    seconds while the core computes in a worker thread, then ("done", total).
+    The callback is told ("start", 0.0), then ("running", elapsed_seconds)
+    every ``interval`` seconds while the core computes, then ("done",
+    total), also when the run stops early.
     """
     if progress is None or progress is False:
-        return work()
+        return stoppable(work, max_seconds, None, interval)
     callback = _TqdmProgress(description) if progress is True else progress
     if not callable(callback):
         raise TypeError(f"progress: {progress!r} is neither a callable, True nor None")
+    seconds_limit(max_seconds)  # before "start"
     start = time.perf_counter()
     callback("start", 0.0)
     try:
-        return in_worker(work, lambda: callback("running", time.perf_counter() - start), interval, name="fixel-region")
+        tick = lambda control: callback("running", time.perf_counter() - start)  # noqa: E731
+        return stoppable(work, max_seconds, tick, interval)
     finally:
         callback("done", time.perf_counter() - start)
 
@@ -188,7 +193,7 @@ def _guaranteed_impl(guaranteed, scene, S):
 
 def region(
     scene, resolution="1/1024", cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
-    progress=None, exact=False, digits=0, resolution_length=None,
+    progress=None, exact=False, digits=0, resolution_length=None, max_seconds=None,
 ):  # fmt: skip
     """The pushing region by exact recursive subdivision (``fixel region``).
 
@@ -205,6 +210,8 @@ def region(
     ``exact``: root isolation instead of subdivision (``fixel region --exact``):
     no partial stretch, irrational ends as AlgebraicEnd; ``digits`` refines
     their isolating intervals to width 10**-digits. Not with ``guaranteed``.
+    ``max_seconds``: stop the run after that many seconds with StoppedError
+    (``--max-seconds``). Ctrl-C stops it too and raises KeyboardInterrupt.
     """
     from . import SeatingSet, _expect, _scene, seating_set
 
@@ -230,8 +237,8 @@ def region(
             raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
         J = sustained_set(scene)
         impl = _run(
-            lambda: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu, exact, digits, res_len),
-            progress, "fixel.region",
+            lambda c: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu, exact, digits, res_len, c),
+            progress, "fixel.region", max_seconds,
         )  # fmt: skip
         r = _region_of(scene, J, impl, cone, shown, None if mu is None else frac(mu))
         r.resolution_length = None if res_len is None else frac(res_len)
@@ -239,16 +246,17 @@ def region(
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = _run(
-        lambda: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits, res_len),
-        progress, "fixel.region",
+        lambda c: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits, res_len, c),
+        progress, "fixel.region", max_seconds,
     )  # fmt: skip
     r = _region_of(scene, S, impl, cone, shown, None if mu is None else frac(mu))
     r.resolution_length = None if res_len is None else frac(res_len)
     return r
 
 
-def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None):
-    """The point-sampling baseline (``fixel sample``): ``points`` per curve."""
+def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None, max_seconds=None):
+    """The point-sampling baseline (``fixel sample``): ``points`` per curve.
+    ``max_seconds`` and Ctrl-C stop it as in region."""
     from . import SeatingSet, _expect, _scene, seating_set
 
     scene = _scene(scene)
@@ -256,5 +264,6 @@ def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None):
         raise TypeError(f"points: {points!r} is not an int")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
-    impl = _fixel.sample_region(scene._impl, S._impl, points, mu, _guaranteed_impl(guaranteed, scene, S))
+    g = _guaranteed_impl(guaranteed, scene, S)
+    impl = stoppable(lambda c: _fixel.sample_region(scene._impl, S._impl, points, mu, g, c), max_seconds)
     return _region_of(scene, S, impl, "sample", None, None if mu is None else frac(mu))

@@ -5,10 +5,7 @@
 /// cross as (curve, u) with u exact text, options as a dict of exact texts,
 /// results as exact texts or the `fixel design --json` document.
 
-#include <chrono>
-#include <cmath>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 
@@ -100,35 +97,6 @@ struct SearchBox {
   DesignSearch search;
 };
 
-// A run's control from Python: cancel() from any thread, an optional time
-// limit, and the last progress report, read by the caller's thread.
-struct Control {
-  RunControl run;
-  std::mutex mutex;
-  std::string task, unit;
-  long done = 0, total = 0;
-};
-
-std::unique_ptr<Control> make_control(const std::optional<double>& max_seconds) {
-  auto c = std::make_unique<Control>();
-  if (max_seconds) {
-    if (!(*max_seconds > 0) || !std::isfinite(*max_seconds))
-      throw InputError("max_seconds", std::to_string(*max_seconds), "must be a positive number of seconds");
-    c->run.deadline = RunControl::Clock::now() + std::chrono::duration_cast<RunControl::Clock::duration>(
-                                                     std::chrono::duration<double>(*max_seconds));
-  }
-  c->run.interval = std::chrono::milliseconds(100);
-  Control* p = c.get();
-  c->run.on_progress = [p](const char* task, long done, long total, const char* unit) {
-    std::lock_guard<std::mutex> lock(p->mutex);
-    p->task = task;
-    p->unit = unit;
-    p->done = done;
-    p->total = total;
-  };
-  return c;
-}
-
 }  // namespace
 
 void bind_design(py::module_& m) {
@@ -150,13 +118,6 @@ void bind_design(py::module_& m) {
                           std::vector<std::string>{to_string(c.normal.x), to_string(c.normal.y)});
   });
   m.def("design_triples", [](long n) { return triple_count(n); });
-  py::class_<Control>(m, "Control")
-      .def(py::init(&make_control), py::arg("max_seconds") = py::none())
-      .def("cancel", [](Control& c) { c.run.cancel = true; })
-      .def("snapshot", [](Control& c) {
-        std::lock_guard<std::mutex> lock(c.mutex);
-        return py::make_tuple(c.task, c.done, c.total, c.unit);
-      });
   // The whole run on the C++ thread pool: the `fixel design --json` document.
   // `control` (or None) stops it and takes its progress.
   m.def(
@@ -165,7 +126,7 @@ void bind_design(py::module_& m) {
         const Scene& s = checked(scene, "scene");
         const auto cands = candidates_of(s, list);
         DesignOptions o = options_of(opts);
-        if (control) o.control = &control->run;
+        o.control = run_control(control);
         py::gil_scoped_release release;
         const DesignResult r = design(s, cands, o);
         o.control = nullptr;

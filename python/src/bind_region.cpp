@@ -93,21 +93,24 @@ void bind_region(py::module_& m) {
                              })
       .def_property_readonly("stats", [](const Region& r) { return stats_dict(r.stats); });
 
-  m.def("compute_region", [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution,
-                             const std::string& cone, const std::optional<std::string>& pusher_mu, const py::object& G,
-                             bool exact, int digits, const std::optional<std::string>& resolution_length) {
-    RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
-    options.guaranteed = guaranteed_of(G, S);
-    py::gil_scoped_release release;
-    return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));
-  });
+  m.def("compute_region",
+        [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution, const std::string& cone,
+           const std::optional<std::string>& pusher_mu, const py::object& G, bool exact, int digits,
+           const std::optional<std::string>& resolution_length, Control* control) {
+          RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
+          options.guaranteed = guaranteed_of(G, S);
+          options.control = run_control(control);
+          py::gil_scoped_release release;
+          return std::make_shared<Region>(compute_region(checked(scene, "scene"), checked(S, "seating"), options));
+        });
   m.def("sample_region", [](const ScenePtr& scene, const SeatingPtr& S, int points,
-                            const std::optional<std::string>& pusher_mu, const py::object& G) {
+                            const std::optional<std::string>& pusher_mu, const py::object& G, Control* control) {
     if (points < 1) throw InputError("points", std::to_string(points), "must be at least 1");
     const auto mu = optional_rational(pusher_mu, "pusher_mu");
     const GuaranteedSet* g = guaranteed_of(G, S);
     py::gil_scoped_release release;
-    return std::make_shared<Region>(sample_region(checked(scene, "scene"), checked(S, "seating"), points, mu, g));
+    return std::make_shared<Region>(
+        sample_region(checked(scene, "scene"), checked(S, "seating"), points, mu, g, run_control(control)));
   });
   m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r) {
     return region_json(checked(scene, "scene"), checked(r, "region"));

@@ -116,30 +116,31 @@ void bind_sets(py::module_& m) {
     py::gil_scoped_release release;
     return seating_system(checked(scene, "scene"), checked(S, "seating"));
   });
-  m.def("guaranteed_set", [](const ScenePtr& scene, const SeatingPtr& S) {
+  m.def("guaranteed_set", [](const ScenePtr& scene, const SeatingPtr& S, Control* control) {
     py::gil_scoped_release release;
     return std::make_shared<GuaranteedHandle>(
-        GuaranteedHandle{guaranteed_set(checked(scene, "scene"), checked(S, "seating")), S});
+        GuaranteedHandle{guaranteed_set(checked(scene, "scene"), checked(S, "seating"), run_control(control)), S});
   });
-  m.def("simulate", [](const ScenePtr& scene, const std::vector<std::vector<std::string>>& impulses, int steps) {
+  m.def("simulate", [](const ScenePtr& scene, const std::vector<std::vector<std::string>>& impulses, int steps,
+                       Control* control) {
     std::vector<VectorQ> p;
     for (std::size_t k = 0; k < impulses.size(); ++k)
       p.push_back(exact_vector(impulses[k], checked(scene, "scene").body.dof, "impulse[" + std::to_string(k) + "]"));
     Simulation sim;
     {
       py::gil_scoped_release release;
-      sim = simulate(checked(scene, "scene"), p, steps);
+      sim = simulate(checked(scene, "scene"), p, steps, run_control(control));
     }
     py::list out;
     for (const auto& s : sim.steps) out.append(step_dict(s));
     return py::make_tuple(sim.seated, out);
   });
-  m.def("solutions", [](const ScenePtr& scene, const std::vector<std::string>& impulse) {
+  m.def("solutions", [](const ScenePtr& scene, const std::vector<std::string>& impulse, Control* control) {
     const VectorQ p = exact_vector(impulse, checked(scene, "scene").body.dof, "impulse");
     std::vector<Outcome> outcomes;
     {
       py::gil_scoped_release release;
-      outcomes = enumerate_outcomes(checked(scene, "scene"), p);
+      outcomes = enumerate_outcomes(checked(scene, "scene"), p, run_control(control));
     }
     py::list out;
     for (const auto& o : outcomes) out.append(outcome_dict(o));

@@ -63,16 +63,18 @@ void bind_sustained(py::module_& m) {
     const auto r = physics::push(s, w, options);
     return physics::push_json(s, w, r);
   });
-  m.def("compute_region_sustained", [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution,
-                                       const std::string& cone, const std::optional<std::string>& pusher_mu, bool exact,
-                                       int digits, const std::optional<std::string>& resolution_length) {
-    const RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
-    const Scene& s = checked(scene, "scene");
-    const SustainedSet& j = checked(J, "sustained");
-    py::gil_scoped_release release;
-    const auto target = sustained_target(j);
-    return std::make_shared<Region>(compute_region(s, *target, options));
-  });
+  m.def("compute_region_sustained",
+        [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution, const std::string& cone,
+           const std::optional<std::string>& pusher_mu, bool exact, int digits,
+           const std::optional<std::string>& resolution_length, Control* control) {
+          RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
+          options.control = run_control(control);
+          const Scene& s = checked(scene, "scene");
+          const SustainedSet& j = checked(J, "sustained");
+          py::gil_scoped_release release;
+          const auto target = sustained_target(j);
+          return std::make_shared<Region>(compute_region(s, *target, options));
+        });
 }
 
 }  // namespace fixel::python

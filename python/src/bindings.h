@@ -8,11 +8,13 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "fixel/guaranteed.h"
+#include "fixel/progress.h"
 #include "fixel/rational.h"
 #include "fixel/region.h"
 #include "fixel/seating.h"
@@ -38,6 +40,20 @@ T& checked(const std::shared_ptr<T>& p, const char* name) {
   return *p;
 }
 
+/// A run's control from Python (`_fixel.Control`): cancel() from any
+/// thread, an optional time limit, and the last progress report, read by
+/// the caller's thread while the core runs in a worker (fixel/_worker.py).
+/// Functions that take one accept None.
+struct Control {
+  RunControl run;
+  std::mutex mutex;
+  std::string task, unit;
+  long done = 0, total = 0;
+};
+
+/// &control->run, or nullptr for None.
+inline RunControl* run_control(Control* control) { return control ? &control->run : nullptr; }
+
 /// G's membership test needs S, so the binding keeps both alive together.
 struct GuaranteedHandle {
   GuaranteedSet G;
@@ -54,6 +70,7 @@ RegionOptions region_options(const std::string& resolution, const std::string& c
                              const std::optional<std::string>& pusher_mu, bool exact, int digits,
                              const std::optional<std::string>& resolution_length);
 
+void bind_control(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_sets(py::module_& m);
 void bind_region(py::module_& m);

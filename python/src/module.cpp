@@ -2,6 +2,8 @@
 /// The _fixel extension module: typed exceptions and the exact-text helpers.
 /// The bindings themselves live in bind_*.cpp, one group of concepts each.
 
+#include <chrono>
+#include <cmath>
 #include <exception>
 
 #include "bindings.h"
@@ -36,6 +38,40 @@ VectorQ exact_vector(const std::vector<std::string>& text, int size, const std::
   for (std::size_t i = 0; i < text.size(); ++i)
     v[static_cast<Eigen::Index>(i)] = parse_rational(text[i], field + "[" + std::to_string(i) + "]");
   return v;
+}
+
+namespace {
+
+std::unique_ptr<Control> make_control(const std::optional<double>& max_seconds) {
+  auto c = std::make_unique<Control>();
+  if (max_seconds) {
+    if (!(*max_seconds > 0) || !std::isfinite(*max_seconds))
+      throw InputError("max_seconds", std::to_string(*max_seconds), "must be a positive number of seconds");
+    c->run.deadline = RunControl::Clock::now() + std::chrono::duration_cast<RunControl::Clock::duration>(
+                                                     std::chrono::duration<double>(*max_seconds));
+  }
+  c->run.interval = std::chrono::milliseconds(100);
+  Control* p = c.get();
+  c->run.on_progress = [p](const char* task, long done, long total, const char* unit) {
+    std::lock_guard<std::mutex> lock(p->mutex);
+    p->task = task;
+    p->unit = unit;
+    p->done = done;
+    p->total = total;
+  };
+  return c;
+}
+
+}  // namespace
+
+void bind_control(py::module_& m) {
+  py::class_<Control>(m, "Control")
+      .def(py::init(&make_control), py::arg("max_seconds") = py::none())
+      .def("cancel", [](Control& c) { c.run.cancel = true; })
+      .def("snapshot", [](Control& c) {
+        std::lock_guard<std::mutex> lock(c.mutex);
+        return py::make_tuple(c.task, c.done, c.total, c.unit);
+      });
 }
 
 namespace {
@@ -78,6 +114,7 @@ PYBIND11_MODULE(_fixel, m) {
   m.doc() = "fixel's exact C++ core; use the fixel package, not this module";
   m.attr("__version__") = FIXEL_VERSION;
   pybind11::register_exception_translator(&fixel::python::translate);
+  fixel::python::bind_control(m);
   fixel::python::bind_scene(m);
   fixel::python::bind_sets(m);
   fixel::python::bind_region(m);

@@ -170,9 +170,9 @@ def test_tqdm_bar_after_one_second(capsys):
 
     from fixel._region import _run
 
-    assert _run(lambda: time.sleep(1.3) or 7, True, "fixel.region") == 7
+    assert _run(lambda control: time.sleep(1.3) or 7, True, "fixel.region") == 7
     assert "fixel.region" in capsys.readouterr().err
-    assert _run(lambda: 8, True, "fixel.region") == 8
+    assert _run(lambda control: 8, True, "fixel.region") == 8
     assert "fixel.region" not in capsys.readouterr().err  # quick runs show nothing
 
 

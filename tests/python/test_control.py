@@ -1,0 +1,136 @@
+"""Stopping a run from Python: max_seconds, Ctrl-C, and the reused worker threads."""
+
+import _thread
+import multiprocessing
+import threading
+import time
+
+import pytest
+
+import fixel
+from conftest import SCENE_DIR
+
+# A deadline already past at the core's first poll: every run below polls
+# before it finishes, so each one must stop, whatever the machine's speed.
+PAST = 1e-9
+
+# blob32's region at resolution 2^-200: about 2 s, polled once per segment.
+FINE = "1/%d" % 2**200
+# With the paper's cone at 2^-60 it runs for minutes.
+SLOW = dict(cone="paper", resolution="1/%d" % 2**60)
+
+
+@pytest.fixture(scope="module")
+def polygon():
+    return fixel.Scene.load(SCENE_DIR / "polygon.json")
+
+
+@pytest.fixture(scope="module")
+def blob32():
+    return fixel.Scene.load(SCENE_DIR / "blob32.json")
+
+
+CALLS = {
+    "region": lambda s: fixel.region(s, max_seconds=PAST),
+    "sustained region": lambda s: fixel.region(s, push="sustained", max_seconds=PAST),
+    "sample": lambda s: fixel.sample(s, 64, max_seconds=PAST),
+    "guaranteed set": lambda s: fixel.guaranteed_set(s, max_seconds=PAST),
+    "simulate": lambda s: fixel.simulate(s, [0, -1, 0], steps=3, max_seconds=PAST),
+    "solutions": lambda s: fixel.solutions(s, [0, -1, 0], max_seconds=PAST),
+}
+TASKS = {"sustained region": "region"}
+
+
+@pytest.mark.parametrize("name", CALLS)
+def test_max_seconds_stops_every_long_call_with_stopped_error(polygon, name):
+    task = TASKS.get(name, name)
+    with pytest.raises(fixel.StoppedError, match=f"^{task}: time limit reached after .*; no result$"):
+        CALLS[name](polygon)
+
+
+def test_a_generous_max_seconds_changes_no_answer(polygon):
+    assert fixel.region(polygon, max_seconds=60).to_json()["intervals"] == fixel.region(polygon).to_json()["intervals"]
+    a = fixel.simulate(polygon, [0, -1, 0], steps=3, max_seconds=60)
+    b = fixel.simulate(polygon, [0, -1, 0], steps=3)
+    assert a.seated == b.seated and [s.q for s in a.steps] == [s.q for s in b.steps]
+
+
+def test_bad_max_seconds_is_named(polygon):
+    for call in (fixel.region, fixel.guaranteed_set):
+        with pytest.raises(fixel.InputError) as e:
+            call(polygon, max_seconds=0)
+        assert e.value.field == "max_seconds"
+        with pytest.raises(TypeError, match="max_seconds"):
+            call(polygon, max_seconds="1")
+    with pytest.raises(fixel.InputError) as e:
+        fixel.simulate(polygon, [0, -1, 0], max_seconds=float("inf"))
+    assert e.value.field == "max_seconds"
+    with pytest.raises(TypeError, match="max_seconds"):
+        fixel.sample(polygon, 8, max_seconds=True)
+
+
+def test_a_stopped_region_still_tells_its_progress_callback_done(blob32):
+    events = []
+    with pytest.raises(fixel.StoppedError):
+        fixel.region(blob32, resolution=FINE, max_seconds=0.3, progress=lambda stage, t: events.append(stage))
+    assert events[0] == "start" and events[-1] == "done"
+
+
+def _interrupted(call):
+    """Raises KeyboardInterrupt in the main thread 0.3 s into ``call()``;
+    returns the seconds until ``call`` gave up."""
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    t0 = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            call()
+    finally:
+        timer.cancel()
+    return time.monotonic() - t0
+
+
+@pytest.mark.parametrize("name", ["region", "sample", "simulate"])
+def test_ctrl_c_stops_the_core_and_raises_keyboard_interrupt(blob32, polygon, name):
+    # max_seconds is only a safety net: a missed interrupt fails with
+    # StoppedError instead of hanging. Unstopped, each runs for minutes.
+    call = {
+        "region": lambda: fixel.region(blob32, **SLOW, max_seconds=20),
+        "sample": lambda: fixel.sample(blob32, 10**6, max_seconds=20),
+        "simulate": lambda: fixel.simulate(polygon, [0, -1, 0], steps=10**8, max_seconds=20),
+    }[name]
+    assert _interrupted(call) < 10
+    # The core stopped and its worker is free: the next run answers.
+    assert fixel.region(polygon, resolution="1/64").intervals
+
+
+def _region_counts(path):
+    return fixel.region(fixel.Scene.load(path), resolution="1/64").counts()
+
+
+def test_a_forked_child_runs_with_its_own_workers(polygon):
+    expected = fixel.region(polygon, resolution="1/64").counts()  # the parent's pool exists now
+    ctx = multiprocessing.get_context("fork")
+    with ctx.Pool(1) as pool:
+        # The parent's worker threads do not exist in the child: reusing its
+        # pool would wait for them forever, hence the timeout.
+        assert pool.apply_async(_region_counts, (SCENE_DIR / "polygon.json",)).get(timeout=60) == expected
+
+
+def test_calls_from_several_threads_get_their_own_answers(polygon, blob32):
+    expected = {id(s): fixel.region(s, resolution="1/256").to_json()["intervals"] for s in (polygon, blob32)}
+    got, errors = [], []
+
+    def run(s):
+        try:
+            got.append((id(s), fixel.region(s, resolution="1/256").to_json()["intervals"]))
+        except BaseException as e:  # reported below, not lost in the thread
+            errors.append(e)
+
+    threads = [threading.Thread(target=run, args=(s,)) for s in (polygon, blob32) * 3]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors
+    assert len(got) == 6 and all(intervals == expected[key] for key, intervals in got)
