@@ -61,6 +61,7 @@ PairBound::PairBound(const Scene& part, const std::vector<DesignCandidate>& cand
       auto& p = m.pairs[m.pair_index(a, c)];
       p.c = cross3(m.wrench[a], m.wrench[c]);
       p.c_enclosed = enclose(p.c);
+      p.c_near = near3(p.c_enclosed);
     }
 }
 

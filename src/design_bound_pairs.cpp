@@ -35,19 +35,28 @@ std::vector<Span> minus(const std::vector<Span>& list, const std::vector<Span>& 
   return out;
 }
 
-// Signs of a · g for the generators g of a node's cone: the enclosures
-// (one rounding-mode scope per node), else exact. Counts its decisions for
-// one batched record_filter per pair.
+// Signs of a · g for the generators g of a node's cone: the static filter,
+// then the enclosures (one rounding-mode scope per node, only when the
+// static filter left a sign open), else exact. Counts its decisions for one
+// batched record_filter per pair.
 struct Signs {
   long certified = 0, fallbacks = 0;
-  const int* of(const VectorQ& a, const FGen& a_enclosed, const PairBound::Impl::Cone& cone) {
+  const int* of(const VectorQ& a, const FGen& a_enclosed, const Near3& a_near, const PairBound::Impl::Cone& cone) {
     const std::size_t n = cone.gens.size();
     signs.resize(n);
     if (!force_exact()) {
-      Protect guard;
+      bool open = false;
       for (std::size_t k = 0; k < n; ++k) {
-        const FGen& g = cone.enclosed[k];
-        signs[k] = certain_sign(a_enclosed[0] * g[0] + a_enclosed[1] * g[1] + a_enclosed[2] * g[2]);
+        signs[k] = static_dot_sign(a_near, cone.near[k]);
+        open = open || signs[k] == kUndecided;
+      }
+      if (open) {
+        Protect guard;
+        for (std::size_t k = 0; k < n; ++k) {
+          if (signs[k] != kUndecided) continue;
+          const FGen& g = cone.enclosed[k];
+          signs[k] = certain_sign(a_enclosed[0] * g[0] + a_enclosed[1] * g[1] + a_enclosed[2] * g[2]);
+        }
       }
     } else {
       std::fill(signs.begin(), signs.end(), kUndecided);
@@ -75,7 +84,7 @@ enum class Side { kIn, kOut, kPartial };
 // is the region's segment test for that target (docs/theory.md §10.6).
 Side half_space_side(const PairBound::Impl::Pair& p, const PairBound::Impl::Cone& cone, Signs& signs) {
   if (!cone.pointed) return Side::kPartial;
-  const int* s = signs.of(p.c, p.c_enclosed, cone);
+  const int* s = signs.of(p.c, p.c_enclosed, p.c_near, cone);
   bool all_in = true, none_in = true;
   for (std::size_t k = 0; k < cone.gens.size(); ++k) {
     all_in = all_in && s[k] > 0;
@@ -88,11 +97,11 @@ Side half_space_side(const PairBound::Impl::Pair& p, const PairBound::Impl::Cone
 // every generator is in it; OUT when one facet has every generator
 // strictly outside (no sub-piece can be IN then either); else partial.
 Side cone_side(const std::vector<VectorQ>& facets, const std::vector<FGen>& facets_enclosed,
-               const PairBound::Impl::Cone& cone, Signs& signs) {
+               const std::vector<Near3>& facets_near, const PairBound::Impl::Cone& cone, Signs& signs) {
   if (!cone.pointed) return Side::kPartial;
   bool all_in = true;
   for (std::size_t j = 0; j < facets.size(); ++j) {
-    const int* s = signs.of(facets[j], facets_enclosed[j], cone);
+    const int* s = signs.of(facets[j], facets_enclosed[j], facets_near[j], cone);
     bool all_out = true;
     for (std::size_t k = 0; k < cone.gens.size(); ++k) {
       all_in = all_in && s[k] >= 0;
@@ -165,13 +174,17 @@ void PairBound::compute_pair(long index) {
     for (int s : {1, -1}) jam.push_back(-(m.wrench[i] + Rational(s) * m.mu * m.tangent_wrench[i]));
   const std::vector<VectorQ> facets = cone_facet_normals(jam, 3);
   std::vector<FGen> facets_enclosed;
-  for (const auto& a : facets) facets_enclosed.push_back(enclose(a));
+  std::vector<Near3> facets_near;
+  for (const auto& a : facets) {
+    facets_enclosed.push_back(enclose(a));
+    facets_near.push_back(near3(facets_enclosed.back()));
+  }
   // The list "not held": no family's cone is IN the jam cone. A cell left
   // unknown is not known to be held, so it stays.
   const auto free = [&](const Impl::Node& node, std::array<Member, 1>& not_held) {
     bool all_out = true;
     for (const auto& cone : node.cones) {
-      const Side side = cone_side(facets, facets_enclosed, cone, signs);
+      const Side side = cone_side(facets, facets_enclosed, facets_near, cone, signs);
       if (side == Side::kIn) {
         not_held[0] = Member::kNo;
         return;
@@ -206,7 +219,10 @@ const PairBound::Impl::Node& PairBound::Impl::node(int piece, std::size_t i) con
                                        /*with_facets=*/false)) {
         cone.pointed = true;
         cone.gens = std::move(c->generators);
-        for (const auto& g : cone.gens) cone.enclosed.push_back(enclose(g));
+        for (const auto& g : cone.gens) {
+          cone.enclosed.push_back(enclose(g));
+          cone.near.push_back(near3(cone.enclosed.back()));
+        }
       }
     }
   });

@@ -28,6 +28,7 @@ struct PairBound::Impl {
   struct Pair {
     VectorQ c;                              // W_a × W_b
     FGen c_enclosed;                        // its enclosure
+    Near3 c_near;                           // doubles near it, for the static filter
     std::array<std::vector<Span>, 2> side;  // [0]: c · w > 0 may hold; [1]: c · w < 0 may
   };
 
@@ -57,6 +58,7 @@ struct PairBound::Impl {
     bool pointed = false;        // false: no cone (the directions turn by π), always split
     std::vector<VectorQ> gens;   // generators
     std::vector<FGen> enclosed;  // their enclosures
+    std::vector<Near3> near;     // doubles near them, for the static filter
   };
   struct Node {
     std::once_flag made;

@@ -7,6 +7,7 @@
 #include <CGAL/Interval_nt.h>
 #include <gmp.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -105,6 +106,45 @@ inline int affine_sign_filtered(const VectorQ& a, const Rational& c, const Vecto
     if (r != kUndecided) return r;
   }
   return sign(a.dot(p) - c);
+}
+
+// A semi-static filter for the sign of a dot product of 3-vectors, cheaper
+// than intervals where one vector meets many (the pair bound's walk):
+// doubles near each entry, valid only when each entry's enclosure is a
+// point (an exact double) or lies within [2^-500, 2^500] in magnitude with
+// a relative width of at most 2^-50. Then, in any rounding mode,
+// |fl(â · ĝ) − a · g| ≤ 2^-48 · fl(Σ |â_i ĝ_i|) (docs/theory.md §10.6,
+// "A static filter for the walk"), and 2^-46 of it is the margin used.
+struct Near3 {
+  std::array<double, 3> v{};
+  bool valid = false;
+};
+
+inline Near3 near3(const std::array<FI, 3>& enclosure) {
+  constexpr double kLow = 0x1p-500, kHigh = 0x1p500, kWidth = 0x1p-50;
+  Near3 out;
+  for (int i = 0; i < 3; ++i) {
+    const double lo = enclosure[i].inf(), hi = enclosure[i].sup();
+    out.v[i] = lo;
+    if (lo == hi && std::abs(lo) <= kHigh && (lo == 0 || std::abs(lo) >= kLow)) continue;
+    const double small = std::min(std::abs(lo), std::abs(hi));
+    const bool same_sign = (lo > 0) == (hi > 0);
+    if (!(same_sign && small >= kLow && std::max(std::abs(lo), std::abs(hi)) <= kHigh && hi - lo <= kWidth * small))
+      return Near3{};  // NaN bounds fail every comparison above, so they end here too
+  }
+  out.valid = true;
+  return out;
+}
+
+// Sign of a · g: −1, 0, +1 when the filter certifies it, else kUndecided.
+// 0 only when every product is an exact zero.
+inline int static_dot_sign(const Near3& a, const Near3& g) {
+  if (!a.valid || !g.valid) return kUndecided;
+  const double p0 = a.v[0] * g.v[0], p1 = a.v[1] * g.v[1], p2 = a.v[2] * g.v[2];
+  const double magnitude = std::abs(p0) + std::abs(p1) + std::abs(p2);
+  if (magnitude == 0) return 0;
+  const double s = p0 + p1 + p2, margin = 0x1p-46 * magnitude;
+  return s > margin ? 1 : s < -margin ? -1 : kUndecided;
 }
 
 }  // namespace fixel::internal
