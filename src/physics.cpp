@@ -2,6 +2,7 @@
 // The engine is a measuring instrument: its floats never feed an exact
 // decision, they only produce an outcome that we report.
 #include "fixel/physics.h"
+#include "fixel/progress.h"
 #include "fixel/scene_json.h"
 
 #include <box2d/box2d.h>
@@ -248,6 +249,10 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   r.gap_tolerance = kGapFraction * poly.size;
   r.rest_speed = kRestFraction * poly.size / h;
   const Rational total_q = options.time * options.steps_per_h;
+  if (total_q > kMaxPushSteps)  // also keeps the step count a long
+    throw InputError("PushOptions.time", to_string(options.time),
+                     "holds the push for " + to_string(total_q) + " engine steps (time · " +
+                         std::to_string(options.steps_per_h) + " per h); at most " + std::to_string(kMaxPushSteps));
   const long total = static_cast<long>(std::ceil(to_double(total_q)));
   const long sample_every = std::max<long>(1, total / std::max(1, options.trajectory_samples));
 
@@ -280,6 +285,7 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   r.trajectory.push_back({0, pose});
   long seat_run = 0, jam_run = 0;
   for (long step = 1; step <= total; ++step) {
+    if (step % 1024 == 1) poll(options.control, "push", step - 1, total, "engine steps");
     e.listener.t = double(step) * r.dt;
     e.listener.pose = pose;
     e.part->ApplyForceToCenter(force, true);

@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "fixel/error.h"
+#include "fixel/progress.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
 
@@ -177,6 +179,51 @@ GTEST_TEST(Physics, BadInputsThrowTypedErrors) {
     ADD_FAILURE() << "a self-intersecting part was accepted";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("body.boundary"), std::string::npos) << e.what();
+  }
+}
+
+GTEST_TEST(Physics, APushOfMoreThanTheStepLimitIsRefusedNamingItsTime) {
+  const Scene s = square();
+  // 10^5 h at 1000 steps per h is the limit itself; one more step is over.
+  PushOptions o = short_run();
+  o.time = Rational(kMaxPushSteps, 1000) + Rational(1, 1000);
+  try {
+    push(s, Wrench{0, 0, 0}, o);
+    ADD_FAILURE() << "a push of more than kMaxPushSteps steps ran";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "PushOptions.time");
+    EXPECT_NE(std::string(e.what()).find("100000001 engine steps"), std::string::npos) << e.what();
+  }
+  // Far beyond a long: once turned into a step count without the check, it was undefined behaviour.
+  o.time = Rational(Integer(10) * (Integer(1) << 80));
+  EXPECT_THROW(push(s, Wrench{0, 0, 0}, o), InputError);
+}
+
+GTEST_TEST(Physics, APushStopsWhenItsControlIsCancelledOrPastItsDeadline) {
+  const Scene s = square();
+  PushOptions o = short_run();
+  o.time = 100000;  // 10^8 steps of a part at rest: minutes, unless stopped
+  RunControl cancelled;
+  cancelled.cancel = true;
+  o.control = &cancelled;
+  try {
+    push(s, Wrench{0, 0, 0}, o);
+    ADD_FAILURE() << "a cancelled push ran";
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(e.reason(), StopReason::kInterrupted);
+    EXPECT_EQ(e.done(), 0);
+    EXPECT_EQ(e.total(), kMaxPushSteps);
+  }
+  RunControl timed;
+  timed.deadline = RunControl::Clock::now() + std::chrono::milliseconds(200);
+  o.control = &timed;
+  try {
+    push(s, Wrench{0, 0, 0}, o);
+    ADD_FAILURE() << "a push ran past its deadline";
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(e.reason(), StopReason::kTimeLimit);
+    EXPECT_GT(e.done(), 0);
+    EXPECT_LT(e.done(), kMaxPushSteps);
   }
 }
 

@@ -61,7 +61,14 @@ struct PushOptions {
   /// An impulse p (N·s, N·s, N·m·s; world frame, about the centre of mass)
   /// delivered at t = 0 on top of the wrench: ν ← ν^ℓ + M⁻¹ p.
   std::optional<std::array<double, 3>> impulse;
+  /// Polled every 1024 engine steps (may be null): cancelling it or passing
+  /// its deadline throws StoppedError.
+  RunControl* control = nullptr;
 };
+
+/// The most engine steps one push may take, time · steps_per_h (the
+/// default push takes 20,000): 1.2 to 8 minutes on the bundled parts.
+constexpr long kMaxPushSteps = 100000000;
 
 /// One recorded pose of the trajectory.
 struct TrajectorySample {

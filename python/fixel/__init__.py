@@ -296,20 +296,22 @@ class SustainedSet:
         return self.contains(w)
 
 
-def push(scene, wrench=None, at=None, time=20):
+def push(scene, wrench=None, at=None, time=20, max_seconds=None):
     """Run a held push in Box2D (``fixel push``): a measurement, not a
     decision. ``wrench`` (exact, world frame: force through the centre of
     mass, moment about it) or ``at="K:U"`` (a frictionless unit push at
-    parameter U of curve K, at the seated pose). Returns the ``fixel push
+    parameter U of curve K, at the seated pose), held for ``time`` steps h
+    (at most 100,000: 10^8 engine steps). Returns the ``fixel push
     --json`` document as a dict: "outcome" is "seated", "jammed", "escaped"
-    or "timeout"."""
+    or "timeout". ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
     if (wrench is None) == (at is None):
         raise InputError.make("wrench", repr(wrench), "give exactly one of wrench= and at=")
     w = None if wrench is None else vector(wrench, "wrench")
     if at is not None and not isinstance(at, str):
         raise TypeError(f"at: {at!r} is not a string 'K:U'")
-    return json.loads(_fixel.push(scene._impl, w, at, text(time, "time")))
+    t = text(time, "time")
+    return json.loads(stoppable(lambda c: _fixel.push(scene._impl, w, at, t, c), max_seconds))
 
 
 def sustained_set(scene):

@@ -44,11 +44,16 @@ void bind_sustained(py::module_& m) {
   });
   // The Box2D check: the `fixel push --json` document (a measurement).
   m.def("push", [](const ScenePtr& scene, const std::optional<std::vector<std::string>>& wrench,
-                   const std::optional<std::string>& at, const std::string& time) {
+                   const std::optional<std::string>& at, const std::string& time, Control* control) {
     const Scene& s = checked(scene, "scene");
     physics::PushOptions options;
     options.time = parse_rational(time, "time");
     if (options.time <= 0) throw InputError("time", time, "must be > 0");
+    if (options.time * options.steps_per_h > physics::kMaxPushSteps)  // the core's limit, named as Python's argument
+      throw InputError("time", time,
+                       "holds the push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +
+                           std::to_string(options.steps_per_h) + " per h)");
+    options.control = run_control(control);
     physics::Wrench w;
     if (at) {
       const auto point = physics::parse_curve_point(s, *at, "at");

@@ -26,6 +26,7 @@ int run_push(const PushArgs& a) {
   const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");
+  push_options.control = run_control();
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
   if (a.wrench_text.empty() && a.at_text.empty()) throw InputError("--wrench", "missing", "or --at is required");
   physics::Wrench w;

@@ -86,6 +86,7 @@ int run_region(const RegionArgs& a) {
   const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");
+  push_options.control = run_control();
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
   if (a.push_text == "sustained") return run_sustained_region(scene, a, push_options);
   if (a.exact && a.validate != 0)

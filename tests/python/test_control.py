@@ -37,6 +37,7 @@ CALLS = {
     "guaranteed set": lambda s: fixel.guaranteed_set(s, max_seconds=PAST),
     "simulate": lambda s: fixel.simulate(s, [0, -1, 0], steps=3, max_seconds=PAST),
     "solutions": lambda s: fixel.solutions(s, [0, -1, 0], max_seconds=PAST),
+    "push": lambda s: fixel.push(s, wrench=[0, -1, 0], max_seconds=PAST),
 }
 TASKS = {"sustained region": "region"}
 
@@ -69,6 +70,13 @@ def test_bad_max_seconds_is_named(polygon):
         fixel.sample(polygon, 8, max_seconds=True)
 
 
+def test_a_push_longer_than_the_engine_step_limit_is_refused_naming_time(polygon):
+    with pytest.raises(fixel.InputError) as e:
+        fixel.push(polygon, wrench=[0, 0, 0], time=100001)
+    assert e.value.field == "time" and e.value.value == "100001"
+    assert fixel.push(polygon, wrench=[0, 0, 0], time=1)["outcome"] == "timeout"  # a part at rest, nothing decided
+
+
 def test_a_stopped_region_still_tells_its_progress_callback_done(blob32):
     events = []
     with pytest.raises(fixel.StoppedError):
@@ -90,7 +98,7 @@ def _interrupted(call):
     return time.monotonic() - t0
 
 
-@pytest.mark.parametrize("name", ["region", "sample", "simulate"])
+@pytest.mark.parametrize("name", ["region", "sample", "simulate", "push"])
 def test_ctrl_c_stops_the_core_and_raises_keyboard_interrupt(blob32, polygon, name):
     # max_seconds is only a safety net: a missed interrupt fails with
     # StoppedError instead of hanging. Unstopped, each runs for minutes.
@@ -98,6 +106,7 @@ def test_ctrl_c_stops_the_core_and_raises_keyboard_interrupt(blob32, polygon, na
         "region": lambda: fixel.region(blob32, **SLOW, max_seconds=20),
         "sample": lambda: fixel.sample(blob32, 10**6, max_seconds=20),
         "simulate": lambda: fixel.simulate(polygon, [0, -1, 0], steps=10**8, max_seconds=20),
+        "push": lambda: fixel.push(polygon, wrench=[0, 0, 0], time=100000, max_seconds=20),  # at rest: 10^8 steps
     }[name]
     assert _interrupted(call) < 10
     # The core stopped and its worker is free: the next run answers.
