@@ -19,7 +19,7 @@ double relative_width(const Magnitudes& m) {
   return to_double((*m.hi - m.lo) / m.lo);
 }
 
-PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed) {
+PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed, RunControl* control) {
   if (!scene.body.boundary) throw SceneError("body.boundary", "", "is missing: a push plan needs the part's outline");
   const Boundary& b = *scene.body.boundary;
   if (curve < 0 || curve >= static_cast<int>(b.curves.size()))
@@ -43,7 +43,7 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
   plan.in_S = point_status(scene, S, curve, u, Rational(0), &plan.magnitudes_S);
   std::optional<GuaranteedSet> G;
   if (with_guaranteed) {
-    G = guaranteed_set(scene, S);
+    G = guaranteed_set(scene, S, control);
     plan.in_G = point_status(scene, S, curve, u, Rational(0), &plan.magnitudes_G, &*G);
   }
   // A representative impulse: exact τ window of the ray b0 + τ g in S.
@@ -52,7 +52,7 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
     const Rational tau_star = tau.hi ? (tau.lo + *tau.hi) / 2 : (tau.lo > 0 ? 2 * tau.lo : Rational(1));
     const VectorQ p = scene.background_impulse + tau_star * g;
     plan.sample_impulse = p;
-    plan.sample_outcomes = count_outcomes(enumerate_outcomes(scene, p));
+    plan.sample_outcomes = count_outcomes(enumerate_outcomes(scene, p, control));
     if (G) plan.sample_in_G = G->contains(p, S);
   }
   if (scene.body.dof == 3) {

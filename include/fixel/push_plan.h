@@ -37,7 +37,10 @@ struct PushPlan {
 
 /// Plans a push. Throws InputError for a point off the boundary's
 /// parameter range; kPartial statuses where the normal is undefined.
-PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed);
+/// `control` (may be null) is polled by G's construction and the outcome
+/// enumeration; stopping throws StoppedError.
+PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed,
+                   RunControl* control = nullptr);
 
 /// Relative width (hi − lo) / lo of a magnitude window (display); +inf when
 /// unbounded, NaN when empty.

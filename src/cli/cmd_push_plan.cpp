@@ -21,7 +21,7 @@ int run_push_plan(const PlanArgs& a) {
   arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
   const auto at = physics::parse_curve_point(scene, a.at_text, "--at");
-  const PushPlan plan = plan_push(scene, at.curve, at.u, a.guaranteed);
+  const PushPlan plan = plan_push(scene, at.curve, at.u, a.guaranteed, run_control());
   std::cout << (a.json ? push_plan_json(scene, plan) : push_plan_text(scene, plan));
   return 0;
 }
