@@ -15,7 +15,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from . import _fixel
-from ._exact import exact, frac, fracs, text, vector
+from ._exact import exact, frac, fracs, text, vector, whole
 from ._design import Candidate, Design, Layout, design, design_candidates
 from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
 from ._worker import stoppable
@@ -72,7 +72,7 @@ class Scene:
 
     def curve_range(self, k):
         """(u_begin, u_end) of curve k as Fractions."""
-        return fracs(_fixel.curve_range(self._impl, k))
+        return fracs(_fixel.curve_range(self._impl, whole(k, "k")))
 
     def __reduce__(self):
         # Pickled as its exact dict (for multiprocessing over many layouts).
@@ -181,7 +181,7 @@ class GuaranteedSet:
 
     def lost_fraction(self, grid=6):
         """Fraction of sample points of S that are not in G (exact)."""
-        return frac(self._impl.lost_fraction(grid))
+        return frac(self._impl.lost_fraction(whole(grid, "grid")))
 
 
 def guaranteed_set(scene, seating=None, progress=None, max_seconds=None):
@@ -211,8 +211,7 @@ def simulate(scene, impulse, steps=1, max_seconds=None):
     ``max_seconds`` and Ctrl-C stop it as in region (Ctrl-C only past 100
     steps: a shorter run is not worth a worker thread)."""
     scene = _scene(scene)
-    if not isinstance(steps, int) or isinstance(steps, bool):
-        raise TypeError(f"steps: {steps!r} is not an int")
+    steps = whole(steps, "steps")
     impulses = impulse if _is_list_of_vectors(impulse) else [impulse]
     p = [vector(x, "impulse") for x in impulses]
     if steps <= _SHORT_SIMULATION and max_seconds is None:

@@ -11,6 +11,7 @@ rerun skip the batches that already finished.
 
 import hashlib
 import json
+import numbers
 import os
 import time
 import uuid
@@ -19,7 +20,7 @@ from fractions import Fraction
 from typing import List, Optional, Tuple
 
 from . import _fixel
-from ._exact import frac, text
+from ._exact import frac, text, whole
 from ._worker import seconds_limit, stoppable
 from .errors import Error, InputError
 
@@ -116,10 +117,8 @@ def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive=
     else:
         plo, phi = _mu_pair(pusher_mu, "pusher_mu")
         pusher_mu = phi if phi is not None else plo
-    if not isinstance(top, int) or isinstance(top, bool):
-        raise TypeError(f"top: {top!r} is not an int")
-    if jobs is not None and (not isinstance(jobs, int) or isinstance(jobs, bool)):
-        raise TypeError(f"jobs: {jobs!r} is not an int")
+    top = whole(top, "top")
+    jobs = None if jobs is None else whole(jobs, "jobs")
     if not isinstance(exhaustive, bool):
         raise TypeError(f"exhaustive: {exhaustive!r} is not a bool")
     return {
@@ -287,10 +286,10 @@ def design(
         return _design_of(json.loads(_controlled(work, max_seconds, progress)))
     if max_seconds is not None:
         raise InputError.make("max_seconds", repr(max_seconds), "applies to the thread pool, not to a cluster")
-    if not isinstance(batch_size, int) or isinstance(batch_size, bool) or batch_size <= 0:
-        raise InputError.make("batch_size", repr(batch_size), "must be a positive int")
-    if not isinstance(wave, int) or isinstance(wave, bool) or wave <= 0:
-        raise InputError.make("wave", repr(wave), "must be a positive int")
+    for name, value in (("batch_size", batch_size), ("wave", wave)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value <= 0:
+            raise InputError.make(name, repr(value), "must be a positive int")
+    batch_size, wave = whole(batch_size, "batch_size"), whole(wave, "wave")
     if isinstance(client, str):
         client = _connect(client, timeout)
     return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _fail_once)

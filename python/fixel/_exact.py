@@ -109,3 +109,23 @@ def frac(s):
 
 def fracs(v):
     return tuple(Fraction(s) for s in v)
+
+
+# The C++ core's int: a count beyond it would reach pybind11 as an
+# unreadable "incompatible function arguments".
+INT_MIN, INT_MAX = -(2**31), 2**31 - 1
+
+
+def whole(x, field):
+    """``x`` (an int or a numpy integer, not a bool) as a Python int within
+    the core's int range; TypeError for a non-integer, InputError naming
+    ``field`` for one out of range. Lower limits of meaning (at least 1, ...)
+    are the core's to check and name."""
+    if isinstance(x, bool) or not isinstance(x, numbers.Integral):
+        raise TypeError(f"{field}: {x!r} is not an int")
+    v = int(x)
+    if v > INT_MAX:
+        raise InputError.make(field, str(v), f"is too large (at most {INT_MAX})")
+    if v < INT_MIN:
+        raise InputError.make(field, str(v), f"is too small (at least {INT_MIN})")
+    return v

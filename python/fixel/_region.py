@@ -7,7 +7,7 @@ from fractions import Fraction
 from typing import Optional, Tuple
 
 from . import _fixel
-from ._exact import frac, text
+from ._exact import frac, text, whole
 from ._worker import seconds_limit, stoppable
 from .errors import InputError, UnsupportedError
 
@@ -228,8 +228,7 @@ def region(
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
     if not isinstance(exact, bool):
         raise TypeError(f"exact: {exact!r} is not a bool")
-    if not isinstance(digits, int) or isinstance(digits, bool):
-        raise TypeError(f"digits: {digits!r} is not an int")
+    digits = whole(digits, "digits")
     if push == "sustained":
         from . import sustained_set
 
@@ -260,8 +259,7 @@ def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None, max_sec
     from . import SeatingSet, _expect, _scene, seating_set
 
     scene = _scene(scene)
-    if not isinstance(points, int) or isinstance(points, bool):
-        raise TypeError(f"points: {points!r} is not an int")
+    points = whole(points, "points")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)

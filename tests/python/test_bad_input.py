@@ -165,6 +165,40 @@ def test_simulate_and_solutions_bad_input(example2):
         fixel.solutions(example2, None)
 
 
+HUGE = 10**10  # beyond the core's int: pybind11 used to answer "incompatible function arguments"
+
+
+@pytest.mark.parametrize(
+    "field, call",
+    [
+        ("points", lambda s: fixel.sample(s, HUGE)),
+        ("steps", lambda s: fixel.simulate(s, (0, -1, 0), steps=HUGE)),
+        ("digits", lambda s: fixel.region(s, exact=True, digits=HUGE)),
+        ("digits", lambda s: fixel.region(s, exact=True, digits=-HUGE)),
+        ("top", lambda s: fixel.design(s, top=HUGE)),
+        ("jobs", lambda s: fixel.design(s, jobs=HUGE)),
+        ("grid", lambda s: fixel.guaranteed_set(s).lost_fraction(grid=HUGE)),
+        ("k", lambda s: s.curve_range(HUGE)),
+    ],
+)
+def test_an_int_beyond_the_cores_range_is_an_input_error_naming_it(field, call):
+    polygon = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    with pytest.raises(fixel.InputError) as e:
+        call(polygon)
+    assert e.value.field == field
+    assert e.value.value in (str(HUGE), str(-HUGE))
+
+
+def test_numpy_integers_count_as_ints():
+    polygon = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    assert fixel.sample(polygon, np.int64(8)).to_json()["intervals"] == fixel.sample(polygon, 8).to_json()["intervals"]
+    assert len(fixel.simulate(polygon, (0, -1, 0), steps=np.int32(2)).steps) == 2
+    with pytest.raises(TypeError, match="points"):
+        fixel.sample(polygon, True)
+    with pytest.raises(TypeError, match="points"):
+        fixel.sample(polygon, 8.0)
+
+
 def test_unsupported_eq27_with_sticking_contact(example2):
     # Gaps (1/10, 0, 0): ν⁺ is along fixel 0's normal, so fixel 0 sticks.
     d = example2.to_dict()
