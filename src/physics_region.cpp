@@ -6,6 +6,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/physics.h"
+#include "fixel/progress.h"
 #include "fixel/seated_pose.h"
 
 namespace fixel::physics {
@@ -104,6 +105,8 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
   out.seed = seed;
   out.options = options;
   std::mt19937_64 rng(seed);
+  long total = 0, done = 0;
+  for (const auto& iv : region.intervals) total += iv.status == RegionStatus::kIn ? pushes : 0;
   for (const auto& iv : region.intervals) {
     if (iv.status != RegionStatus::kIn) {
       out.intervals.emplace_back();
@@ -114,7 +117,19 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
       // An exact parameter: u0 + (u1 − u0) · j / 2^20, j pseudo-random.
       const Rational frac(static_cast<long>(rng() >> 44), 1L << 20);
       const Rational u = iv.u0 + (iv.u1 - iv.u0) * frac;
-      const PushResult r = push(scene, model(iv, u), options);
+      poll(options.control, "validate", done, total, "pushes");
+      PushResult r;
+      try {
+        r = push(scene, model(iv, u), options);
+      } catch (const StoppedError& e) {  // say how far the validation got, not only the push
+        const std::string why = e.reason() == StopReason::kInterrupted ? "interrupted" : "time limit reached";
+        throw StoppedError(e.reason(),
+                           "validate: " + why + " after " + std::to_string(done) + " of " + std::to_string(total) +
+                               " pushes (in push " + std::to_string(done + 1) + ", " + std::to_string(e.done()) +
+                               " of " + std::to_string(e.total()) + " engine steps); no result",
+                           done, total);
+      }
+      ++done;
       ++v.pushes;
       v.seated += r.outcome == Outcome::kSeated;
       v.jammed += r.outcome == Outcome::kJammed;

@@ -166,6 +166,7 @@ expect 4 'sample: time limit reached after' -- "$fixel" sample "$src/data/scenes
 expect 2 '--max-seconds' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --max-seconds -1
 # A push at rest runs to its time limit: --max-seconds stops it; more than 10^8 engine steps is refused.
 expect 4 'push: time limit reached after' -- "$fixel" push "$src/data/scenes/polygon.json" --wrench 0,0,0 --time 100000 --max-seconds 0.5
+expect 4 'validate: time limit reached after' -- "$fixel" region "$src/data/scenes/polygon.json" --push sustained --validate 1000000 --max-seconds 0.5 --quiet
 expect 2 '--time: 1000000000000000000000000000000 holds the push for' -- "$fixel" push "$src/data/scenes/polygon.json" --wrench 0,0,0 --time 1000000000000000000000000000000
 # (--max-seconds is only a safety net: a missed SIGINT then fails with exit 4 instead of hanging.)
 "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 --max-seconds 60 > "$tmp/int.out" 2>&1 &

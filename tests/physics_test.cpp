@@ -257,5 +257,37 @@ GTEST_TEST(Physics, ValidationRunsEveryPushOfEveryInIntervalWithAnyModel) {
   EXPECT_THROW(validate_region(s, region, seated_push_model(s), 0, 7), InputError);
 }
 
+GTEST_TEST(Physics, AStoppedValidationSaysHowManyOfItsPushesRan) {
+  const Scene s = square(R"("0", "0", "0")");
+  Region region;
+  RegionInterval in;
+  in.curve = 0, in.u0 = parse_rational("1/4"), in.u1 = parse_rational("3/4"), in.status = RegionStatus::kIn;
+  region.intervals = {in, in};  // two IN intervals of 1000 pushes each: 2000 in all
+  PushOptions o = short_run("2");
+  RunControl cancelled;
+  cancelled.cancel = true;
+  o.control = &cancelled;
+  try {
+    validate_region(s, region, seated_push_model(s, 2), 1000, 7, o);
+    ADD_FAILURE() << "a cancelled validation ran";
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(std::string(e.what()), "validate: interrupted after 0 of 2000 pushes; no result");
+    EXPECT_EQ(e.total(), 2000);
+  }
+  // Stopped inside a push (at its first poll): the push's own stop is reported as the validation's.
+  RunControl timed;
+  timed.deadline = RunControl::Clock::now() + std::chrono::milliseconds(100);
+  o.control = &timed;
+  try {
+    validate_region(s, region, seated_push_model(s, 2), 1000, 7, o);
+    ADD_FAILURE() << "a validation ran past its deadline";
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("validate: time limit reached after ", 0), 0u) << e.what();
+    EXPECT_EQ(e.reason(), StopReason::kTimeLimit);
+    EXPECT_LT(e.done(), 2000);
+    EXPECT_EQ(e.total(), 2000);
+  }
+}
+
 }  // namespace
 }  // namespace fixel::physics
