@@ -1,6 +1,6 @@
 #pragma once
 // Seeded random convex polygon parts with 3 fixels (exact unit normals,
-// gaps up to 1/10, mu <= 1/8), shared by the physics studies and the
+// gaps up to 1/10 and mu <= 1/8 unless asked otherwise), shared by the physics studies and the
 // filter tests (tests/filter_test.cpp).
 #include <algorithm>
 #include <cmath>
@@ -30,7 +30,9 @@ inline std::string q(const Rational& x) { return "\"" + fixel::to_string(x) + "\
 
 // A random convex polygon as an intersection of half-planes u_k·x ≤ d_k with
 // exact rational unit normals, and 3 fixels on 3 of its edges.
-inline std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index) {
+// `gap_max` and `mu_max` in thousandths (the defaults are the studies' 1/10
+// and 1/8).
+inline std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index, int gap_max = 100, int mu_max = 125) {
   std::uniform_real_distribution<double> U(0, 1);
   const int K = 5 + static_cast<int>(rng() % 3);
   std::vector<fixel::Vec2> u;
@@ -64,8 +66,8 @@ inline std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index) 
     const int e = edges[i];
     const auto &a = v[(e + K - 1) % K], &b = v[e];
     const Rational t(250 + static_cast<long>(rng() % 500), 1000);
-    const Rational gap(static_cast<long>(rng() % 100) + 1, 1000);
-    const Rational mu(static_cast<long>(rng() % 126), 1000);  // μ ≤ 1/8
+    const Rational gap(static_cast<long>(rng() % gap_max) + 1, 1000);
+    const Rational mu(static_cast<long>(rng() % (mu_max + 1)), 1000);
     s << (i ? "," : "") << "{\"point\": [" << q(a.x + t * (b.x - a.x)) << "," << q(a.y + t * (b.y - a.y))
       << "], \"normal\": [" << q(-u[e].x) << "," << q(-u[e].y) << "], \"mu\": " << q(mu) << ", \"gap\": " << q(gap)
       << "}";

@@ -60,9 +60,56 @@ std::string fixed(double v, int digits = 6) {
   return s.str();
 }
 
+json approach_json(const ApproachSet& A, const std::optional<ApproachVerdict>& v) {
+  json out;
+  out["decided"] = A.decided;
+  if (!A.decided) out["undecided_reason"] = A.undecided_reason;
+  out["t_star"] = A.t_star.text();
+  out["theta_star"] = A.theta_star;
+  out["on_edges"] = A.decided ? json(A.on_edges) : json(nullptr);
+  if (A.decided && !A.on_edges) out["edge_reason"] = A.edge_reason;
+  out["empty"] = A.decided && A.empty ? json(true) : json(nullptr);
+  if (v) {
+    out["contains"] = v->contains ? json(*v->contains) : json(nullptr);
+    if (!v->why_not.empty()) out["why_not"] = v->why_not;
+    if (v->hold) {
+      json h = {{"fixels", json::array({v->hold->fixels[0], v->hold->fixels[1]})}, {"theta", v->hold->theta}};
+      h["t"] = v->hold->at_seat
+                   ? json("t_star")
+                   : json(v->hold->t->is_rational() ? to_string(v->hold->t->lo) : certified_decimal(*v->hold->t, 12));
+      out["hold"] = h;
+    }
+  }
+  return out;
+}
+
+std::string approach_text(const ApproachSet& A, const std::optional<ApproachVerdict>& v) {
+  std::ostringstream out;
+  out << "approach-aware J' (no pair of fixels holds the part at any two-contact pose with theta from 0 to "
+         "theta*, docs/theory.md 10.7): ";
+  if (!A.decided)
+    out << "not decided: " << A.undecided_reason << "\n";
+  else if (!A.on_edges)
+    out << "EMPTY: " << A.edge_reason << "\n";
+  else if (A.empty)
+    out << "EMPTY (J is empty)\n";
+  else
+    out << "decided exactly for each wrench (--wrench); tan(theta*/2) = " << A.t_star.text() << "\n";
+  if (v) {
+    out << "  the wrench: ";
+    if (!v->contains)
+      out << "undecided: " << v->why_not << "\n";
+    else
+      out << (*v->contains ? "IN J' (no pair can hold the part on its way to the seat)" : "not in J': " + v->why_not)
+          << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace
 
-std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench) {
+std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
+                           const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench) {
   json doc;
   doc["scene"] = scene.name;
   doc["seated_pose"] = json::parse(seated_pose_json(J.pose));
@@ -94,6 +141,7 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
     doc["contains"] = wrench->contains ? json(*wrench->contains) : json(nullptr);
     if (!wrench->why_not.empty()) doc["why_not"] = wrench->why_not;
   }
+  if (approach) doc["approach"] = approach_json(*approach, approach_wrench);
   internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
@@ -135,7 +183,8 @@ std::string seated_pose_json(const SeatedPose& q) {
   return pose.dump();
 }
 
-std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench) {
+std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
+                           const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench) {
   std::ostringstream out;
   const SeatedPose& q = J.pose;
   out << "Sustained push on scene \"" << scene.name << "\": the wrench set J at the seated pose q*\n";
@@ -152,8 +201,9 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
         << ",\n         cos theta = " << (*q.exact)[2].text() << ", sin theta = " << (*q.exact)[3].text() << "\n";
   if (std::abs(q.approx[2]) >= kValidatedRotation)
     out << "warning: |theta*| >= " << kValidatedRotation
-        << " rad: the criterion is evaluated at q* only; Box2D has shown jams on the way to such seats "
-           "(docs/physics.md). Validate with `fixel region --push sustained --validate N`.\n";
+        << " rad: J is evaluated at q* only; Box2D has shown jams on the way to such seats "
+           "(docs/physics.md). Use the approach-aware J' below, or validate with `fixel region --push sustained "
+           "--validate N`.\n";
   out << "friction used (upper ends):";
   for (const auto& m : J.mu) out << " " << to_string(m);
   out << "\n";
@@ -182,6 +232,7 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
     else
       out << (*wrench->contains ? "IN J (sustained push: seats and stays)" : "not in J: " + wrench->why_not) << "\n";
   }
+  if (approach) out << approach_text(*approach, approach_wrench);
   return out.str();
 }
 

@@ -43,4 +43,18 @@ WrenchVerdict wrench_verdict(const SustainedSet& J, const VectorQ& w_W) {
   return v;
 }
 
+ApproachVerdict approach_verdict(const ApproachSet& A, const VectorQ& w_W) {
+  ApproachVerdict v;
+  try {
+    ApproachHold hold;
+    hold.fixels = {-1, -1};
+    v.why_not = A.why_not(w_W, &hold);
+    v.contains = v.why_not.empty();
+    if (hold.fixels[0] >= 0) v.hold = hold;
+  } catch (const UnsupportedError& e) {
+    v.why_not = e.what();
+  }
+  return v;
+}
+
 }  // namespace fixel

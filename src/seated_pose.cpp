@@ -6,6 +6,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/polyline_edge.h"
 #include "fixel/internal/quadratic_field.h"
 
 namespace fixel {
@@ -19,36 +20,10 @@ namespace {
 using internal::Q2;
 using internal::sign;
 
-struct Edge {
-  int piece = -1;
-  Vec2 a, b;        // endpoints, frame B
-  Vec2 inward;      // rot90(b − a): the interior is on the left of a CCW loop
-  Rational u0, du;  // curve parameter of a, and of b minus a
-};
+using Edge = internal::PolylineEdge;
 
 std::string fixel_path(int i) { return "fixels[" + std::to_string(i) + "]"; }
 std::string text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_string(v.y) + ")"; }
-
-// The polyline edge through p: exact collinearity and betweenness. At a
-// vertex the edge whose inward normal points along n is preferred.
-std::optional<Edge> edge_through(const Boundary& boundary, const Vec2& p, const Vec2& n) {
-  std::optional<Edge> found;
-  for (std::size_t k = 0; k < boundary.pieces.size(); ++k) {
-    const BezierPiece& piece = boundary.pieces[k];
-    if (piece.degree() != 1) continue;
-    const Vec2 &a = piece.control[0], &b = piece.control[1];
-    const Vec2 e{b.x - a.x, b.y - a.y}, ap{p.x - a.x, p.y - a.y};
-    if (e.x * ap.y - e.y * ap.x != 0) continue;
-    const Rational along = e.x * ap.x + e.y * ap.y, len2 = e.x * e.x + e.y * e.y;
-    if (along < 0 || along > len2) continue;
-    Edge edge{static_cast<int>(k), a, b, {-e.y, e.x}, piece.u0, piece.u1 - piece.u0};
-    const bool aligned =
-        edge.inward.x * n.y - edge.inward.y * n.x == 0 && edge.inward.x * n.x + edge.inward.y * n.y > 0;
-    if (!found || aligned) found = edge;
-    if (aligned) break;
-  }
-  return found;
-}
 
 bool is_perfect_square(const Integer& n, Integer& root) {
   if (n < 0) return false;
@@ -94,6 +69,29 @@ SeatedPose scene_pose(const Scene& scene) {
 
 }  // namespace
 
+namespace internal {
+
+std::optional<Edge> polyline_edge_through(const Boundary& boundary, const Vec2& p, const Vec2& n) {
+  std::optional<Edge> found;
+  for (std::size_t k = 0; k < boundary.pieces.size(); ++k) {
+    const BezierPiece& piece = boundary.pieces[k];
+    if (piece.degree() != 1) continue;
+    const Vec2 &a = piece.control[0], &b = piece.control[1];
+    const Vec2 e{b.x - a.x, b.y - a.y}, ap{p.x - a.x, p.y - a.y};
+    if (e.x * ap.y - e.y * ap.x != 0) continue;
+    const Rational along = e.x * ap.x + e.y * ap.y, len2 = e.x * e.x + e.y * e.y;
+    if (along < 0 || along > len2) continue;
+    Edge edge{static_cast<int>(k), a, b, {-e.y, e.x}, piece.u0, piece.u1 - piece.u0};
+    const bool aligned =
+        edge.inward.x * n.y - edge.inward.y * n.x == 0 && edge.inward.x * n.x + edge.inward.y * n.y > 0;
+    if (!found || aligned) found = edge;
+    if (aligned) break;
+  }
+  return found;
+}
+
+}  // namespace internal
+
 std::string QuadraticIrrational::text() const {
   if (b == 0) return to_string(a);
   const std::string root = to_string(b) + "*sqrt(" + to_string(d) + ")";
@@ -114,7 +112,8 @@ SeatedPose seated_pose(const Scene& scene) {
     SeatedPose q = scene_pose(scene);
     // Locate the contacts for display when they are on polyline edges.
     for (int i = 0; i < nc; ++i)
-      if (auto e = edge_through(*scene.body.boundary, scene.fixels[i].p_AoF_A, scene.fixels[i].n_A)) {
+      if (auto e =
+              internal::polyline_edge_through(*scene.body.boundary, scene.fixels[i].p_AoF_A, scene.fixels[i].n_A)) {
         const BezierPiece& piece = scene.body.boundary->pieces[e->piece];
         q.contact_curve[i] = piece.curve;
         const Vec2 d{e->b.x - e->a.x, e->b.y - e->a.y},
@@ -126,7 +125,7 @@ SeatedPose seated_pose(const Scene& scene) {
 
   // Any contact off a polyline edge: the certified enclosure instead.
   for (int i = 0; i < nc; ++i)
-    if (!edge_through(*scene.body.boundary, scene.fixels[i].p_AoF_A, scene.fixels[i].n_A)) {
+    if (!internal::polyline_edge_through(*scene.body.boundary, scene.fixels[i].p_AoF_A, scene.fixels[i].n_A)) {
       bool curved = false;
       for (const auto& piece : scene.body.boundary->pieces) curved = curved || piece.degree() > 1;
       if (curved) return internal::seated_pose_curved(scene);
@@ -138,7 +137,7 @@ SeatedPose seated_pose(const Scene& scene) {
   std::vector<Vec2> f_A;  // fixel points f_i = p_i − ψ_i n_i
   for (int i = 0; i < nc; ++i) {
     const Fixel& fx = scene.fixels[i];
-    auto e = edge_through(*scene.body.boundary, fx.p_AoF_A, fx.n_A);
+    auto e = internal::polyline_edge_through(*scene.body.boundary, fx.p_AoF_A, fx.n_A);
     if (!e) {
       bool curved = false;
       for (const auto& piece : scene.body.boundary->pieces) curved = curved || piece.degree() > 1;

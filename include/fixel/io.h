@@ -76,10 +76,17 @@ std::string region_text(const Scene& scene, const Region& region);
 /// "approx", "algebraic", "enclosure", "theta_abs", "at_scene_pose",
 /// "contacts"}, "sustained": {"cone", "jam_cones", "pieces", "empty",
 /// "empty_reason"?, "strongly_stable", "mu"}} and, with a wrench, "wrench",
-/// "contains" and "why_not" (docs/formats.md).
-std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench);
+/// "contains" and "why_not" (docs/formats.md). With `approach` (J′ of
+/// approach.h, made from J), an "approach" object: "decided", "t_star",
+/// "theta_star", "on_edges", "empty" and, with `approach_wrench`, its
+/// "contains", "why_not" and "hold".
+std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
+                           const ApproachSet* approach = nullptr,
+                           const std::optional<ApproachVerdict>& approach_wrench = std::nullopt);
 /// The same as a readable report.
-std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench);
+std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
+                           const ApproachSet* approach = nullptr,
+                           const std::optional<ApproachVerdict>& approach_wrench = std::nullopt);
 /// Writes J's cones into `dir` as OFF files clipped to [−1, 1]³ (display:
 /// rows rounded to double): `sustained_cone.off`, `sustained_jam_<i>_<j>.off`
 /// and `sustained_piece_<k>.off`, each with its JSON sidecar (as dump_off).

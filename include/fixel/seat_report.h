@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fixel/approach.h"
 #include "fixel/guaranteed.h"
 #include "fixel/outcomes.h"
 #include "fixel/polyhedron.h"
@@ -50,5 +51,15 @@ struct WrenchVerdict {
 
 /// Decides w_W ∈ J; an UnsupportedError from J becomes an undecided verdict.
 WrenchVerdict wrench_verdict(const SustainedSet& J, const VectorQ& w_W);
+
+/// J′'s verdict on a wrench (approach.h).
+struct ApproachVerdict {
+  std::optional<bool> contains;      ///< Unset when J′ cannot be decided.
+  std::string why_not;               ///< Empty when contained; else the reason.
+  std::optional<ApproachHold> hold;  ///< The pose where a pair holds the part, if that is why.
+};
+
+/// Decides w_W ∈ J′; an UnsupportedError becomes an undecided verdict.
+ApproachVerdict approach_verdict(const ApproachSet& A, const VectorQ& w_W);
 
 }  // namespace fixel

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "cli.h"
+#include "fixel/approach.h"
 #include "fixel/error.h"
 #include "fixel/io.h"
 #include "fixel/scene.h"
@@ -29,9 +30,15 @@ int run_sustained_seat(const Scene& scene, const SeatArgs& a) {
   std::optional<VectorQ> w_W;
   if (!a.wrench_text.empty()) w_W = parse_impulse(a.wrench_text, 3, "--wrench");
   const SustainedSet J = sustained_set(scene);
+  const ApproachSet A = approach_set(scene, J);
   std::optional<WrenchVerdict> wrench;
-  if (w_W) wrench = wrench_verdict(J, *w_W);
-  std::cout << (a.json ? sustained_json(scene, J, wrench) : sustained_text(scene, J, wrench));
+  std::optional<ApproachVerdict> approach_wrench;
+  if (w_W) {
+    wrench = wrench_verdict(J, *w_W);
+    approach_wrench = approach_verdict(A, *w_W);
+  }
+  std::cout << (a.json ? sustained_json(scene, J, wrench, &A, approach_wrench)
+                       : sustained_text(scene, J, wrench, &A, approach_wrench));
   return 0;
 }
 

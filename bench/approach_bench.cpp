@@ -1,0 +1,111 @@
+// Does the approach-aware set J′ predict a real engine where J does not?
+// (docs/physics.md, "J′ in the engine")
+//
+// For seeded random convex polygons with 3 fixels (gaps up to --gap, μ up
+// to --mu, in thousandths), computes J at the seat and J′, samples wrenches
+// of J (random positive combinations of a piece's extreme rays, rounded to
+// rationals, kept when J contains them exactly), splits them by J′, and runs
+// each in Box2D as a sustained push. Prints a Markdown table and the pooled
+// seated fractions of J′ and of J \ J′.
+//
+//   approach_bench [--random K] [--samples N] [--seed S] [--gap G] [--mu M] [--time T]
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+#include <string>
+
+#include "fixel/approach.h"
+#include "fixel/physics.h"
+#include "random_parts.h"
+
+namespace fp = fixel::physics;
+
+namespace {
+
+std::string frac(int k, int n) {
+  if (n == 0) return "–";
+  return std::to_string(k) + "/" + std::to_string(n) + " (" + std::to_string(std::lround(100.0 * k / n)) + "%)";
+}
+
+fixel::Rational rounded(double x) { return fixel::Rational(std::llround(x * 1e6), 1000000); }
+
+struct Tally {
+  int n = 0, seated = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int random_parts = 40, samples = 20, gap = 200, mu = 500;
+  std::uint64_t seed = 7;
+  std::string time = "20";
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--random") random_parts = std::atoi(argv[i + 1]);
+    if (a == "--samples") samples = std::atoi(argv[i + 1]);
+    if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
+    if (a == "--gap") gap = std::atoi(argv[i + 1]);
+    if (a == "--mu") mu = std::atoi(argv[i + 1]);
+    if (a == "--time") time = argv[i + 1];
+  }
+  fp::PushOptions options;
+  options.time = fixel::parse_rational(time);
+  options.trajectory_samples = 1;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0.05, 1);
+
+  std::cout << "| part | abs(theta*) rad | J' | J' pushes seated | J \\ J' pushes seated | J \\ J' outcomes |\n"
+               "|---|---|---|---|---|---|\n";
+  Tally in_all, out_all, in_large, out_large, in_small, out_small;
+  for (int k = 0, added = 0; added < random_parts && k < 5000; ++k) {
+    const auto scene = bench::random_part(rng, k, gap, mu);
+    if (!scene) continue;
+    fixel::ApproachSet A;
+    try {
+      const fixel::SustainedSet J = fixel::sustained_set(*scene, false);
+      if (J.empty || J.pieces.empty()) continue;
+      A = fixel::approach_set(*scene, J);
+    } catch (const fixel::Error&) {
+      continue;
+    }
+    if (!A.decided) continue;
+    ++added;
+    const double theta = std::abs(A.theta_star);
+    Tally in, out;
+    int jammed = 0, escaped = 0, timeout = 0;
+    for (int s = 0, tries = 0; s < samples && tries < 50 * samples; ++tries) {
+      const auto& piece = A.J.pieces[rng() % A.J.pieces.size()];
+      fixel::VectorQ w(3);
+      std::array<double, 3> sum{0, 0, 0};
+      for (const auto& ray : piece.rays) {
+        const double l = U(rng);
+        for (int c = 0; c < 3; ++c) sum[c] += l * ray[c].approx();
+      }
+      const double norm = std::hypot(sum[0], sum[1]) + 1e-300;
+      for (int c = 0; c < 3; ++c) w[c] = rounded(sum[c] / norm);
+      if (!A.J.contains(w)) continue;
+      ++s;
+      const bool in_prime = A.contains(w);
+      const fp::PushResult r = fp::push(*scene, w, options);
+      const bool seated = r.outcome == fp::Outcome::kSeated;
+      Tally& t = in_prime ? in : out;
+      ++t.n;
+      t.seated += seated;
+      if (!in_prime && !seated) {
+        jammed += r.outcome == fp::Outcome::kJammed;
+        escaped += r.outcome == fp::Outcome::kEscaped;
+        timeout += r.outcome == fp::Outcome::kTimeout;
+      }
+    }
+    for (Tally* t : {&in_all, theta >= 0.2 ? &in_large : &in_small}) t->n += in.n, t->seated += in.seated;
+    for (Tally* t : {&out_all, theta >= 0.2 ? &out_large : &out_small}) t->n += out.n, t->seated += out.seated;
+    std::cout << "| " << scene->name << " | " << theta << " | " << (A.on_edges ? "on edges" : "leaves an edge") << " | "
+              << frac(in.seated, in.n) << " | " << frac(out.seated, out.n) << " | jammed " << jammed << ", escaped "
+              << escaped << ", timeout " << timeout << " |\n";
+  }
+  std::cout << "\npooled: J' pushes seated " << frac(in_all.seated, in_all.n) << ", J \\ J' pushes seated "
+            << frac(out_all.seated, out_all.n) << "\n  abs(theta*) >= 0.2 rad: J' " << frac(in_large.seated, in_large.n)
+            << ", J \\ J' " << frac(out_large.seated, out_large.n) << "\n  abs(theta*) < 0.2 rad: J' "
+            << frac(in_small.seated, in_small.n) << ", J \\ J' " << frac(out_small.seated, out_small.n) << "\n";
+}

@@ -1,0 +1,294 @@
+#include "fixel/approach.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "../bench/random_parts.h"  // the physics studies' seeded random parts
+#include "fixel/error.h"
+#include "fixel/internal/approach_data.h"
+#include "fixel/internal/exact_lp.h"
+#include "fixel/internal/polyline_edge.h"
+#include "fixel/internal/polynomial.h"
+#include "fixel/internal/quadratic_field.h"
+#include "fixel/scene_json.h"
+#include "test_util.h"
+
+namespace fixel {
+namespace {
+
+using internal::Q2;
+
+// Random convex parts whose seats turn (gaps up to 1/5, μ up to 1/2) with
+// a decided J′ and a non-empty J.
+struct Part {
+  Scene scene;
+  SustainedSet J;
+  ApproachSet A;
+};
+
+std::vector<Part> turning_parts(int count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Part> out;
+  for (int k = 0; static_cast<int>(out.size()) < count && k < 2000; ++k) {
+    auto scene = bench::random_part(rng, k, 200, 500);
+    if (!scene) continue;
+    try {
+      SustainedSet J = sustained_set(*scene, false);
+      if (J.empty || J.pieces.empty() || J.pose.at_scene_pose) continue;
+      ApproachSet A = approach_set(*scene, J);
+      if (!A.decided || A.data->pairs.empty()) continue;
+      out.push_back({*scene, std::move(J), std::move(A)});
+    } catch (const Error&) {
+    }
+  }
+  return out;
+}
+
+const std::vector<Part>& parts() {
+  static const std::vector<Part> p = turning_parts(12, 11);
+  return p;
+}
+
+Q2 eval(const Polynomial& p, const Q2& x) {
+  Q2 v(0);
+  for (std::size_t i = p.size(); i-- > 0;) v = v * x + Q2(p[i]);
+  return v;
+}
+
+// A wrench of J: a positive combination of one piece's rays, rounded to
+// rationals, kept when J contains it exactly.
+std::optional<VectorQ> wrench_in_J(const SustainedSet& J, std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> weight(1, 1000);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const auto& piece = J.pieces[rng() % J.pieces.size()];
+    VectorQ w = VectorQ::Zero(3);
+    for (const auto& ray : piece.rays)
+      for (int c = 0; c < 3; ++c)
+        w[c] += Rational(weight(rng)) * Rational(std::llround(ray[c].approx() * 1e6), 1000000);
+    if (J.contains(w)) return w;
+  }
+  return std::nullopt;
+}
+
+// The second method: the pose of the pair's family at a rational t, solved
+// directly (Cramer on the two contact conditions), its world-frame friction
+// cones, and v ∈ FC_i + FC_j by an exact LP (CGAL's solver).
+struct DirectPose {
+  std::vector<VectorQ> gens;
+  std::array<Rational, 2> along;  // contact position along each edge, 0 at a, 1 at b
+};
+
+DirectPose direct_pose(const Scene& scene, const std::vector<Rational>& mu, int i, int j, const Rational& t) {
+  const Rational C = (1 - t * t) / (1 + t * t), S = 2 * t / (1 + t * t);
+  const Vec2& c = scene.body.p_AoCm_A;
+  std::array<internal::PolylineEdge, 2> e;
+  std::array<Vec2, 2> f;
+  for (int s = 0; s < 2; ++s) {
+    const Fixel& fx = scene.fixels[s == 0 ? i : j];
+    e[s] = *internal::polyline_edge_through(*scene.body.boundary, fx.p_AoF_A, fx.n_A);
+    f[s] = {fx.p_AoF_A.x - fx.gap * fx.n_A.x, fx.p_AoF_A.y - fx.gap * fx.n_A.y};
+  }
+  // Body frame: g = Rᵀ(f − c) + τ + c on the line n·(g − a) = 0.
+  std::array<Vec2, 2> RTv;
+  std::array<Rational, 2> rhs;
+  for (int s = 0; s < 2; ++s) {
+    const Vec2 v{f[s].x - c.x, f[s].y - c.y};
+    RTv[s] = {C * v.x + S * v.y, -S * v.x + C * v.y};
+    const Vec2& n = e[s].inward;
+    rhs[s] = n.x * (e[s].a.x - c.x - RTv[s].x) + n.y * (e[s].a.y - c.y - RTv[s].y);
+  }
+  const Vec2 &n0 = e[0].inward, &n1 = e[1].inward;
+  const Rational det = n0.x * n1.y - n0.y * n1.x;
+  const Vec2 tau{(rhs[0] * n1.y - rhs[1] * n0.y) / det, (n0.x * rhs[1] - n1.x * rhs[0]) / det};
+  DirectPose out;
+  for (int s = 0; s < 2; ++s) {
+    const Vec2 rho{RTv[s].x + tau.x, RTv[s].y + tau.y};
+    const Vec2 d{e[s].b.x - e[s].a.x, e[s].b.y - e[s].a.y};
+    out.along[s] = ((rho.x + c.x - e[s].a.x) * d.x + (rho.y + c.y - e[s].a.y) * d.y) / (d.x * d.x + d.y * d.y);
+    const Vec2& n = e[s].inward;
+    const Rational m = mu[s == 0 ? i : j];
+    for (int sign : {1, -1}) {
+      const Vec2 b{n.x - sign * m * n.y, n.y + sign * m * n.x};
+      out.gens.push_back(test::vec({C * b.x - S * b.y, S * b.x + C * b.y, rho.x * b.y - rho.y * b.x}));
+    }
+  }
+  return out;
+}
+
+bool in_cone_lp(const std::vector<VectorQ>& gens, const VectorQ& v) {
+  const int n = static_cast<int>(gens.size());
+  std::vector<internal::LinearConstraint> rows;
+  for (int k = 0; k < 3; ++k) {
+    VectorQ a(n);
+    for (int g = 0; g < n; ++g) a[g] = gens[g][k];
+    rows.push_back({a, internal::Relation::kEqual, v[k]});
+  }
+  for (int g = 0; g < n; ++g) {
+    VectorQ a = VectorQ::Zero(n);
+    a[g] = 1;
+    rows.push_back({a, internal::Relation::kGreaterEqual, Rational(0)});
+  }
+  return internal::solve_lp(n, rows).status == internal::LpStatus::kOptimal;
+}
+
+// Rational t strictly between 0 and t*, k/n of the way.
+Rational inside(const ApproachSet& A, int k, int n) {
+  // t_lo < t* < t_hi: the bound on 0's side of t* keeps every point in [0, t*].
+  const Rational& end = internal::sign(internal::from_public(A.t_star)) > 0 ? A.data->t_lo : A.data->t_hi;
+  return end * Rational(k, n);
+}
+
+TEST(Approach, SomeTestPartsTurnFarEnoughToMatter) {
+  ASSERT_EQ(parts().size(), 12u);
+  int large = 0;
+  for (const auto& p : parts()) large += std::abs(p.A.theta_star) > 0.2;
+  EXPECT_GE(large, 3);
+}
+
+TEST(Approach, EachFamilyKeepsBothFixelsOnTheirEdgeLinesAndEndsAtTheSeat) {
+  for (const auto& p : parts()) {
+    const Q2 t_star = internal::from_public(p.A.t_star);
+    const Q2 scale = Q2(1) + t_star * t_star;
+    for (const auto& fam : p.A.data->pairs) {
+      for (int s = 0; s < 2; ++s) {
+        const int k = fam.fixels[s];
+        const Fixel& fx = p.scene.fixels[k];
+        const auto e = *internal::polyline_edge_through(*p.scene.body.boundary, fx.p_AoF_A, fx.n_A);
+        // On the line at every rational t (the polynomial n·(g − a(1 + t²)) is zero).
+        const Polynomial on_line = internal::padd(internal::padd(internal::pscale(fam.contact_B[s][0], e.inward.x),
+                                                                 internal::pscale(fam.contact_B[s][1], e.inward.y)),
+                                                  internal::pscale(Polynomial{Rational(1), Rational(0), Rational(1)},
+                                                                   -(e.inward.x * e.a.x + e.inward.y * e.a.y)));
+        EXPECT_TRUE(on_line.empty()) << p.scene.name;
+        // At t*, the contact of the seated pose (frame B).
+        EXPECT_EQ(eval(fam.contact_B[s][0], t_star), internal::from_public(p.J.pose.p_BoG_B[k][0]) * scale);
+        EXPECT_EQ(eval(fam.contact_B[s][1], t_star), internal::from_public(p.J.pose.p_BoG_B[k][1]) * scale);
+      }
+      // At t*, the generators of J's jam cone of the pair (world frame, negated there).
+      const JamCone* jam = nullptr;
+      for (const auto& j : p.J.jam_cones)
+        if (j.fixels == fam.fixels) jam = &j;
+      ASSERT_NE(jam, nullptr);
+      ASSERT_EQ(jam->cone.rays.size(), fam.gens.size());
+      for (std::size_t g = 0; g < fam.gens.size(); ++g)
+        for (int c = 0; c < 3; ++c)
+          EXPECT_EQ(eval(fam.gens[g][c], t_star), -internal::from_public(jam->cone.rays[g][c]) * scale)
+              << p.scene.name << " generator " << g;
+    }
+  }
+}
+
+TEST(Approach, EachFamilyAgreesWithTheDirectlySolvedPoseAtRationalT) {
+  for (const auto& p : parts())
+    for (const auto& fam : p.A.data->pairs)
+      for (int k = 0; k <= 4; ++k) {
+        const Rational t = inside(p.A, k, 4);
+        const DirectPose d = direct_pose(p.scene, p.J.mu, fam.fixels[0], fam.fixels[1], t);
+        ASSERT_EQ(d.gens.size(), 4u);  // the direct pose always lists ± (μ may be 0)
+        std::size_t g = 0;
+        for (int s = 0; s < 2; ++s) {
+          const int fixel = fam.fixels[s];
+          for (int sign = 0; sign < (p.J.mu[fixel] == 0 ? 1 : 2); ++sign, ++g) {
+            const auto value = internal::eval3(fam.gens[g], t);
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(value[c], d.gens[2 * s + sign][c] * (1 + t * t));
+          }
+        }
+      }
+}
+
+TEST(Approach, AHoldAtAnyRationalPoseOfAFamilyExcludesTheWrench) {
+  std::mt19937_64 rng(5);
+  int held_somewhere = 0, in_prime = 0, witnesses_checked = 0;
+  for (const auto& p : parts()) {
+    for (int sample = 0; sample < 6; ++sample) {
+      const auto w = wrench_in_J(p.J, rng);
+      if (!w) continue;
+      const VectorQ v = -*w;
+      bool held = false;
+      for (const auto& fam : p.A.data->pairs)
+        for (int k = 0; k <= 16 && !held; ++k) {
+          const DirectPose d = direct_pose(p.scene, p.J.mu, fam.fixels[0], fam.fixels[1], inside(p.A, k, 16));
+          held = in_cone_lp(d.gens, v);
+        }
+      ApproachHold hold;
+      const std::string why = p.A.why_not(*w, &hold);
+      if (held) {
+        ++held_somewhere;
+        EXPECT_FALSE(why.empty()) << p.scene.name;
+      }
+      if (why.empty()) ++in_prime;
+      // A rational witness is a pose where the LP finds the hold too.
+      if (!why.empty() && p.A.on_edges && hold.t && hold.t->is_rational()) {
+        const DirectPose d = direct_pose(p.scene, p.J.mu, hold.fixels[0], hold.fixels[1], hold.t->lo);
+        EXPECT_TRUE(in_cone_lp(d.gens, v)) << p.scene.name;
+        ++witnesses_checked;
+      }
+    }
+  }
+  // Not vacuous: holds found both ways, and wrenches that J′ keeps.
+  EXPECT_GT(held_somewhere, 0);
+  EXPECT_GT(witnesses_checked, 0);
+  EXPECT_GT(in_prime, 0);
+}
+
+TEST(Approach, AContactSampledOffItsEdgeEmptiesJPrime) {
+  int off = 0;
+  for (const auto& p : parts())
+    for (const auto& fam : p.A.data->pairs)
+      for (int k = 0; k <= 64; ++k) {
+        const DirectPose d = direct_pose(p.scene, p.J.mu, fam.fixels[0], fam.fixels[1], inside(p.A, k, 64));
+        const bool leaves = d.along[0] < 0 || d.along[0] > 1 || d.along[1] < 0 || d.along[1] > 1;
+        if (leaves) {
+          ++off;
+          EXPECT_FALSE(p.A.on_edges) << p.scene.name;
+          EXPECT_TRUE(p.A.empty);
+          break;
+        }
+      }
+  EXPECT_GT(off, 0);
+  int on = 0;
+  for (const auto& p : parts()) on += p.A.on_edges;
+  EXPECT_GT(on, 0);
+}
+
+TEST(Approach, AnUnturnedSeatGivesJPrimeEqualToJ) {
+  std::mt19937_64 rng(3);
+  int compared = 0;
+  for (int k = 0; k < 400 && compared < 300; ++k) {
+    auto scene = bench::random_part(rng, k);
+    if (!scene) continue;
+    for (auto& f : scene->fixels) f.gap = 0;  // q* = 0
+    try {
+      const SustainedSet J = sustained_set(*scene, false);
+      const ApproachSet A = approach_set(*scene, J);
+      ASSERT_TRUE(A.decided);
+      EXPECT_EQ(A.t_star.a, 0);
+      EXPECT_EQ(A.empty, J.empty);
+      std::uniform_int_distribution<int> c(-20, 20);
+      for (int s = 0; s < 30; ++s, ++compared) {
+        const VectorQ w = test::vec({Rational(c(rng), 7), Rational(c(rng), 7), Rational(c(rng), 11)});
+        EXPECT_EQ(A.contains(w), J.contains(w));
+      }
+    } catch (const SceneError&) {
+    }
+  }
+  EXPECT_GE(compared, 300);
+}
+
+TEST(Approach, BadInputIsATypedErrorNamingTheField) {
+  const Part& p = parts().front();
+  try {
+    p.A.contains(test::vec({Rational(1), Rational(0)}));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("wrench"), std::string::npos);
+  }
+  EXPECT_THROW(approach_set(p.scene, SustainedSet{}), InputError);
+  ApproachSet undecided;
+  undecided.undecided_reason = "test";
+  EXPECT_THROW(undecided.contains(test::vec({Rational(1), Rational(0), Rational(0)})), UnsupportedError);
+}
+
+}  // namespace
+}  // namespace fixel
