@@ -29,6 +29,15 @@ Polynomial lin(const Polynomial& p, const Rational& a, const Polynomial& q, cons
   return padd(pscale(p, a), pscale(q, b));
 }
 
+// n_k · τ = n_k · (a_k − c) − (n_k · v_k) cos θ − (n_k × v_k) sin θ, v_k = f_k − c
+// (the contact condition of seated_pose, linear in τ at a given θ).
+Polynomial beta(const Vec2& c, const PolylineEdge& edge, const Vec2& f) {
+  const Vec2& n = edge.inward;
+  const Vec2 v{f.x - c.x, f.y - c.y};
+  const Rational rhs = n.x * (edge.a.x - c.x) + n.y * (edge.a.y - c.y);
+  return padd(pscale(kOne, rhs), lin(kCos, -(n.x * v.x + n.y * v.y), kSin, -(n.x * v.y - n.y * v.x)));
+}
+
 // The family of poses where fixels i and j touch the lines of their edges,
 // one pose per θ (docs/theory.md §10.7); none when the edges are parallel.
 std::optional<PairFamily> pair_family(const Vec2& c, const std::vector<PolylineEdge>& edges,
@@ -36,15 +45,7 @@ std::optional<PairFamily> pair_family(const Vec2& c, const std::vector<PolylineE
   const Vec2 &ni = edges[i].inward, &nj = edges[j].inward;
   const Rational det = ni.x * nj.y - ni.y * nj.x;
   if (det == 0) return std::nullopt;
-  // n_k · τ = n_k · (a_k − c) − (n_k · v_k) cos θ − (n_k × v_k) sin θ, v_k = f_k − c
-  // (the contact condition of seated_pose, linear in τ at a given θ).
-  auto beta = [&](int k) {
-    const Vec2& n = edges[k].inward;
-    const Vec2 v{f_A[k].x - c.x, f_A[k].y - c.y};
-    const Rational rhs = n.x * (edges[k].a.x - c.x) + n.y * (edges[k].a.y - c.y);
-    return padd(pscale(kOne, rhs), lin(kCos, -(n.x * v.x + n.y * v.y), kSin, -(n.x * v.y - n.y * v.x)));
-  };
-  const Polynomial bi = beta(i), bj = beta(j);
+  const Polynomial bi = beta(c, edges[i], f_A[i]), bj = beta(c, edges[j], f_A[j]);
   const Polynomial tau_x = pscale(lin(bi, nj.y, bj, -ni.y), 1 / det);
   const Polynomial tau_y = pscale(lin(bj, ni.x, bi, -nj.x), 1 / det);
   PairFamily fam;
@@ -305,9 +306,13 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
     data->t_hi = hi;
     if (internal::sign(Q2(data->t_lo) - t_star) >= 0 || internal::sign(Q2(data->t_hi) - t_star) <= 0)
       throw InternalError("approach: the enclosure of t* is not certified");
-    // Pair families exist only away from the seat: at θ* = 0 the family of
-    // every pair is q* itself (its 2×2 system has one solution).
+  }
+  // With every gap 0 the part starts seated: no approach. Otherwise each
+  // pair has its families: one in θ (a single pose, q*, when θ* = 0), or for
+  // parallel edges the slides at the rotations where both touch.
+  if (!q.at_scene_pose) {
     const int nc = scene.num_contacts();
+    const Vec2& c = scene.body.p_AoCm_A;
     std::vector<internal::PolylineEdge> edges;
     std::vector<Vec2> f_A;
     for (int i = 0; i < nc; ++i) {
@@ -319,14 +324,20 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
     }
     for (int i = 0; i < nc; ++i)
       for (int j = i + 1; j < nc; ++j) {
-        auto fam = internal::pair_family(scene.body.p_AoCm_A, edges, f_A, J.mu, i, j);
-        if (!fam) {
+        if (auto fam = internal::pair_family(c, edges, f_A, J.mu, i, j)) {
+          if (internal::sign(t_star) != 0) data->pairs.push_back(std::move(*fam));
+          continue;
+        }
+        const Vec2 &ni = edges[i].inward, &nj = edges[j].inward;
+        const Rational kappa = (nj.x * ni.x + nj.y * ni.y) / (ni.x * ni.x + ni.y * ni.y);  // n_j = κ n_i
+        const Polynomial bi = internal::beta(c, edges[i], f_A[i]);
+        const Polynomial p = internal::psub(internal::beta(c, edges[j], f_A[j]), internal::pscale(bi, kappa));
+        if (!internal::slide_families(scene, edges, f_A, J.mu, i, j, p, bi, q, A.t_star, data->slides)) {
           A.undecided_reason = internal::fixel_name(i) + " and " + internal::fixel_name(j) +
-                               " touch parallel edges: their two-contact poses are not one family in theta "
-                               "(not implemented)";
+                               " touch parallel edges at every rotation: their two-contact poses are not one "
+                               "family (not implemented)";
           return A;
         }
-        data->pairs.push_back(std::move(*fam));
       }
   }
   A.decided = true;
@@ -378,6 +389,21 @@ std::string ApproachSet::why_not(const VectorQ& w_W, ApproachHold* hold) const {
     return internal::fixel_name(fam.fixels[0]) + " and " + internal::fixel_name(fam.fixels[1]) +
            " can hold the part at rest with friction on the way to the seat (at theta ~ " +
            internal::theta_text(theta) + " rad, where only they touch)";
+  }
+  for (const auto& fam : data->slides) {
+    const auto slide = internal::slide_hold(fam, v);
+    if (!slide) continue;
+    if (hold) {
+      *hold = ApproachHold{};
+      hold->fixels = fam.fixels;
+      hold->theta = fam.theta;
+      hold->at_seat = fam.at_seat;
+      hold->slide = *slide;
+    }
+    return internal::fixel_name(fam.fixels[0]) + " and " + internal::fixel_name(fam.fixels[1]) +
+           " can hold the part at rest with friction while it slides along their parallel edges (theta ~ " +
+           internal::theta_text(fam.theta) + " rad, slid ~ " + internal::theta_text(*slide) +
+           (fam.at_seat ? " m from the seat)" : " m)");
   }
   return "";
 }

@@ -276,6 +276,142 @@ TEST(Approach, AnUnturnedSeatGivesJPrimeEqualToJ) {
   EXPECT_GE(compared, 300);
 }
 
+// A random part with two fixels on one edge (equal gaps `gap`, or
+// `gap` and `gap2`) and a third on another edge: a pair on parallel edges.
+std::optional<Scene> two_on_one_edge(std::mt19937_64& rng, int k, const Rational& gap, const Rational& gap2) {
+  auto scene = bench::random_part(rng, k, 200, 500);
+  if (!scene) return std::nullopt;
+  const Fixel f0 = scene->fixels[0], f1 = scene->fixels[1];
+  const auto e0 = *internal::polyline_edge_through(*scene->body.boundary, f0.p_AoF_A, f0.n_A);
+  const auto e1 = *internal::polyline_edge_through(*scene->body.boundary, f1.p_AoF_A, f1.n_A);
+  if (e0.inward.x * e1.inward.y - e0.inward.y * e1.inward.x == 0) return std::nullopt;
+  Fixel a = f0, b = f0;
+  const Vec2 d{e0.b.x - e0.a.x, e0.b.y - e0.a.y};
+  a.p_AoF_A = {e0.a.x + Rational(1, 10) * d.x, e0.a.y + Rational(1, 10) * d.y};
+  b.p_AoF_A = {e0.a.x + Rational(1, 2) * d.x, e0.a.y + Rational(1, 2) * d.y};  // an uneven slide range
+  a.gap = gap;
+  b.gap = gap2;
+  scene->fixels = {a, b, f1};
+  return scene;
+}
+
+TEST(Approach, APairSlidingOnOneEdgeHoldsWhereAnExactLpSaysSo) {
+  // Equal gaps on the shared edge: the seat does not turn (θ* = 0), the
+  // slide family is rational, and the second method is an exact LP at
+  // rational slides. Random wrenches, not only J's: on these parts no
+  // wrench of J was held on a slide, so J's alone would test nothing.
+  std::mt19937_64 rng(21);
+  int parts_checked = 0, held_direct = 0, free_direct = 0, held_off_seat = 0;
+  std::uniform_int_distribution<int> coord(-30, 30);
+  for (int k = 0; k < 400 && parts_checked < 8; ++k) {
+    auto scene = two_on_one_edge(rng, k, Rational(1, 10), Rational(1, 10));
+    if (!scene) continue;
+    SustainedSet J;
+    ApproachSet A;
+    try {
+      J = sustained_set(*scene, false);
+      A = approach_set(*scene, J);
+    } catch (const SceneError&) {
+      continue;
+    }
+    ASSERT_TRUE(A.decided) << A.undecided_reason;
+    ASSERT_EQ(A.t_star.a, 0);
+    ASSERT_EQ(A.data->slides.size(), 1u);
+    const internal::SlideFamily& fam = A.data->slides[0];
+    EXPECT_TRUE(fam.at_seat);
+    ++parts_checked;
+    const Vec2& c = scene->body.p_AoCm_A;
+    const Vec2 x_star{(*J.pose.exact)[0].a, (*J.pose.exact)[1].a};
+    const auto edge =
+        *internal::polyline_edge_through(*scene->body.boundary, scene->fixels[0].p_AoF_A, scene->fixels[0].n_A);
+    const Vec2 d{edge.b.x - edge.a.x, edge.b.y - edge.a.y};
+    for (int sample = 0; sample < 40; ++sample) {
+      const VectorQ v = test::vec({Rational(coord(rng), 10), Rational(coord(rng), 10), Rational(coord(rng), 10)});
+      bool held = false, held_at_seat = false;
+      for (int step = -40; step <= 40; ++step) {
+        // The part at θ = 0 translated by x* + s d: contacts at f − x (frame B).
+        const Rational s(step, 40);
+        const Vec2 x{x_star.x + s * d.x, x_star.y + s * d.y};
+        std::vector<VectorQ> gens;
+        bool on_edge = true;
+        for (int f = 0; f < 2; ++f) {
+          const Fixel& fx = scene->fixels[f];
+          const Vec2 g{fx.p_AoF_A.x - fx.gap * fx.n_A.x - x.x, fx.p_AoF_A.y - fx.gap * fx.n_A.y - x.y};
+          const Rational u = ((g.x - edge.a.x) * d.x + (g.y - edge.a.y) * d.y) / (d.x * d.x + d.y * d.y);
+          on_edge = on_edge && u >= 0 && u <= 1;
+          const Vec2 rho{g.x - c.x, g.y - c.y};
+          const Vec2& n = edge.inward;
+          const Rational m = J.mu[f];
+          for (int sign : {1, -1}) {
+            const Vec2 b{n.x - sign * m * n.y, n.y + sign * m * n.x};
+            gens.push_back(test::vec({b.x, b.y, rho.x * b.y - rho.y * b.x}));
+          }
+        }
+        const bool here = on_edge && in_cone_lp(gens, v);
+        held = held || here;
+        if (step == 0) held_at_seat = here;
+      }
+      held_off_seat += held && !held_at_seat;
+      const bool found = internal::slide_hold(fam, v).has_value();
+      if (held) {
+        ++held_direct;
+        EXPECT_TRUE(found) << scene->name;
+      } else {
+        ++free_direct;
+      }
+      // And through J′: a wrench held on the slide is not in J′.
+      if (held && J.contains(-v)) EXPECT_FALSE(A.contains(-v));
+    }
+  }
+  EXPECT_EQ(parts_checked, 8);
+  EXPECT_GT(held_direct, 0);
+  EXPECT_GT(held_off_seat, 0);  // held only away from the seat: the slide itself is tested
+  EXPECT_GT(free_direct, 0);
+}
+
+TEST(Approach, ASlideFamilyAtATurnedSeatHoldsEveryWrenchOfItsJamConeThere) {
+  // Unequal gaps on the shared edge: the seat turns, the slide family is
+  // in Q(√d), and at s = 0 it is J's jam cone of the pair (J's own rows).
+  std::mt19937_64 rng(23);
+  int families = 0, jammed = 0;
+  std::uniform_int_distribution<int> coord(-30, 30);
+  for (int k = 0; k < 400 && families < 6; ++k) {
+    auto scene = two_on_one_edge(rng, k, Rational(1, 20), Rational(3, 20));
+    if (!scene) continue;
+    SustainedSet J;
+    ApproachSet A;
+    try {
+      J = sustained_set(*scene, false);
+      A = approach_set(*scene, J);
+    } catch (const SceneError&) {
+      continue;
+    }
+    ASSERT_TRUE(A.decided) << A.undecided_reason;
+    const internal::SlideFamily* at_seat = nullptr;
+    for (const auto& f : A.data->slides)
+      if (f.at_seat) at_seat = &f;
+    ASSERT_NE(at_seat, nullptr);
+    EXPECT_NE(internal::sign(internal::from_public(A.t_star)), 0);
+    ++families;
+    const JamCone& jam = J.jam_cones[0];  // fixels 0 and 1, the pair on one edge
+    ASSERT_EQ(jam.fixels, (std::array<int, 2>{0, 1}));
+    for (int sample = 0; sample < 300; ++sample) {
+      const VectorQ w = test::vec({Rational(coord(rng), 10), Rational(coord(rng), 10), Rational(coord(rng), 10)});
+      bool in_jam = true;
+      for (const auto& a : jam.cone.closed) {
+        Q2 dot(0);
+        for (int i = 0; i < 3; ++i) dot += internal::from_public(a[i]) * Q2(w[i]);
+        in_jam = in_jam && internal::sign(dot) >= 0;
+      }
+      if (!in_jam) continue;
+      ++jammed;
+      EXPECT_TRUE(internal::slide_hold(*at_seat, -w).has_value()) << scene->name;
+    }
+  }
+  EXPECT_EQ(families, 6);
+  EXPECT_GT(jammed, 0);
+}
+
 TEST(Approach, BadInputIsATypedErrorNamingTheField) {
   const Part& p = parts().front();
   try {

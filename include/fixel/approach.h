@@ -35,6 +35,10 @@ struct ApproachHold {
   bool at_seat = false;
   /// θ of the pose (rad, counter-clockwise; display only).
   double theta = 0;
+  /// For a pair on parallel edges: how far the part has slid along them
+  /// (frame B, in units of the edge normal's length times metres; display
+  /// only), from q* when `at_seat`.
+  std::optional<double> slide;
 };
 
 /// J′: the wrenches of J that seat the part along the whole approach.
@@ -42,8 +46,8 @@ struct ApproachSet {
   /// J at q*, which J′ refines.
   SustainedSet J;
   /// False when J′ cannot be decided: q* is only enclosed (a contact on a
-  /// curved piece), or a pair touches parallel edges, whose two-contact
-  /// poses are not one family in θ. `undecided_reason` says which.
+  /// curved piece), or a pair on parallel edges can touch both at every
+  /// rotation. `undecided_reason` says which.
   bool decided = false;
   std::string undecided_reason;
   /// tan(θ*/2), exactly, and θ* (rad, display). Zero at an unrotated seat,

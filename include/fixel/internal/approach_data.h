@@ -5,9 +5,11 @@
 // (docs/theory.md §10.7). No CGAL here.
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "fixel/algebraic.h"
+#include "fixel/internal/polyline_edge.h"
 #include "fixel/seated_pose.h"
 
 namespace fixel::internal {
@@ -27,8 +29,35 @@ struct PairFamily {
   bool planar = false;
 };
 
+// A pair on parallel edges touches both lines only at isolated rotations
+// θ_r; there the part can slide along the edges (docs/theory.md §10.7).
+// Frame B at θ_r, slide s along `e`: lever arms ρ_k(s) = ρ_k(0) + s e.
+struct SlideFamily {
+  std::array<int, 2> fixels{};
+  QuadraticIrrational cos, sin;                          // θ_r
+  bool at_seat = false;                                  // θ_r = θ* (then s = 0 is q*)
+  double theta = 0;                                      // θ_r, display
+  Vec2 e;                                                // slide direction, frame B
+  std::vector<std::array<QuadraticIrrational, 3>> gens;  // W_n ± μ W_t at s = 0, frame B at θ_r
+  QuadraticIrrational s_lo, s_hi;                        // both contacts on their edges
+};
+
+// The slide families of fixels i, j (parallel edges) at the rotations between
+// 0 and θ* (ends included) where both touch, appended to `out`; `p` is the
+// pair's consistency polynomial (zero at those t = tan(θ/2)) and `beta_i`
+// the right side of fixel i's contact condition, both times 1 + t². False
+// when p is zero: the pair touches at every rotation (not one family).
+bool slide_families(const Scene& scene, const std::vector<PolylineEdge>& edges, const std::vector<Vec2>& f_A,
+                    const std::vector<Rational>& mu, int i, int j, const Polynomial& p, const Polynomial& beta_i,
+                    const SeatedPose& seat, const QuadraticIrrational& t_star, std::vector<SlideFamily>& out);
+
+// A slide s (display) of the family at which v_W ∈ FC_i + FC_j (world
+// frame): the pair holds the part under the wrench −v_W; none if no s does.
+std::optional<double> slide_hold(const SlideFamily& fam, const VectorQ& v_W);
+
 struct ApproachData {
   std::vector<PairFamily> pairs;
+  std::vector<SlideFamily> slides;
   QuadraticIrrational t_star{0, 0, 0};
   // Rational bounds with t_lo < t* < t_hi when t* ≠ 0, tight to about 2⁻⁴⁰.
   Rational t_lo, t_hi;
