@@ -3,11 +3,15 @@
 // (a pair holds the part; a contact leaves its edge) by real root isolation.
 #include "fixel/approach.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/approach_data.h"
+#include "fixel/internal/cone3.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/polyline_edge.h"
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
@@ -73,6 +77,42 @@ std::optional<PairFamily> pair_family(const Vec2& c, const std::vector<PolylineE
     }
   }
   return fam;
+}
+
+Rational derivative_at(const Polynomial& p, const Rational& t) {
+  Rational v = 0;
+  for (std::size_t i = p.size(); i-- > 1;) v = v * t + Rational(static_cast<long>(i)) * p[i];
+  return v;
+}
+
+// The family's pieces on [0, end] (end a rational bound of t* beyond it):
+// each generator, a quadratic in t, lies on [t0, t1] in the cone of its
+// Bézier control points p(t0), p(t0) + (t1 − t0)/2 p'(t0), p(t1).
+void add_pieces(PairFamily& fam, const Rational& end, int count) {
+  for (int k = 0; k < count; ++k) {
+    const Rational a = end * Rational(k, count), b = end * Rational(k + 1, count);
+    PairFamily::Piece piece;
+    piece.t0 = a;  // on 0's side
+    piece.t1 = b;
+    const Rational lo = a < b ? a : b, hi = a < b ? b : a;
+    for (const auto& g : fam.gens) {
+      const auto p0 = eval3(g, lo), p2 = eval3(g, hi);
+      std::array<Rational, 3> p1;
+      for (int c = 0; c < 3; ++c) p1[c] = p0[c] + (hi - lo) / 2 * derivative_at(g[c], lo);
+      piece.outer_gens.insert(piece.outer_gens.end(), {p0, p1, p2});
+      piece.inner_gens.push_back(eval3(g, a));
+    }
+    piece.outer_rows = facets_of(piece.outer_gens, false);
+    if (!fam.planar || !is_zero3(cross3(piece.inner_gens[0], piece.inner_gens[1])))
+      piece.inner_rows = facets_of(piece.inner_gens, fam.planar);
+    fam.pieces.push_back(std::move(piece));
+  }
+}
+
+bool in_rows(const std::vector<std::array<Rational, 3>>& rows, const VectorQ& v) {
+  for (const auto& a : rows)
+    if (a[0] * v[0] + a[1] * v[1] + a[2] * v[2] < 0) return false;
+  return true;
 }
 
 Polynomial pdot(const PolyVec3& a, const PolyVec3& b) {
@@ -325,7 +365,11 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
     for (int i = 0; i < nc; ++i)
       for (int j = i + 1; j < nc; ++j) {
         if (auto fam = internal::pair_family(c, edges, f_A, J.mu, i, j)) {
-          if (internal::sign(t_star) != 0) data->pairs.push_back(std::move(*fam));
+          if (internal::sign(t_star) == 0) continue;
+          const int count = std::clamp(static_cast<int>(std::ceil(std::abs(A.theta_star) / internal::kPieceAngle)), 1,
+                                       internal::kMaxPieces);
+          internal::add_pieces(*fam, internal::sign(t_star) > 0 ? data->t_hi : data->t_lo, count);
+          data->pairs.push_back(std::move(*fam));
           continue;
         }
         const Vec2 &ni = edges[i].inward, &nj = edges[j].inward;
@@ -371,6 +415,28 @@ std::string ApproachSet::why_not(const VectorQ& w_W, ApproachHold* hold) const {
   VectorQ v(3);
   for (int k = 0; k < 3; ++k) v[k] = -w_W[k];
   for (const auto& fam : data->pairs) {
+    // Filters, exact: a hold at a piece's start settles it; a wrench outside
+    // every piece's outer cone is held nowhere on the family. Root isolation
+    // decides the rest.
+    bool maybe = force_exact();
+    for (std::size_t k = 0; k < fam.pieces.size() && !force_exact(); ++k) {
+      const auto& piece = fam.pieces[k];
+      if (!piece.inner_rows.empty() && internal::in_rows(piece.inner_rows, v)) {
+        internal::record_filter(FilterSite::kApproach, true);
+        if (hold) {
+          *hold = ApproachHold{};
+          hold->fixels = fam.fixels;
+          hold->t = AlgebraicReal::rational(piece.t0);
+          hold->theta = 2 * std::atan(to_double(piece.t0));
+        }
+        return internal::fixel_name(fam.fixels[0]) + " and " + internal::fixel_name(fam.fixels[1]) +
+               " can hold the part at rest with friction on the way to the seat (at theta ~ " +
+               internal::theta_text(2 * std::atan(to_double(piece.t0))) + " rad, where only they touch)";
+      }
+      maybe = maybe || internal::in_rows(piece.outer_rows, v);
+    }
+    if (!force_exact()) internal::record_filter(FilterSite::kApproach, !maybe);
+    if (!maybe) continue;
     const std::vector<Polynomial> polys = internal::hold_polynomials(fam, v);
     const std::size_t m = fam.gens.size();
     const auto found =

@@ -48,6 +48,8 @@ std::string to_string(FilterSite site) {
       return "feasibility";
     case FilterSite::kDesignBound:
       return "design bound";
+    case FilterSite::kApproach:
+      return "approach";
     case FilterSite::kCount:
       break;
   }

@@ -117,6 +117,7 @@ class PieceIndex {
 
 std::string in_meaning(const Region& region) {
   if (region.target == "J") return "sustained push: seats and stays";
+  if (region.target == "J'") return "sustained push: seats and stays, no pair holding the part on the way";
   if (region.target == "G") return "one-step: guaranteed";
   return "one-step: can seat";
 }

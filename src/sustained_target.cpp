@@ -174,23 +174,32 @@ std::vector<Polynomial> j_polynomials(const Data<IV>&, const std::vector<std::ar
 
 // The J target of the region. An undecided sign (enclosed q*) makes the
 // question's answer "no", so the segment stays PARTIAL: never a wrong in/out.
+// For J′ (approach_target.cpp) the IN questions read `d_` (J's rows plus
+// outer cones of the swept jam cones) and the OUT questions `out_` (J's rows
+// plus jam cones at sampled poses): both answers stay exact, and what
+// neither settles is PARTIAL.
 class SustainedTarget final : public RegionTarget, public IntervalTarget {
  public:
-  explicit SustainedTarget(std::shared_ptr<const SustainedData> d) : d_(std::move(d)) {
+  explicit SustainedTarget(std::shared_ptr<const SustainedData> d, std::shared_ptr<const SustainedData> out = nullptr,
+                           bool empty = false)
+      : d_(std::move(d)), out_(std::move(out)), empty_(empty) {
     if (const auto* exact = std::get_if<Data<Q2>>(&d_->data)) enclosed_.emplace(*exact);
+    if (out_)
+      if (const auto* exact = std::get_if<Data<Q2>>(&out_->data)) enclosed_out_.emplace(*exact);
   }
   const char* push_model() const override { return "sustained"; }
-  const char* name() const override { return "J"; }
+  const char* name() const override { return out_ || empty_ ? "J'" : "J"; }
 
   // The region's interval pre-test (exact q* only): segments and points
   // decided on enclosures of J's rows and of the wrench cone, with the
   // exact test's steps and LP count. An IN answer has no magnitudes (J is
   // a cone), so nothing waits for the exact path.
-  IntervalTarget* interval_target() override { return enclosed_ ? this : nullptr; }
+  IntervalTarget* interval_target() override { return enclosed_ && !empty_ ? this : nullptr; }
   bool in_answers_have_magnitudes() const override { return false; }
   bool interval_magnitudes(const FGen&, FMagnitudes&) const override { return false; }
   int interval_ray_hits(const FGen&) const override { return kUndecided; }  // unused: the tests below take cones
   bool out_test_sees_hits() const override { return true; }
+  bool answers_points() const override { return !out_; }  // J′'s points can be PARTIAL
   int interval_contains(const FGen* gens, const int*, std::size_t n) const override {
     long lp = 0;
     const int in = enclosed_->cone_in(gens, n, paired_generators, generator_points, lp);
@@ -198,13 +207,16 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
     return in;
   }
   int certify_out_test(const FGen* gens, std::size_t n) override {
+    if (out_ && !enclosed_out_) return kUndecided;
     long lp = 0;
-    const int missed = enclosed_->cone_misses(gens, n, paired_generators, generator_points, lp);
+    const JEnclosure& e = out_ ? *enclosed_out_ : *enclosed_;
+    const int missed = e.cone_misses(gens, n, paired_generators, generator_points, lp);
     if (missed != kUndecided && stats) stats->lp_tests += lp;
     return missed;
   }
 
   bool contains_cone(const std::vector<VectorQ>& gens, const Vec2*, const Vec2*, RegionInterval* detail) override {
+    if (empty_) return false;
     bool in = false;
     try {
       in = std::visit([&](const auto& d) { return cone_in_J(d, gens, stats); }, d_->data);
@@ -219,20 +231,29 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
   }
 
   bool misses(const std::vector<VectorQ>& gens) override {
+    if (empty_) return true;
     try {
-      return std::visit([&](const auto& d) { return cone_misses_J(d, gens, stats); }, d_->data);
+      return std::visit([&](const auto& d) { return cone_misses_J(d, gens, stats); }, (out_ ? out_ : d_)->data);
     } catch (const Undecided&) {
       return false;
     }
   }
 
   std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>& gens) const override {
+    if (out_ || empty_)
+      throw UnsupportedError("RegionOptions.exact", "",
+                             "is not available for J': its jam cones sweep with the pose, so J' is not a finite "
+                             "union of polyhedral cones (docs/theory.md §10.7)");
     return std::visit([&](const auto& d) { return j_polynomials(d, gens); }, d_->data);
   }
 
-  RegionStatus test_point(const std::vector<VectorQ>& gens, const Vec2&, const Vec2&, Magnitudes* out,
+  RegionStatus test_point(const std::vector<VectorQ>& gens, const Vec2& d_first, const Vec2& d_last, Magnitudes* out,
                           std::vector<Magnitudes>*) override {
     if (out) *out = Magnitudes{};
+    if (out_ || empty_) {
+      if (contains_cone(gens, &d_first, &d_last, nullptr)) return RegionStatus::kIn;
+      return misses(gens) ? RegionStatus::kOut : RegionStatus::kPartial;
+    }
     try {
       const bool in = std::visit([&](const auto& d) { return cone_in_J(d, gens, stats); }, d_->data);
       return in ? RegionStatus::kIn : RegionStatus::kOut;
@@ -242,8 +263,9 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
   }
 
  private:
-  std::shared_ptr<const SustainedData> d_;
-  std::optional<JEnclosure> enclosed_;
+  std::shared_ptr<const SustainedData> d_, out_;
+  bool empty_ = false;
+  std::optional<JEnclosure> enclosed_, enclosed_out_;
 };
 
 }  // namespace
@@ -258,6 +280,12 @@ std::unique_ptr<RegionTarget> sustained_target(const SustainedSet& J) {
 std::unique_ptr<RegionTarget> internal::sustained_target(std::shared_ptr<const SustainedData> data) {
   if (!data) throw InputError("J", "", "has no data");
   return std::make_unique<SustainedTarget>(std::move(data));
+}
+
+std::unique_ptr<RegionTarget> internal::sustained_target(std::shared_ptr<const SustainedData> in,
+                                                         std::shared_ptr<const SustainedData> out, bool empty) {
+  if (!in || !out) throw InputError("J'", "", "has no data");
+  return std::make_unique<SustainedTarget>(std::move(in), std::move(out), empty);
 }
 
 bool SustainedSet::contains(const VectorQ& w_W) const { return why_not(w_W).empty(); }

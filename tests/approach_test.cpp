@@ -6,6 +6,7 @@
 
 #include "../bench/random_parts.h"  // the physics studies' seeded random parts
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/approach_data.h"
 #include "fixel/internal/exact_lp.h"
 #include "fixel/internal/polyline_edge.h"
@@ -232,6 +233,40 @@ TEST(Approach, AHoldAtAnyRationalPoseOfAFamilyExcludesTheWrench) {
   EXPECT_GT(in_prime, 0);
 }
 
+TEST(Approach, ThePiecesFilterChangesNoAnswerAndRootIsolationStillRuns) {
+  std::mt19937_64 rng(9);
+  reset_filter_stats();
+  int compared = 0, kept = 0;
+  std::uniform_int_distribution<int> coord(-30, 30);
+  for (const auto& p : parts()) {
+    if (!p.A.on_edges) continue;
+    for (int sample = 0; sample < test::sanitizer_scaled(12); ++sample) {
+      // Wrenches of J, and wrenches near J's (a random shift): both sides.
+      auto w = wrench_in_J(p.J, rng);
+      if (!w) continue;
+      if (sample % 2) *w += test::vec({Rational(coord(rng), 40), Rational(coord(rng), 40), Rational(coord(rng), 40)});
+      bool filtered = false, exact = false;
+      {
+        const ForceExactScope on(false);
+        filtered = p.A.contains(*w);
+      }
+      {
+        const ForceExactScope forced;
+        exact = p.A.contains(*w);
+      }
+      EXPECT_EQ(filtered, exact) << p.scene.name;
+      ++compared;
+      kept += exact;
+    }
+  }
+  const FilterStats stats = filter_stats();
+  const FilterCounts& c = stats.at(FilterSite::kApproach);
+  EXPECT_GT(compared, 20);
+  EXPECT_GT(kept, 0);
+  EXPECT_GT(c.certified, 0);
+  EXPECT_GT(c.fallbacks, 0);
+}
+
 TEST(Approach, AContactSampledOffItsEdgeEmptiesJPrime) {
   int off = 0;
   for (const auto& p : parts())
@@ -360,7 +395,9 @@ TEST(Approach, APairSlidingOnOneEdgeHoldsWhereAnExactLpSaysSo) {
         ++free_direct;
       }
       // And through J′: a wrench held on the slide is not in J′.
-      if (held && J.contains(-v)) EXPECT_FALSE(A.contains(-v));
+      if (held && J.contains(-v)) {
+        EXPECT_FALSE(A.contains(-v));
+      }
     }
   }
   EXPECT_EQ(parts_checked, 8);

@@ -356,7 +356,7 @@ for cmd in "region $src/data/scenes/blob.json --json --pusher-mu 1/10" "seat $sr
   if [ -z "$a" ] || [ "$a" != "$b" ]; then echo "FAIL: $cmd differs with --exact-only"; fail=1; fi
 done
 expect 0 'fixel: filters (certified/exact fallbacks): lemke 0/0 lemke tie 0/0 ray test ' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --json
-expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 membership 0/0 jam test 0/0 region test 0/0 in magnitudes 0/0 feasibility 0/0 design bound 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
+expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 membership 0/0 jam test 0/0 region test 0/0 in magnitudes 0/0 feasibility 0/0 design bound 0/0 approach 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
 
 # Issue 16 (smaller defects): guaranteed-set rows with a zero left side are
 # dropped (true for every p) or make the set empty; never printed. This scene

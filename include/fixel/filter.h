@@ -36,11 +36,13 @@ enum class FilterSite {
   kDesignBound,   ///< Fixture design's pair bound: the sign of a triple's det W_n, and whether a
                   ///< triple's score can still enter the top K (certified by an upper bound of its
                   ///< bound; a fallback computes the bound exactly).
+  kApproach,      ///< J′'s hold test on one pair's family: settled by its pieces' cones (a hold at a
+                  ///< piece's start, or outside every piece's outer cone), or by root isolation (fallback).
   kCount,
 };
 
 /// "lemke", "lemke tie", "ray test", "out test", "orientation", "cone", "membership", "jam test",
-/// "region test", "in magnitudes", "feasibility", "design bound".
+/// "region test", "in magnitudes", "feasibility", "design bound", "approach".
 std::string to_string(FilterSite site);
 
 /// How often one filter decided (certified) and how often it could not and

@@ -19,6 +19,7 @@ namespace fixel {
 struct GuaranteedSet;
 struct SeatingSet;
 struct SustainedSet;
+struct ApproachSet;
 
 namespace internal {
 class IntervalTarget;  // internal/region_filter.h
@@ -87,5 +88,13 @@ std::unique_ptr<RegionTarget> guaranteed_target(const GuaranteedSet& G, const Se
 /// The sustained-push set J (docs/theory.md §10): a wrench direction reaches
 /// J when it lies in J (any magnitude). Keeps a reference to J's data.
 std::unique_ptr<RegionTarget> sustained_target(const SustainedSet& J);
+
+/// The approach-aware set J′ (approach.h, docs/theory.md §10.7). J′ is not
+/// kept as polyhedral cones, so a segment is IN when it is IN for J and
+/// misses outer cones of the jam cones swept along the approach, OUT when
+/// it misses J or lies in a jam cone at a pose of the approach, and PARTIAL
+/// otherwise: exact answers, a wider PARTIAL band than J's. Throws
+/// UnsupportedError when J′ is not decided. Keeps its own copy of the data.
+std::unique_ptr<RegionTarget> approach_target(const ApproachSet& A);
 
 }  // namespace fixel

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "cli.h"
+#include "fixel/approach.h"
 #include "fixel/error.h"
 #include "fixel/io.h"
 #include "fixel/physics.h"
@@ -22,7 +23,7 @@ struct RegionArgs {
   std::string scene_path, resolution_text = "1/1024", resolution_length_text, cone_text = "tight", pusher_mu_text,
                           svg_path, push_text = "step", time_text = "20";
   int validate = 0, digits = 0;
-  bool json = false, guaranteed = false, exact = false;
+  bool json = false, guaranteed = false, exact = false, approach = false;
   RunOptions run;
 };
 
@@ -65,7 +66,7 @@ int run_sustained_region(const Scene& scene, const RegionArgs& a, const physics:
   RegionOptions options = region_options(a);
   if (!a.pusher_mu_text.empty()) options.pusher_mu = parse_pusher_mu(a.pusher_mu_text);
   const SustainedSet J = sustained_set(scene);
-  const auto target = sustained_target(J);
+  const auto target = a.approach ? approach_target(approach_set(scene, J)) : sustained_target(J);
   const auto r = compute_region(scene, *target, options);
   end_progress();
   std::optional<physics::RegionValidation> v;
@@ -89,6 +90,7 @@ int run_region(const RegionArgs& a) {
   push_options.control = run_control();
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
   if (a.push_text == "sustained") return run_sustained_region(scene, a, push_options);
+  if (a.approach) throw InputError("--approach", "", "needs --push sustained (J' refines the sustained-push set J)");
   if (a.exact && a.validate != 0)
     throw InputError("--validate", std::to_string(a.validate),
                      "needs the certified magnitudes of subdivision: --exact gives none for the one-step push "
@@ -166,6 +168,9 @@ Command add_region(CLI::App& app) {
   cmd->add_option("--push", a->push_text,
                   "Push model: step (default; one impulse, the set S) or sustained (a held wrench, the set J)")
       ->check(CLI::IsMember({"step", "sustained"}));
+  cmd->add_flag("--approach", a->approach,
+                "With --push sustained: classify against the approach-aware J' (no pair holds the part on its way "
+                "to the seat, docs/theory.md 10.7)");
   cmd->add_option("--validate", a->validate, "Run N pushes per IN interval in Box2D (docs/physics.md)");
   cmd->add_option("--time", a->time_text, "With --validate: hold each push for T time steps h (default 20)");
   cmd->add_flag("--exact", a->exact,

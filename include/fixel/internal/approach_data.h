@@ -27,7 +27,22 @@ struct PairFamily {
   std::vector<Polynomial> on_edge;
   // Both fixels frictionless: the generators span a plane.
   bool planar = false;
+  // Pieces of the family from t = 0 to a rational bound of t* beyond it
+  // (about kPieceAngle of θ each), world frame: the cone of every
+  // generator's Bézier control points on the piece (outer: it holds the
+  // pair's cone at every pose of the piece) and the pair's cone at the
+  // piece's start (inner: one pose of the approach), as generators and
+  // closed rows a·v ≥ 0 (inner rows empty when they cannot be made).
+  struct Piece {
+    Rational t0, t1;
+    std::vector<std::array<Rational, 3>> outer_gens, outer_rows, inner_gens, inner_rows;
+  };
+  std::vector<Piece> pieces;
 };
+
+// Radians of θ per piece of a family, and a cap on the pieces.
+inline constexpr double kPieceAngle = 0.02;
+inline constexpr int kMaxPieces = 64;
 
 // A pair on parallel edges touches both lines only at isolated rotations
 // θ_r; there the part can slide along the edges (docs/theory.md §10.7).

@@ -31,4 +31,11 @@ SustainedCore sustained_core(const Scene& scene);
 // sustained_target(J) (region_target.h) from J's data alone.
 std::unique_ptr<RegionTarget> sustained_target(std::shared_ptr<const SustainedData> data);
 
+// The J′ target (approach_target.cpp): IN questions on `in` (J's rows and
+// outer cones of the jam cones swept along the approach), OUT questions on
+// `out` (J's rows and jam cones at sampled poses of the approach); with
+// `empty`, nothing is IN and everything is OUT.
+std::unique_ptr<RegionTarget> sustained_target(std::shared_ptr<const SustainedData> in,
+                                               std::shared_ptr<const SustainedData> out, bool empty);
+
 }  // namespace fixel::internal
