@@ -5,10 +5,12 @@
 // to --mu, in thousandths), computes J at the seat and J′, samples wrenches
 // of J (random positive combinations of a piece's extreme rays, rounded to
 // rationals, kept when J contains them exactly), splits them by J′, and runs
-// each in Box2D as a sustained push. Prints a Markdown table and the pooled
-// seated fractions of J′ and of J \ J′.
+// each in Box2D as a sustained push. Then the pushing regions against J and
+// J′ (resolution 1/256, frictionless pusher), with --region-pushes pushes
+// at random points of every IN stretch (`region --validate`). Prints a
+// Markdown table and the pooled seated fractions.
 //
-//   approach_bench [--random K] [--samples N] [--seed S] [--gap G] [--mu M] [--time T]
+//   approach_bench [--random K] [--samples N] [--region-pushes P] [--seed S] [--gap G] [--mu M] [--time T]
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -17,6 +19,8 @@
 
 #include "fixel/approach.h"
 #include "fixel/physics.h"
+#include "fixel/region.h"
+#include "fixel/region_target.h"
 #include "random_parts.h"
 
 namespace fp = fixel::physics;
@@ -37,13 +41,14 @@ struct Tally {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int random_parts = 40, samples = 20, gap = 200, mu = 500;
+  int random_parts = 40, samples = 20, gap = 200, mu = 500, region_pushes = 5;
   std::uint64_t seed = 7;
   std::string time = "20";
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--random") random_parts = std::atoi(argv[i + 1]);
     if (a == "--samples") samples = std::atoi(argv[i + 1]);
+    if (a == "--region-pushes") region_pushes = std::atoi(argv[i + 1]);
     if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
     if (a == "--gap") gap = std::atoi(argv[i + 1]);
     if (a == "--mu") mu = std::atoi(argv[i + 1]);
@@ -55,9 +60,23 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0.05, 1);
 
-  std::cout << "| part | abs(theta*) rad | J' | J' pushes seated | J \\ J' pushes seated | J \\ J' outcomes |\n"
-               "|---|---|---|---|---|---|\n";
-  Tally in_all, out_all, in_large, out_large, in_small, out_small;
+  std::cout << "| part | abs(theta*) rad | J' | J' pushes seated | J \\ J' pushes seated | J \\ J' outcomes | J region "
+               "IN length, pushes seated | J' region IN length, pushes seated |\n|---|---|---|---|---|---|---|---|\n";
+  Tally in_all, out_all, in_large, out_large, in_small, out_small, region_j, region_a;
+  auto region_cell = [&](const fixel::Scene& scene, fixel::RegionTarget& target, Tally& pooled) {
+    fixel::RegionOptions ro;
+    ro.resolution = fixel::Rational(1, 256);
+    const fixel::Region r = fixel::compute_region(scene, target, ro);
+    fixel::Rational in = 0, all = 0;
+    for (const auto& i : r.intervals) {
+      all += i.u1 - i.u0;
+      if (i.status == fixel::RegionStatus::kIn) in += i.u1 - i.u0;
+    }
+    const auto v = fp::validate_region(scene, r, fp::seated_push_model(scene), region_pushes, seed, options);
+    pooled.n += v.total.pushes;
+    pooled.seated += v.total.seated;
+    return std::to_string(std::lround(100 * fixel::to_double(in / all))) + "%, " + frac(v.total.seated, v.total.pushes);
+  };
   for (int k = 0, added = 0; added < random_parts && k < 5000; ++k) {
     const auto scene = bench::random_part(rng, k, gap, mu);
     if (!scene) continue;
@@ -102,10 +121,14 @@ int main(int argc, char** argv) {
     for (Tally* t : {&out_all, theta >= 0.2 ? &out_large : &out_small}) t->n += out.n, t->seated += out.seated;
     std::cout << "| " << scene->name << " | " << theta << " | " << (A.on_edges ? "on edges" : "leaves an edge") << " | "
               << frac(in.seated, in.n) << " | " << frac(out.seated, out.n) << " | jammed " << jammed << ", escaped "
-              << escaped << ", timeout " << timeout << " |\n";
+              << escaped << ", timeout " << timeout << " | "
+              << region_cell(*scene, *fixel::sustained_target(A.J), region_j) << " | "
+              << region_cell(*scene, *fixel::approach_target(A), region_a) << " |\n";
   }
   std::cout << "\npooled: J' pushes seated " << frac(in_all.seated, in_all.n) << ", J \\ J' pushes seated "
             << frac(out_all.seated, out_all.n) << "\n  abs(theta*) >= 0.2 rad: J' " << frac(in_large.seated, in_large.n)
             << ", J \\ J' " << frac(out_large.seated, out_large.n) << "\n  abs(theta*) < 0.2 rad: J' "
-            << frac(in_small.seated, in_small.n) << ", J \\ J' " << frac(out_small.seated, out_small.n) << "\n";
+            << frac(in_small.seated, in_small.n) << ", J \\ J' " << frac(out_small.seated, out_small.n)
+            << "\nregions: J IN pushes seated " << frac(region_j.seated, region_j.n) << ", J' IN pushes seated "
+            << frac(region_a.seated, region_a.n) << "\n";
 }

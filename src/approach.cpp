@@ -290,19 +290,6 @@ bool held(std::size_t m, const Signs& s) {
   return false;
 }
 
-// Rational bounds lo < x < hi of x = a + b√d, about 2⁻⁶⁰ apart (an
-// integer square root, exact).
-std::pair<Rational, Rational> bounds(const QuadraticIrrational& x) {
-  const Rational pad = Rational(1) / Rational(Integer(1) << 60);
-  if (x.b == 0) return {x.a - pad, x.a + pad};
-  const Integer p = boost::multiprecision::numerator(x.d), q = boost::multiprecision::denominator(x.d);
-  const Integer scale = Integer(1) << 64;
-  const Integer r = boost::multiprecision::sqrt(p * q * scale * scale);  // ⌊√(pq)·2⁶⁴⌋
-  const Rational root_lo = Rational(r) / Rational(q * scale), root_hi = Rational(r + 1) / Rational(q * scale);
-  const Rational u = x.b * root_lo, v = x.b * root_hi;
-  return {x.a + (u < v ? u : v) - pad, x.a + (u < v ? v : u) + pad};
-}
-
 std::string theta_text(double theta) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.4f", theta);

@@ -6,6 +6,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/filtered.h"
 #include "fixel/internal/polyline_edge.h"
 #include "fixel/internal/quadratic_field.h"
 
@@ -46,11 +47,12 @@ Q2 sqrt_of(const Rational& r) {
   return Q2(Rational(0), Rational(k) / Rational(q), Rational(m));
 }
 
-double approx(const Q2& x) { return CGAL::to_double(x); }
+double approx(const Q2& x) { return internal::approx(internal::to_public(x)); }
 
+// A certified enclosure (CGAL's own overflows to inf · 0 for huge d).
 std::array<double, 2> enclose(const Q2& x) {
-  const auto iv = CGAL::to_interval(x);
-  return {iv.first, iv.second};
+  const auto [lo, hi] = internal::bounds(internal::to_public(x));
+  return {internal::to_interval(lo).inf(), internal::to_interval(hi).sup()};
 }
 
 SeatedPose scene_pose(const Scene& scene) {
@@ -99,7 +101,24 @@ std::string QuadraticIrrational::text() const {
   return to_string(a) + (b > 0 ? "+" : "") + root;
 }
 
-double QuadraticIrrational::approx() const { return to_double(a) + to_double(b) * std::sqrt(to_double(d)); }
+double QuadraticIrrational::approx() const { return internal::approx(*this); }
+
+std::pair<Rational, Rational> internal::bounds(const QuadraticIrrational& x) {
+  const Rational pad = Rational(1) / Rational(Integer(1) << 60);
+  if (x.b == 0) return {x.a - pad, x.a + pad};
+  const Integer p = boost::multiprecision::numerator(x.d), q = boost::multiprecision::denominator(x.d);
+  const Integer scale = Integer(1) << 64;
+  const Integer r = boost::multiprecision::sqrt(p * q * scale * scale);  // ⌊√(pq)·2⁶⁴⌋
+  const Rational root_lo = Rational(r) / Rational(q * scale), root_hi = Rational(r + 1) / Rational(q * scale);
+  const Rational u = x.b * root_lo, v = x.b * root_hi;
+  return {x.a + (u < v ? u : v) - pad, x.a + (u < v ? v : u) + pad};
+}
+
+double internal::approx(const QuadraticIrrational& x) {
+  if (x.b == 0) return to_double(x.a);
+  const auto [lo, hi] = bounds(x);
+  return to_double((lo + hi) / 2);
+}
 
 SeatedPose seated_pose(const Scene& scene) {
   if (!scene.body.boundary)

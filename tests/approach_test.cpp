@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "../bench/random_parts.h"  // the physics studies' seeded random parts
@@ -13,6 +14,7 @@
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
 #include "fixel/scene_json.h"
+#include "fixel/seated_pose.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -447,6 +449,29 @@ TEST(Approach, ASlideFamilyAtATurnedSeatHoldsEveryWrenchOfItsJamConeThere) {
   }
   EXPECT_EQ(families, 6);
   EXPECT_GT(jammed, 0);
+}
+
+TEST(Approach, ASeatInAHugeQuadraticFieldHasAFiniteRotation) {
+  // The rotation's approximation once read a1·√d in doubles: √d overflowed
+  // to inf for d beyond 10³⁰⁸, and inf · 0 gave NaN (θ* printed as nan).
+  std::mt19937_64 rng(7);
+  int huge = 0;
+  for (int k = 0; k < 400 && huge < 3; ++k) {
+    auto scene = bench::random_part(rng, k, 200, 500);
+    if (!scene) continue;
+    try {
+      const SeatedPose q = seated_pose(*scene);
+      if (!q.exact || (*q.exact)[3].b == 0 || to_double((*q.exact)[3].d) < 1e308) continue;
+      ++huge;
+      EXPECT_TRUE(std::isfinite(q.approx[2])) << scene->name;
+      EXPECT_LE(q.enclosure[2][0], q.approx[2]);
+      EXPECT_LE(q.approx[2], q.enclosure[2][1]);
+      EXPECT_LT(q.enclosure[2][1] - q.enclosure[2][0], 1e-9);
+      EXPECT_TRUE(std::isfinite((*q.exact)[3].approx()));
+    } catch (const SceneError&) {
+    }
+  }
+  EXPECT_EQ(huge, 3);
 }
 
 TEST(Approach, BadInputIsATypedErrorNamingTheField) {

@@ -8,6 +8,7 @@
 #include <CGAL/boost_mp.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "fixel/rational.h"
@@ -31,6 +32,13 @@ inline Q2 from_public(const QuadraticIrrational& x) {
   if (x.b == 0) return Q2(x.a);
   return Q2(x.a, x.b, x.d);
 }
+
+// Rational bounds lo < x < hi of x = a + b√d, about 2⁻⁶⁰ apart (an exact
+// integer square root: no overflow however large d is; seated_pose.cpp).
+std::pair<Rational, Rational> bounds(const QuadraticIrrational& x);
+
+// The double nearest x, up to the bounds' width (display only).
+double approx(const QuadraticIrrational& x);
 
 inline Q2 dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
