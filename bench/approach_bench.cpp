@@ -11,8 +11,10 @@
 // Markdown table and the pooled seated fractions.
 //
 //   approach_bench [--random K] [--samples N] [--region-pushes P] [--seed S] [--gap G] [--mu M] [--time T]
+//                  [--dump DIR]   (writes each part's scene file, DIR/<name>.json)
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <random>
 #include <string>
@@ -43,7 +45,7 @@ struct Tally {
 int main(int argc, char** argv) {
   int random_parts = 40, samples = 20, gap = 200, mu = 500, region_pushes = 5;
   std::uint64_t seed = 7;
-  std::string time = "20";
+  std::string time = "20", dump;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--random") random_parts = std::atoi(argv[i + 1]);
@@ -53,6 +55,7 @@ int main(int argc, char** argv) {
     if (a == "--gap") gap = std::atoi(argv[i + 1]);
     if (a == "--mu") mu = std::atoi(argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
+    if (a == "--dump") dump = argv[i + 1];
   }
   fp::PushOptions options;
   options.time = fixel::parse_rational(time);
@@ -60,7 +63,8 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0.05, 1);
 
-  std::cout << "| part | abs(theta*) rad | J' | J' pushes seated | J \\ J' pushes seated | J \\ J' outcomes | J region "
+  std::cout << "| part | abs(theta*) rad | J' | J' pushes seated | J \\ J' pushes seated | not seated: "
+               "jammed/escaped/timeout | J region "
                "IN length, pushes seated | J' region IN length, pushes seated |\n|---|---|---|---|---|---|---|---|\n";
   Tally in_all, out_all, in_large, out_large, in_small, out_small, region_j, region_a;
   auto region_cell = [&](const fixel::Scene& scene, fixel::RegionTarget& target, Tally& pooled) {
@@ -78,7 +82,8 @@ int main(int argc, char** argv) {
     return std::to_string(std::lround(100 * fixel::to_double(in / all))) + "%, " + frac(v.total.seated, v.total.pushes);
   };
   for (int k = 0, added = 0; added < random_parts && k < 5000; ++k) {
-    const auto scene = bench::random_part(rng, k, gap, mu);
+    std::string json;
+    const auto scene = bench::random_part(rng, k, gap, mu, &json);
     if (!scene) continue;
     fixel::ApproachSet A;
     try {
@@ -90,9 +95,10 @@ int main(int argc, char** argv) {
     }
     if (!A.decided) continue;
     ++added;
+    if (!dump.empty()) std::ofstream(dump + "/" + scene->name + ".json") << json;
     const double theta = std::abs(A.theta_star);
     Tally in, out;
-    int jammed = 0, escaped = 0, timeout = 0;
+    int jammed = 0, escaped = 0, timeout = 0, in_jammed = 0, in_escaped = 0, in_timeout = 0;
     for (int s = 0, tries = 0; s < samples && tries < 50 * samples; ++tries) {
       const auto& piece = A.J.pieces[rng() % A.J.pieces.size()];
       fixel::VectorQ w(3);
@@ -111,17 +117,17 @@ int main(int argc, char** argv) {
       Tally& t = in_prime ? in : out;
       ++t.n;
       t.seated += seated;
-      if (!in_prime && !seated) {
-        jammed += r.outcome == fp::Outcome::kJammed;
-        escaped += r.outcome == fp::Outcome::kEscaped;
-        timeout += r.outcome == fp::Outcome::kTimeout;
+      if (!seated) {
+        (in_prime ? in_jammed : jammed) += r.outcome == fp::Outcome::kJammed;
+        (in_prime ? in_escaped : escaped) += r.outcome == fp::Outcome::kEscaped;
+        (in_prime ? in_timeout : timeout) += r.outcome == fp::Outcome::kTimeout;
       }
     }
     for (Tally* t : {&in_all, theta >= 0.2 ? &in_large : &in_small}) t->n += in.n, t->seated += in.seated;
     for (Tally* t : {&out_all, theta >= 0.2 ? &out_large : &out_small}) t->n += out.n, t->seated += out.seated;
     std::cout << "| " << scene->name << " | " << theta << " | " << (A.on_edges ? "on edges" : "leaves an edge") << " | "
-              << frac(in.seated, in.n) << " | " << frac(out.seated, out.n) << " | jammed " << jammed << ", escaped "
-              << escaped << ", timeout " << timeout << " | "
+              << frac(in.seated, in.n) << " | " << frac(out.seated, out.n) << " | J': " << in_jammed << "/"
+              << in_escaped << "/" << in_timeout << "; J \\ J': " << jammed << "/" << escaped << "/" << timeout << " | "
               << region_cell(*scene, *fixel::sustained_target(A.J), region_j) << " | "
               << region_cell(*scene, *fixel::approach_target(A), region_a) << " |\n";
   }

@@ -27,7 +27,7 @@ __all__ = [
     "Error", "InputError", "ParseError", "SceneError", "StoppedError", "UnsupportedError",
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes", "AlgebraicEnd",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
-    "to_off", "to_svg", "SustainedSet", "sustained_set", "push",
+    "to_off", "to_svg", "SustainedSet", "sustained_set", "ApproachSet", "approach_set", "push",
     "design", "design_candidates", "Design", "Layout", "Candidate", "exact_only", "filter_stats",
 ]  # fmt: skip
 
@@ -317,6 +317,57 @@ def sustained_set(scene):
     """The sustained-push set J of a scene (``fixel seat --sustained``)."""
     scene = _scene(scene)
     return SustainedSet(scene, _fixel.sustained_set(scene._impl))
+
+
+class ApproachSet:
+    """The approach-aware sustained-push set J' (docs/theory.md §10.7): the
+    wrenches of J that no pair of fixels can hold at any two-contact pose
+    between the scene pose and the seat. Decided exactly per wrench.
+
+    ``decided`` (False: ``undecided_reason`` says why, and membership raises
+    UnsupportedError), ``t_star`` (tan(θ*/2), exact text), ``theta_star``
+    (rad, display), ``on_edges`` (False: a contact leaves its edge on the way
+    and J' is empty; ``edge_reason`` says where), ``empty`` (True when J' is
+    known to be empty), and ``J``, the SustainedSet it refines."""
+
+    def __init__(self, J, impl):
+        self.J = J
+        self.scene = J.scene
+        self._impl = impl
+        self.decided = impl.decided
+        self.undecided_reason = impl.undecided_reason
+        self.t_star = impl.t_star
+        self.theta_star = impl.theta_star
+        self.on_edges = impl.on_edges
+        self.edge_reason = impl.edge_reason
+        self.empty = impl.empty
+
+    def why_not(self, w):
+        """"" when w is in J', else the reason (as J's, or the pair that can
+        hold the part on the way, or the edge a contact leaves)."""
+        return self._impl.why_not(vector(w, "wrench"))[0]
+
+    def hold(self, w):
+        """None, or where a pair can hold the part under w on the way:
+        {"fixels": (i, j), "theta": rad (display), "t": tan(theta/2) exact
+        text or "t_star", "slide": display float for a pair on parallel
+        edges, else None}."""
+        return self._impl.why_not(vector(w, "wrench"))[1]
+
+    def contains(self, w):
+        return self.why_not(w) == ""
+
+    def __contains__(self, w):
+        return self.contains(w)
+
+
+def approach_set(scene, sustained=None):
+    """The approach-aware set J' of a scene (``fixel seat --sustained``
+    reports it as "approach"). ``sustained``: its SustainedSet J, when
+    already computed."""
+    scene = _scene(scene)
+    J = _expect(sustained, SustainedSet, "sustained") if sustained is not None else sustained_set(scene)
+    return ApproachSet(J, _fixel.approach_set(scene._impl, J._impl))
 
 
 @contextlib.contextmanager

@@ -193,7 +193,7 @@ def _guaranteed_impl(guaranteed, scene, S):
 
 def region(
     scene, resolution="1/1024", cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
-    progress=None, exact=False, digits=0, resolution_length=None, max_seconds=None,
+    progress=None, exact=False, digits=0, resolution_length=None, max_seconds=None, approach=False,
 ):  # fmt: skip
     """The pushing region by exact recursive subdivision (``fixel region``).
 
@@ -205,6 +205,9 @@ def region(
     ``push``: "step" (one impulse, against S) or "sustained" (a held wrench,
     against the sustained-push set J at the seated pose; ``seating`` is then
     the SustainedSet and IN intervals carry no magnitudes).
+    ``approach``: with push="sustained", True (or an ApproachSet) classifies
+    against the approach-aware set J' (``--approach``, docs/theory.md §10.7):
+    exact IN and OUT, a wider partial band; not with ``exact``.
     ``guaranteed``: True, or a GuaranteedSet, classifies against G instead of S.
     ``progress``: None, True (tqdm bar after ~1 s) or callable(stage, elapsed).
     ``exact``: root isolation instead of subdivision (``fixel region --exact``):
@@ -234,14 +237,28 @@ def region(
 
         if guaranteed not in (None, False):
             raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
-        J = sustained_set(scene)
+        from . import ApproachSet, approach_set
+
+        if isinstance(approach, ApproachSet):
+            A = approach
+        elif approach is True:
+            A = approach_set(scene)
+        elif approach is False or approach is None:
+            A = None
+        else:
+            raise InputError.make("approach", repr(approach), "is not True, False or an ApproachSet")
+        J = A.J if A is not None else sustained_set(scene)
+        a_impl = None if A is None else A._impl
         impl = _run(
-            lambda c: _fixel.compute_region_sustained(scene._impl, J._impl, res, cone, mu, exact, digits, res_len, c),
+            lambda c: _fixel.compute_region_sustained(
+                scene._impl, J._impl, res, cone, mu, exact, digits, res_len, a_impl, c),
             progress, "fixel.region", max_seconds,
         )  # fmt: skip
         r = _region_of(scene, J, impl, cone, shown, None if mu is None else frac(mu))
         r.resolution_length = None if res_len is None else frac(res_len)
         return r
+    if approach not in (False, None):
+        raise InputError.make("approach", repr(approach), "needs push='sustained' (J' refines J)")
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = _run(

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "bindings.h"
+#include "fixel/approach.h"
 #include "fixel/io.h"
 #include "fixel/physics.h"
 #include "fixel/region.h"
@@ -18,6 +19,7 @@ namespace fixel::python {
 
 using ScenePtr = std::shared_ptr<Scene>;
 using SustainedPtr = std::shared_ptr<SustainedSet>;
+using ApproachPtr = std::shared_ptr<ApproachSet>;
 
 void bind_sustained(py::module_& m) {
   py::class_<SustainedSet, SustainedPtr>(m, "SustainedSet")
@@ -38,6 +40,42 @@ void bind_sustained(py::module_& m) {
     const Scene& s = checked(scene, "scene");
     py::gil_scoped_release release;
     return std::make_shared<SustainedSet>(sustained_set(s));
+  });
+  py::class_<ApproachSet, ApproachPtr>(m, "ApproachSet")
+      .def_readonly("decided", &ApproachSet::decided)
+      .def_readonly("undecided_reason", &ApproachSet::undecided_reason)
+      .def_property_readonly("t_star", [](const ApproachSet& A) { return A.t_star.text(); })
+      .def_readonly("theta_star", &ApproachSet::theta_star)
+      .def_readonly("on_edges", &ApproachSet::on_edges)
+      .def_readonly("edge_reason", &ApproachSet::edge_reason)
+      .def_readonly("empty", &ApproachSet::empty)
+      // (why_not, hold): hold is None or {"fixels", "theta", "t", "slide"} ("t" exact text or "t_star").
+      .def("why_not", [](const ApproachSet& A, const std::vector<std::string>& w) {
+        const VectorQ v = exact_vector(w, 3, "wrench");
+        ApproachHold hold;
+        hold.fixels = {-1, -1};
+        std::string reason;
+        {
+          py::gil_scoped_release release;
+          reason = A.why_not(v, &hold);
+        }
+        py::object h = py::none();
+        if (hold.fixels[0] >= 0) {
+          py::dict d;
+          d["fixels"] = py::make_tuple(hold.fixels[0], hold.fixels[1]);
+          d["theta"] = hold.theta;
+          d["t"] = hold.at_seat ? std::string("t_star")
+                                : (hold.t->is_rational() ? to_string(hold.t->lo) : certified_decimal(*hold.t, 12));
+          d["slide"] = hold.slide ? py::object(py::float_(*hold.slide)) : py::none();
+          h = d;
+        }
+        return py::make_tuple(reason, h);
+      });
+  m.def("approach_set", [](const ScenePtr& scene, const SustainedPtr& J) {
+    const Scene& s = checked(scene, "scene");
+    const SustainedSet& j = checked(J, "sustained");
+    py::gil_scoped_release release;
+    return std::make_shared<ApproachSet>(approach_set(s, j));
   });
   m.def("sustained_json", [](const ScenePtr& scene, const SustainedPtr& J) {
     return sustained_json(checked(scene, "scene"), checked(J, "sustained"), std::nullopt);
@@ -71,13 +109,14 @@ void bind_sustained(py::module_& m) {
   m.def("compute_region_sustained",
         [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution, const std::string& cone,
            const std::optional<std::string>& pusher_mu, bool exact, int digits,
-           const std::optional<std::string>& resolution_length, Control* control) {
+           const std::optional<std::string>& resolution_length, const ApproachPtr& approach, Control* control) {
           RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
           options.control = run_control(control);
           const Scene& s = checked(scene, "scene");
           const SustainedSet& j = checked(J, "sustained");
           py::gil_scoped_release release;
-          const auto target = sustained_target(j);
+          // J′ (approach.h) when given, else J.
+          const auto target = approach ? approach_target(*approach) : sustained_target(j);
           return std::make_shared<Region>(compute_region(s, *target, options));
         });
 }

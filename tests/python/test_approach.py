@@ -1,0 +1,94 @@
+"""The approach-aware set J' from Python: the CLI's answers, J' inside J, the
+region against J', and typed errors."""
+
+import json
+from fractions import Fraction as F
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import fixel
+
+from conftest import SCENE_DIR, run_cli
+
+POLYGON = SCENE_DIR / "polygon.json"
+
+
+@pytest.fixture(scope="module")
+def polygon_approach():
+    return fixel.approach_set(fixel.Scene.load(POLYGON))
+
+
+def test_approach_set_agrees_with_the_cli(polygon_approach):
+    A = polygon_approach
+    code, out, err = run_cli("seat", POLYGON, "--sustained", "--json")
+    assert code == 0, err
+    cli = json.loads(out)["approach"]
+    assert A.decided and cli["decided"]
+    assert A.t_star == cli["t_star"] == "15-1*sqrt(226)"
+    assert A.on_edges == cli["on_edges"]
+    assert (True if A.empty else None) == cli["empty"]
+
+
+@pytest.mark.parametrize("w", [["-1/2", "-9/10", "-3/5"], ["-1", "-3", "0"], ["-1", "-1", "0"], ["1", "0", "0"]])
+def test_each_wrench_gets_the_cli_verdict(polygon_approach, w):
+    code, out, err = run_cli("seat", POLYGON, "--sustained", "--wrench", ",".join(w), "--json")
+    assert code == 0, err
+    cli = json.loads(out)["approach"]
+    A = polygon_approach
+    assert A.contains(w) == cli["contains"]
+    assert A.why_not(w) == cli.get("why_not", "")
+    hold = A.hold(w)
+    if "hold" in cli:
+        assert list(hold["fixels"]) == cli["hold"]["fixels"] and hold["t"] == cli["hold"]["t"]
+    else:
+        assert hold is None
+
+
+def test_a_wrench_held_on_the_way_is_in_j_but_not_in_j_prime(polygon_approach):
+    # Derived by the exact test and seen in the CLI: fixels 0 and 2 hold the
+    # part under this push at the scene's rotation (θ = 0), before it turns.
+    w = [F(-1, 2), F(-9, 10), F(-3, 5)]
+    A = polygon_approach
+    assert A.J.contains(w)
+    assert not A.contains(w)
+    assert A.hold(w) == {"fixels": (0, 2), "theta": 0.0, "t": "0", "slide": None}
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.fractions(min_value=-4, max_value=4, max_denominator=20), min_size=3, max_size=3))
+def test_j_prime_lies_inside_j(polygon_approach, w):
+    A = polygon_approach
+    if A.contains(w):
+        assert A.J.contains(w)
+
+
+def test_the_region_against_j_prime_matches_the_cli_and_lies_inside_js():
+    scene = fixel.Scene.load(POLYGON)
+    r = fixel.region(scene, resolution="1/256", push="sustained", approach=True)
+    code, out, err = run_cli("region", POLYGON, "--push", "sustained", "--approach", "--resolution", "1/256", "--json")
+    assert code == 0, err
+    cli = json.loads(out)
+    assert cli["target"] == "J'"
+    assert [(i.curve, i.u0, i.u1, i.status) for i in r.intervals] == [
+        (d["curve"], F(d["u0"]), F(d["u1"]), d["status"]) for d in cli["intervals"]
+    ]
+    rj = fixel.region(scene, resolution="1/256", push="sustained")
+    in_a = sum(i.u1 - i.u0 for i in r.intervals if i.status == "in")
+    in_j = sum(i.u1 - i.u0 for i in rj.intervals if i.status == "in")
+    assert 0 < in_a < in_j
+
+
+def test_bad_input_is_a_typed_error_naming_the_field(polygon_approach):
+    scene = fixel.Scene.load(POLYGON)
+    with pytest.raises(fixel.InputError, match="approach"):
+        fixel.region(scene, push="sustained", approach="yes")
+    with pytest.raises(fixel.InputError, match="approach"):
+        fixel.region(scene, approach=True)
+    with pytest.raises(fixel.UnsupportedError, match="exact"):
+        fixel.region(scene, push="sustained", approach=True, exact=True)
+    with pytest.raises(fixel.InputError, match="wrench"):
+        polygon_approach.contains([1, 2])
+    with pytest.raises(TypeError, match="sustained"):  # a wrong type is a TypeError, as everywhere
+        fixel.approach_set(scene, sustained="J")
