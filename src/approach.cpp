@@ -334,59 +334,70 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
     if (internal::sign(Q2(data->t_lo) - t_star) >= 0 || internal::sign(Q2(data->t_hi) - t_star) <= 0)
       throw InternalError("approach: the enclosure of t* is not certified");
   }
-  // With every gap 0 the part starts seated: no approach. Otherwise each
-  // pair has its families: one in θ (a single pose, q*, when θ* = 0), or for
-  // parallel edges the slides at the rotations where both touch.
-  if (!q.at_scene_pose) {
-    const int nc = scene.num_contacts();
-    const Vec2& c = scene.body.p_AoCm_A;
-    std::vector<internal::PolylineEdge> edges;
-    std::vector<Vec2> f_A;
-    for (int i = 0; i < nc; ++i) {
-      const Fixel& fx = scene.fixels[i];
-      auto e = internal::polyline_edge_through(*scene.body.boundary, fx.p_AoF_A, fx.n_A);
-      if (!e) throw InternalError("approach: an exact seat with a contact off every polyline edge");
-      edges.push_back(*e);
-      f_A.push_back({fx.p_AoF_A.x - fx.gap * fx.n_A.x, fx.p_AoF_A.y - fx.gap * fx.n_A.y});
-    }
-    for (int i = 0; i < nc; ++i)
-      for (int j = i + 1; j < nc; ++j) {
-        if (auto fam = internal::pair_family(c, edges, f_A, J.mu, i, j)) {
-          if (internal::sign(t_star) == 0) continue;
-          const int count = std::clamp(static_cast<int>(std::ceil(std::abs(A.theta_star) / internal::kPieceAngle)), 1,
-                                       internal::kMaxPieces);
-          internal::add_pieces(*fam, internal::sign(t_star) > 0 ? data->t_hi : data->t_lo, count);
-          data->pairs.push_back(std::move(*fam));
-          continue;
-        }
-        const Vec2 &ni = edges[i].inward, &nj = edges[j].inward;
-        const Rational kappa = (nj.x * ni.x + nj.y * ni.y) / (ni.x * ni.x + ni.y * ni.y);  // n_j = κ n_i
-        const Polynomial bi = internal::beta(c, edges[i], f_A[i]);
-        const Polynomial p = internal::psub(internal::beta(c, edges[j], f_A[j]), internal::pscale(bi, kappa));
-        if (!internal::slide_families(scene, edges, f_A, J.mu, i, j, p, bi, q, A.t_star, data->slides)) {
-          A.undecided_reason = internal::fixel_name(i) + " and " + internal::fixel_name(j) +
-                               " touch parallel edges at every rotation: their two-contact poses are not one "
-                               "family (not implemented)";
-          return A;
-        }
+  try {
+    // With every gap 0 the part starts seated: no approach. Otherwise each
+    // pair has its families: one in θ (a single pose, q*, when θ* = 0), or for
+    // parallel edges the slides at the rotations where both touch.
+    if (!q.at_scene_pose) {
+      const int nc = scene.num_contacts();
+      const Vec2& c = scene.body.p_AoCm_A;
+      std::vector<internal::PolylineEdge> edges;
+      std::vector<Vec2> f_A;
+      for (int i = 0; i < nc; ++i) {
+        const Fixel& fx = scene.fixels[i];
+        auto e = internal::polyline_edge_through(*scene.body.boundary, fx.p_AoF_A, fx.n_A);
+        if (!e) throw InternalError("approach: an exact seat with a contact off every polyline edge");
+        edges.push_back(*e);
+        f_A.push_back({fx.p_AoF_A.x - fx.gap * fx.n_A.x, fx.p_AoF_A.y - fx.gap * fx.n_A.y});
       }
+      for (int i = 0; i < nc; ++i)
+        for (int j = i + 1; j < nc; ++j) {
+          if (auto fam = internal::pair_family(c, edges, f_A, J.mu, i, j)) {
+            if (internal::sign(t_star) == 0) continue;
+            const int count = std::clamp(static_cast<int>(std::ceil(std::abs(A.theta_star) / internal::kPieceAngle)), 1,
+                                         internal::kMaxPieces);
+            internal::add_pieces(*fam, internal::sign(t_star) > 0 ? data->t_hi : data->t_lo, count);
+            data->pairs.push_back(std::move(*fam));
+            continue;
+          }
+          const Vec2 &ni = edges[i].inward, &nj = edges[j].inward;
+          const Rational kappa = (nj.x * ni.x + nj.y * ni.y) / (ni.x * ni.x + ni.y * ni.y);  // n_j = κ n_i
+          const Polynomial bi = internal::beta(c, edges[i], f_A[i]);
+          const Polynomial p = internal::psub(internal::beta(c, edges[j], f_A[j]), internal::pscale(bi, kappa));
+          if (!internal::slide_families(scene, edges, f_A, J.mu, i, j, p, bi, q, A.t_star, data->slides)) {
+            A.undecided_reason = internal::fixel_name(i) + " and " + internal::fixel_name(j) +
+                                 " touch parallel edges at every rotation: their two-contact poses are not one "
+                                 "family (not implemented)";
+            return A;
+          }
+        }
+    }
+  } catch (const InternalError& e) {  // a defect, reported rather than failing J's report
+    A.undecided_reason = std::string("could not be built (") + e.what() + ")";
+    return A;
+  }
+  A.on_edges = true;
+  try {
+    for (const auto& fam : data->pairs) {
+      const auto found = internal::first_point(fam.on_edge, *data, [&](const internal::Signs& s) {
+        for (std::size_t k = 0; k < fam.on_edge.size(); ++k)
+          if (s(k) < 0) return true;
+        return false;
+      });
+      if (found) {
+        A.on_edges = false;
+        A.edge_reason = "the two-contact family of " + internal::fixel_name(fam.fixels[0]) + " and " +
+                        internal::fixel_name(fam.fixels[1]) + " runs a contact off its edge (at theta ~ " +
+                        internal::theta_text(internal::theta_of(*found, A.theta_star)) + " rad)";
+        break;
+      }
+    }
+  } catch (const InternalError& e) {
+    A.on_edges = false;
+    A.undecided_reason = std::string("could not be built (") + e.what() + ")";
+    return A;
   }
   A.decided = true;
-  A.on_edges = true;
-  for (const auto& fam : data->pairs) {
-    const auto found = internal::first_point(fam.on_edge, *data, [&](const internal::Signs& s) {
-      for (std::size_t k = 0; k < fam.on_edge.size(); ++k)
-        if (s(k) < 0) return true;
-      return false;
-    });
-    if (found) {
-      A.on_edges = false;
-      A.edge_reason = "the two-contact family of " + internal::fixel_name(fam.fixels[0]) + " and " +
-                      internal::fixel_name(fam.fixels[1]) + " runs a contact off its edge (at theta ~ " +
-                      internal::theta_text(internal::theta_of(*found, A.theta_star)) + " rad)";
-      break;
-    }
-  }
   A.empty = J.empty || !A.on_edges;
   A.data = std::move(data);
   return A;

@@ -134,7 +134,12 @@ bool slide_families(const Scene& scene, const std::vector<PolylineEdge>& edges, 
             {to_public(Q2(b.x)), to_public(Q2(b.y)), to_public(rho[side][0] * Q2(b.y) - rho[side][1] * Q2(b.x))});
       }
     }
-    if (range.empty || !range.lo || !range.hi) throw InternalError("approach: a slide family off its edges");
+    if (range.empty || !range.lo || !range.hi) {
+      // At θ* the seat's contacts lie inside their edges; at the other
+      // rotation no slide may keep both on their edges: no such pose.
+      if (at_seat) throw InternalError("approach: the seat's slide family is off its edges");
+      continue;
+    }
     fam.s_lo = to_public(*range.lo);
     fam.s_hi = to_public(*range.hi);
     out.push_back(std::move(fam));

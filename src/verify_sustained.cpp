@@ -1,6 +1,8 @@
 // The sustained-push checks of `fixel verify` (docs/theory.md §10).
 #include <functional>
 
+#include "fixel/approach.h"
+#include "fixel/internal/exact_lp.h"
 #include "fixel/internal/quadratic_field.h"
 #include "fixel/scene_json.h"
 #include "fixel/sustained.h"
@@ -102,6 +104,44 @@ std::vector<VerificationCheck> sustained_checks() {
     if (!J.strongly_stable) return std::string("not strongly stable");
     return std::string();
   }));
+  out.push_back(run_check(
+      "sustained.approach",
+      "polygon: w = (-1/2, -9/10, -3/5) is in J, and fixels 0, 2 hold it at theta = 0 (an exact LP), so not in J'", [] {
+        const Scene scene = parse_scene(kPolygon, "polygon");
+        const SustainedSet J = sustained_set(scene);
+        const ApproachSet A = approach_set(scene, J);
+        const VectorQ w = (VectorQ(3) << Rational(-1, 2), Rational(-9, 10), Rational(-3, 5)).finished();
+        if (!A.decided || !A.on_edges) return "J' not decided or empty: " + A.undecided_reason + A.edge_reason;
+        if (!J.contains(w)) return std::string("w is not in J");
+        // At θ = 0 fixels 0 (gap 1/10, left edge x = -1) and 2 (gap 3/20, bottom
+        // edge y = -1) touch when the part moves by (-1/10, -3/20): contacts
+        // (-1, 3/20) and (11/10, -1) in frame B; is -w in FC_0 + FC_2?
+        const Vec2& c = scene.body.p_AoCm_A;
+        const Vec2 g0{Rational(-1), Rational(3, 20)}, g2{Rational(11, 10), Rational(-1)};
+        const Rational mu(1, 10);
+        std::vector<VectorQ> gens;
+        for (int s : {1, -1}) {
+          const Vec2 b0{Rational(1), s * mu}, b2{-s * mu, Rational(1)};
+          gens.push_back((VectorQ(3) << b0.x, b0.y, (g0.x - c.x) * b0.y - (g0.y - c.y) * b0.x).finished());
+          gens.push_back((VectorQ(3) << b2.x, b2.y, (g2.x - c.x) * b2.y - (g2.y - c.y) * b2.x).finished());
+        }
+        std::vector<LinearConstraint> rows;
+        for (int k = 0; k < 3; ++k) {
+          VectorQ a(4);
+          for (int g = 0; g < 4; ++g) a[g] = gens[g][k];
+          rows.push_back({a, Relation::kEqual, -w[k]});
+        }
+        for (int g = 0; g < 4; ++g) {
+          VectorQ a = VectorQ::Zero(4);
+          a[g] = 1;
+          rows.push_back({a, Relation::kGreaterEqual, Rational(0)});
+        }
+        if (solve_lp(4, rows).status != LpStatus::kOptimal) return std::string("the LP finds no hold at theta = 0");
+        ApproachHold hold;
+        if (A.why_not(w, &hold).empty()) return std::string("w is in J'");
+        if (hold.fixels != std::array<int, 2>{0, 2}) return std::string("another pair holds it");
+        return std::string();
+      }));
   return out;
 }
 
