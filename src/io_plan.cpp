@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fixel/internal/approach_json.h"
 #include "fixel/internal/json_approx.h"
 #include "fixel/internal/json_exact.h"
 #include "fixel/internal/readable.h"
@@ -58,6 +59,11 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
                                 : json(nullptr);
   doc["sustained"] = plan.in_J ? json{{"meaning", "sustained push: seats and stays"}, {"status", to_string(*plan.in_J)}}
                                : json{{"note", plan.J_note}};
+  if (plan.approach) {
+    json a = internal::approach_json(*plan.approach, plan.in_J_approach);
+    if (!plan.J_approach_note.empty()) a["note"] = plan.J_approach_note;
+    doc["sustained"]["approach"] = a;
+  }
   internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }
@@ -93,6 +99,19 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
     out << "  sustained push: seats and stays: " << to_string(*plan.in_J) << " (any magnitude: J is a cone)\n";
   else if (!plan.J_note.empty())
     out << "  sustained push: not judged: " << plan.J_note << "\n";
+  if (plan.approach) {
+    out << "  sustained push, approach-aware J': ";
+    const std::optional<ApproachVerdict>& v = plan.in_J_approach;
+    if (!plan.J_approach_note.empty())
+      out << "no verdict at " << plan.J_approach_note;
+    else if (!v->contains)
+      out << "undecided: " << v->why_not;
+    else if (*v->contains)
+      out << "in (no pair of fixels can hold the part on its way to the seat)";
+    else
+      out << "out: " << v->why_not;
+    out << "\n";
+  }
   return out.str();
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/approach_json.h"
 #include "fixel/internal/json_approx.h"
 #include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
@@ -60,29 +61,6 @@ std::string fixed(double v, int digits = 6) {
   return s.str();
 }
 
-json approach_json(const ApproachSet& A, const std::optional<ApproachVerdict>& v) {
-  json out;
-  out["decided"] = A.decided;
-  if (!A.decided) out["undecided_reason"] = A.undecided_reason;
-  out["t_star"] = A.t_star.text();
-  out["theta_star"] = A.theta_star;
-  out["on_edges"] = A.decided ? json(A.on_edges) : json(nullptr);
-  if (A.decided && !A.on_edges) out["edge_reason"] = A.edge_reason;
-  out["empty"] = A.decided && A.empty ? json(true) : json(nullptr);
-  if (v) {
-    out["contains"] = v->contains ? json(*v->contains) : json(nullptr);
-    if (!v->why_not.empty()) out["why_not"] = v->why_not;
-    if (v->hold) {
-      json h = {{"fixels", json::array({v->hold->fixels[0], v->hold->fixels[1]})}, {"theta", v->hold->theta}};
-      h["t"] = v->hold->at_seat
-                   ? json("t_star")
-                   : json(v->hold->t->is_rational() ? to_string(v->hold->t->lo) : certified_decimal(*v->hold->t, 12));
-      out["hold"] = h;
-    }
-  }
-  return out;
-}
-
 std::string approach_text(const ApproachSet& A, const std::optional<ApproachVerdict>& v) {
   std::ostringstream out;
   out << "approach-aware J' (no pair of fixels holds the part at any two-contact pose with theta from 0 to "
@@ -107,6 +85,30 @@ std::string approach_text(const ApproachSet& A, const std::optional<ApproachVerd
 }
 
 }  // namespace
+
+nlohmann::ordered_json internal::approach_json(const ApproachSet& A, const std::optional<ApproachVerdict>& v) {
+  using json = nlohmann::ordered_json;
+  json out;
+  out["decided"] = A.decided;
+  if (!A.decided) out["undecided_reason"] = A.undecided_reason;
+  out["t_star"] = A.t_star.text();
+  out["theta_star"] = A.theta_star;
+  out["on_edges"] = A.decided ? json(A.on_edges) : json(nullptr);
+  if (A.decided && !A.on_edges) out["edge_reason"] = A.edge_reason;
+  out["empty"] = A.decided && A.empty ? json(true) : json(nullptr);
+  if (v) {
+    out["contains"] = v->contains ? json(*v->contains) : json(nullptr);
+    if (!v->why_not.empty()) out["why_not"] = v->why_not;
+    if (v->hold) {
+      json h = {{"fixels", json::array({v->hold->fixels[0], v->hold->fixels[1]})}, {"theta", v->hold->theta}};
+      h["t"] = v->hold->at_seat
+                   ? json("t_star")
+                   : json(v->hold->t->is_rational() ? to_string(v->hold->t->lo) : certified_decimal(*v->hold->t, 12));
+      out["hold"] = h;
+    }
+  }
+  return out;
+}
 
 std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench) {
@@ -141,7 +143,7 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
     doc["contains"] = wrench->contains ? json(*wrench->contains) : json(nullptr);
     if (!wrench->why_not.empty()) doc["why_not"] = wrench->why_not;
   }
-  if (approach) doc["approach"] = approach_json(*approach, approach_wrench);
+  if (approach) doc["approach"] = internal::approach_json(*approach, approach_wrench);
   internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }

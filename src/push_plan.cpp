@@ -6,6 +6,7 @@
 #include "fixel/error.h"
 #include "fixel/geometry.h"
 #include "fixel/guaranteed.h"
+#include "fixel/on_boundary.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
@@ -60,6 +61,16 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
       const SustainedSet J = sustained_set(scene);
       auto target = sustained_target(J);
       plan.in_J = point_status(scene, *target, curve, u, Rational(0));
+      plan.approach = approach_set(scene, J);
+      // J's status at a corner is about the fan of push directions; J' is
+      // not convex, so its verdict on the fan is not its verdict on two
+      // rays, and the fan is left to `seat --sustained --wrench`.
+      if (fit_to_boundary(b, plan.point_A).corner)
+        plan.J_approach_note =
+            "a corner: the pushes there form a fan and J' is not convex; test one direction with "
+            "`fixel seat --sustained --wrench`";
+      else
+        plan.in_J_approach = approach_verdict(*plan.approach, g);
     } catch (const InputError& e) {
       plan.J_note = e.what();
     }

@@ -7,10 +7,12 @@
 #include <optional>
 #include <string>
 
+#include "fixel/approach.h"
 #include "fixel/interval.h"
 #include "fixel/outcomes.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/seat_report.h"
 
 namespace fixel {
 
@@ -33,6 +35,12 @@ struct PushPlan {
   std::optional<bool> sample_in_G;
   std::optional<RegionStatus> in_J;  ///< Sustained push (when J can be computed), else unset.
   std::string J_note;                ///< Why J was not judged, when unset.
+  /// J′ (docs/theory.md §10.7), built whenever J is.
+  std::optional<ApproachSet> approach;
+  /// J′'s verdict on g (any magnitude: J′ is a cone), except at a corner
+  /// or where J was not judged. `contains` is unset when J′ is undecided.
+  std::optional<ApproachVerdict> in_J_approach;
+  std::string J_approach_note;  ///< Why J′ gave no verdict on g, when J was judged and it did not.
 };
 
 /// Plans a push. Throws InputError for a point off the boundary's
