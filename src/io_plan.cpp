@@ -43,6 +43,7 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
   doc["u"] = to_string(plan.u);
   doc["point"] = {to_string(plan.point_A.x), to_string(plan.point_A.y)};
   doc["normal"] = {to_string(plan.normal_A.x), to_string(plan.normal_A.y)};
+  doc["corner"] = plan.corner;
   doc["wrench_direction"] = exact_json(plan.wrench_direction);
   json one = {{"meaning", "one-step: can seat"},
               {"status", to_string(plan.in_S)},
@@ -60,8 +61,12 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
   doc["sustained"] = plan.in_J ? json{{"meaning", "sustained push: seats and stays"}, {"status", to_string(*plan.in_J)}}
                                : json{{"note", plan.J_note}};
   if (plan.approach) {
-    json a = internal::approach_json(*plan.approach, plan.in_J_approach);
-    if (!plan.J_approach_note.empty()) a["note"] = plan.J_approach_note;
+    json a = {{"meaning", "sustained push, approach-aware J'"}};
+    if (plan.in_J_approach)
+      a["status"] = to_string(*plan.in_J_approach);
+    else
+      a["note"] = plan.J_approach_note;
+    a.update(internal::approach_json(*plan.approach, std::nullopt));
     doc["sustained"]["approach"] = a;
   }
   internal::add_approx(doc);
@@ -74,7 +79,11 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
       << ", u = " << internal::readable(plan.u) << "\n";
   out << "  point (m, frame A) = (" << internal::readable(plan.point_A.x) << ", " << internal::readable(plan.point_A.y)
       << "), push along the inward normal (" << internal::readable(plan.normal_A.x) << ", "
-      << internal::readable(plan.normal_A.y) << ")\n";
+      << internal::readable(plan.normal_A.y) << ")"
+      << (plan.corner ? "; a corner: the pushes fan out between its two edges' normals, and each status below is "
+                        "for the whole fan"
+                      : "")
+      << "\n";
   out << "  wrench direction g = " << internal::readable(plan.wrench_direction) << " (force, moment about Cm)\n";
   out << "  one-step: can seat: " << to_string(plan.in_S);
   if (plan.in_S == RegionStatus::kIn)
@@ -96,21 +105,28 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
     out << "\n";
   }
   if (plan.in_J)
-    out << "  sustained push: seats and stays: " << to_string(*plan.in_J) << " (any magnitude: J is a cone)\n";
+    out << "  sustained push: seats and stays: " << to_string(*plan.in_J) << " (any magnitude: J is a cone"
+        << (plan.corner && *plan.in_J == RegionStatus::kOut ? "; a corner: not every push of its fan is in J" : "")
+        << ")\n";
   else if (!plan.J_note.empty())
     out << "  sustained push: not judged: " << plan.J_note << "\n";
-  if (plan.approach) {
-    out << "  sustained push, approach-aware J': ";
-    const std::optional<ApproachVerdict>& v = plan.in_J_approach;
-    if (!plan.J_approach_note.empty())
-      out << "no verdict at " << plan.J_approach_note;
-    else if (!v->contains)
-      out << "undecided: " << v->why_not;
-    else if (*v->contains)
-      out << "in (no pair of fixels can hold the part on its way to the seat)";
+  if (plan.in_J_approach) {
+    out << "  sustained push, approach-aware J': " << to_string(*plan.in_J_approach);
+    if (*plan.in_J_approach == RegionStatus::kIn)
+      out << " (no pair of fixels can hold the part on its way to the seat; any magnitude)";
+    else if (*plan.in_J_approach == RegionStatus::kOut && plan.in_J == RegionStatus::kOut)
+      out << " (not in J)";
+    else if (*plan.in_J_approach == RegionStatus::kOut)
+      out << ": a pair of fixels can hold the part on its way to the seat";
+    else if (plan.corner)
+      out << ": a corner, whose fan of pushes is not wholly in J' nor wholly out (points on either side have "
+             "one push each)";
     else
-      out << "out: " << v->why_not;
+      out << ": near the boundary of J' (between the outer and inner cones of a pair's holds over pieces of the "
+             "approach, docs/theory.md 10.7)";
     out << "\n";
+  } else if (plan.approach) {
+    out << "  sustained push, approach-aware J': not judged: " << plan.J_approach_note << "\n";
   }
   return out.str();
 }

@@ -36,6 +36,7 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
   plan.point_A = c.point(u);
   const Vec2 t = c.derivative(u);
   plan.normal_A = {-t.y, t.x};  // inward: the loop is counter-clockwise
+  plan.corner = fit_to_boundary(b, plan.point_A).corner;
   const Vec2 r = sub(plan.point_A, scene.body.p_AoCm_A);
   const VectorQ g = contact_wrench(r, plan.normal_A, scene.body.dof);
   plan.wrench_direction = g;
@@ -62,15 +63,12 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
       auto target = sustained_target(J);
       plan.in_J = point_status(scene, *target, curve, u, Rational(0));
       plan.approach = approach_set(scene, J);
-      // J's status at a corner is about the fan of push directions; J' is
-      // not convex, so its verdict on the fan is not its verdict on two
-      // rays, and the fan is left to `seat --sustained --wrench`.
-      if (fit_to_boundary(b, plan.point_A).corner)
-        plan.J_approach_note =
-            "a corner: the pushes there form a fan and J' is not convex; test one direction with "
-            "`fixel seat --sustained --wrench`";
-      else
-        plan.in_J_approach = approach_verdict(*plan.approach, g);
+      try {
+        const auto approach = approach_target(*plan.approach);
+        plan.in_J_approach = point_status(scene, *approach, curve, u, Rational(0));
+      } catch (const UnsupportedError& e) {  // J' not decided (curved contacts)
+        plan.J_approach_note = e.what();
+      }
     } catch (const InputError& e) {
       plan.J_note = e.what();
     }

@@ -9,6 +9,7 @@
 #include "fixel/approach.h"
 #include "fixel/error.h"
 #include "fixel/internal/polyline_edge.h"
+#include "fixel/push_plan.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "test_util.h"
@@ -102,6 +103,37 @@ VectorQ push_wrench(const Turned& p, int curve, const Rational& u) {
     return test::vec({p.C * n.x - p.S * n.y, p.S * n.x + p.C * n.y, m});
   }
   throw std::runtime_error("no piece");
+}
+
+// fixel push-plan's J′ status of one push, against J′'s exact membership
+// of that push's world-frame wrench R(θ*)·g at the seat, on the parts where
+// J′ cuts J's IN stretches (sampled inside those stretches).
+TEST(ApproachTarget, PushPlanStatusesAgreeWithTheExactTestOfTheWorldFrameWrench) {
+  int in = 0, out = 0;                          // 5 and 4; 1 and 3 on the first part alone
+  const int parts = test::sanitizer_scaled(3);  // a plan costs about 1 s on these parts' long numbers
+  for (int k = 10; k < 10 + parts; ++k) {
+    const Turned& p = turned_parts()[k];
+    RegionOptions options;
+    options.resolution = Rational(1, 64);
+    const Region j = compute_region(p.scene, *sustained_target(p.A.J), options);
+    for (const auto& i : j.intervals) {
+      if (i.status != RegionStatus::kIn) continue;
+      for (int s = 1; s < 4; s += 2) {
+        const Rational u = i.u0 + (i.u1 - i.u0) * Rational(s, 4);
+        const PushPlan plan = plan_push(p.scene, i.curve, u, false);
+        const VectorQ w = push_wrench(p, i.curve, u);
+        const VectorQ& g = plan.wrench_direction;  // frame B: R(θ*) takes it to the world frame
+        EXPECT_EQ(w, test::vec({p.C * g[0] - p.S * g[1], p.S * g[0] + p.C * g[1], g[2]})) << p.scene.name;
+        ASSERT_TRUE(plan.in_J_approach.has_value()) << plan.J_approach_note;
+        if (*plan.in_J_approach == RegionStatus::kPartial) continue;
+        const bool exact = p.A.contains(w);
+        EXPECT_EQ(exact, *plan.in_J_approach == RegionStatus::kIn) << p.scene.name << " u = " << u;
+        ++(exact ? in : out);
+      }
+    }
+  }
+  EXPECT_GT(in, 0);
+  EXPECT_GT(out, 0);
 }
 
 TEST(ApproachTarget, EveryInStretchIsInJPrimeAndEveryOutStretchIsNot) {

@@ -12,7 +12,6 @@
 #include "fixel/outcomes.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
-#include "fixel/seat_report.h"
 
 namespace fixel {
 
@@ -20,8 +19,11 @@ namespace fixel {
 struct PushPlan {
   int curve = 0;
   Rational u;
-  Vec2 point_A;              ///< The boundary point (m, frame A).
-  Vec2 normal_A;             ///< Inward normal there (not unit; the push direction).
+  Vec2 point_A;   ///< The boundary point (m, frame A).
+  Vec2 normal_A;  ///< Inward normal there (not unit; the push direction).
+  /// The point is a corner: its pushes form the fan between the two
+  /// one-sided normals, and a status is IN when the whole fan is in.
+  bool corner = false;
   VectorQ wrench_direction;  ///< g = (n, r ⊗ n), r from the centre of mass (frame A).
   RegionStatus in_S = RegionStatus::kOut;
   Magnitudes magnitudes_S;           ///< Euclidean |p| (N·s) of impulses along g that land in S (inner bound).
@@ -37,10 +39,13 @@ struct PushPlan {
   std::string J_note;                ///< Why J was not judged, when unset.
   /// J′ (docs/theory.md §10.7), built whenever J is.
   std::optional<ApproachSet> approach;
-  /// J′'s verdict on g (any magnitude: J′ is a cone), except at a corner
-  /// or where J was not judged. `contains` is unset when J′ is undecided.
-  std::optional<ApproachVerdict> in_J_approach;
-  std::string J_approach_note;  ///< Why J′ gave no verdict on g, when J was judged and it did not.
+  /// The point against J′ as `fixel region --push sustained --approach`
+  /// classifies it (the push's frame-B wrench at q*, held as a constant
+  /// world-frame wrench on the way): IN and OUT exact, PARTIAL where the
+  /// pairs' hold cones over pieces of the approach cannot tell. Unset when
+  /// J′ is not decided (`J_approach_note` says why).
+  std::optional<RegionStatus> in_J_approach;
+  std::string J_approach_note;
 };
 
 /// Plans a push. Throws InputError for a point off the boundary's

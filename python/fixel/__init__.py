@@ -27,7 +27,7 @@ __all__ = [
     "Error", "InputError", "ParseError", "SceneError", "StoppedError", "UnsupportedError",
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes", "AlgebraicEnd",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
-    "to_off", "to_svg", "SustainedSet", "sustained_set", "ApproachSet", "approach_set", "push",
+    "to_off", "to_svg", "SustainedSet", "sustained_set", "ApproachSet", "approach_set", "push", "push_plan",
     "design", "design_candidates", "Design", "Layout", "Candidate", "exact_only", "filter_stats",
 ]  # fmt: skip
 
@@ -311,6 +311,23 @@ def push(scene, wrench=None, at=None, time=20, max_seconds=None):
         raise TypeError(f"at: {at!r} is not a string 'K:U'")
     t = text(time, "time")
     return json.loads(stoppable(lambda c: _fixel.push(scene._impl, w, at, t, c), max_seconds))
+
+
+def push_plan(scene, at, guaranteed=False, max_seconds=None):
+    """How hard to push at one boundary point (``fixel push-plan``):
+    ``at="K:U"`` is parameter U (exact) of curve K, pushed by a frictionless
+    finger along the inward normal at the scene pose. Returns the ``fixel
+    push-plan --json`` document as a dict: "one_step" (S: status and the
+    window of |p|), "guaranteed" (G, with ``guaranteed=True``; dof 3),
+    "sustained" (J's status, and "approach": the point's status against
+    the approach-aware J', as ``region(push="sustained", approach=True)``
+    classifies it), "corner" (the pushes there form a fan). Exact values are
+    strings. ``max_seconds`` and Ctrl-C stop it as in region."""
+    scene = _scene(scene)
+    if not isinstance(at, str):
+        raise TypeError(f"at: {at!r} is not a string 'K:U'")
+    g = bool(guaranteed)
+    return json.loads(stoppable(lambda c: _fixel.push_plan(scene._impl, at, g, c), max_seconds))
 
 
 def sustained_set(scene):

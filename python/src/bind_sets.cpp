@@ -1,12 +1,16 @@
 /// @file
 /// Seating set S (with the eq. 27 system), guaranteed set G, the stepper and
-/// the outcome enumeration. Long computations release the GIL.
+/// the outcome enumeration, and the push plan at one boundary point. Long
+/// computations release the GIL.
 
 #include <memory>
 
 #include "bindings.h"
 #include "fixel/guaranteed.h"
+#include "fixel/io.h"
 #include "fixel/outcomes.h"
+#include "fixel/physics.h"
+#include "fixel/push_plan.h"
 #include "fixel/seating.h"
 #include "fixel/stepper.h"
 
@@ -145,6 +149,13 @@ void bind_sets(py::module_& m) {
     py::list out;
     for (const auto& o : outcomes) out.append(outcome_dict(o));
     return out;
+  });
+  // `fixel push-plan --json` at "K:U": per model, how hard to push there.
+  m.def("push_plan", [](const ScenePtr& scene, const std::string& at, bool guaranteed, Control* control) {
+    const Scene& s = checked(scene, "scene");
+    const auto point = physics::parse_curve_point(s, at, "at");
+    py::gil_scoped_release release;
+    return push_plan_json(s, plan_push(s, point.curve, point.u, guaranteed, run_control(control)));
   });
 }
 

@@ -92,3 +92,39 @@ def test_bad_input_is_a_typed_error_naming_the_field(polygon_approach):
         polygon_approach.contains([1, 2])
     with pytest.raises(TypeError, match="sustained"):  # a wrong type is a TypeError, as everywhere
         fixel.approach_set(scene, sustained="J")
+
+
+@pytest.mark.parametrize("at", ["0:17/8", "0:19/8", "0:2", "0:1/2"])
+def test_push_plan_is_the_cli_document(at):
+    code, out, err = run_cli("push-plan", POLYGON, "--at", at, "--json")
+    assert code == 0, err
+    assert fixel.push_plan(fixel.Scene.load(POLYGON), at=at) == json.loads(out)
+
+
+@pytest.fixture(scope="module")
+def polygon_j_prime_region(polygon_approach):
+    return fixel.region(fixel.Scene.load(POLYGON), push="sustained", approach=polygon_approach, resolution="1/256")
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.fractions(min_value=F(1, 64), max_value=F(319, 64), max_denominator=64))
+def test_push_plan_j_prime_status_is_inside_j_and_is_the_regions(polygon_j_prime_region, u):
+    # The region decides whole stretches by cones, the plan one push.
+    plan = fixel.push_plan(fixel.Scene.load(POLYGON), at=f"0:{u}")
+    j, jp = plan["sustained"]["status"], plan["sustained"]["approach"]["status"]
+    if jp == "in":
+        assert j == "in"
+    if j == "out" and not plan["corner"]:
+        assert jp == "out"
+    for r in polygon_j_prime_region.intervals:
+        if r.u0 < u < r.u1 and r.status != "partial":
+            assert jp == r.status
+
+
+def test_push_plan_bad_points_raise_input_errors_naming_at():
+    scene = fixel.Scene.load(POLYGON)
+    for at in ["0:9", "3:1", "x"]:
+        with pytest.raises(fixel.InputError, match="at"):
+            fixel.push_plan(scene, at=at)
+    with pytest.raises(TypeError, match="at"):
+        fixel.push_plan(scene, at=(0, 1))
