@@ -13,12 +13,14 @@
 
 #include "../bench/random_parts.h"  // the physics studies' seeded random parts
 #include "filter_test_util.h"
+#include "fixel/approach.h"
 #include "fixel/design.h"
 #include "fixel/guaranteed.h"
 #include "fixel/internal/cone3.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/io.h"
+#include "fixel/push_plan.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
@@ -134,6 +136,24 @@ GTEST_TEST(Filter, GuaranteedAndSustainedRegionsAreIdenticalJsonWithAndWithoutFi
     return masked(region_json(polygon, r)) + masked(sustained_json(polygon, J, std::nullopt));
   };
   EXPECT_EQ(run(false, sustained), run(true, sustained));
+
+  // J′ (built in each run, so its own filter is compared): its region, its
+  // verdict on a wrench held on the way (fixels 0 and 2 at θ = 0) and one
+  // kept, and push plans inside, outside and at the edge of its region
+  // and at a corner.
+  auto approach = [&] {
+    const ApproachSet A = approach_set(polygon, J);
+    RegionOptions o;
+    o.resolution = Rational(1, 256);
+    std::string out = masked(region_json(polygon, compute_region(polygon, *approach_target(A), o)));
+    for (const VectorQ& w : {test::vec({Rational(-1, 2), Rational(-9, 10), Rational(-3, 5)}),
+                             test::vec({Rational(-1), Rational(-1), Rational(0)})})
+      out += sustained_json(polygon, J, std::nullopt, &A, approach_verdict(A, w));
+    for (const Rational& u : {Rational(17, 8), Rational(19, 8), Rational(155, 59), Rational(2)})
+      out += push_plan_json(polygon, plan_push(polygon, 0, u, false));
+    return out;
+  };
+  EXPECT_EQ(run(false, approach), run(true, approach));
 }
 
 GTEST_TEST(Filter, PaperConeRegionsAreIdenticalJsonAndMostSegmentsArePreTested) {
@@ -185,7 +205,7 @@ GTEST_TEST(Filter, PaperConeRegionsAreIdenticalJsonAndMostSegmentsArePreTested) 
 // its region, and G's JSON (with an impulse) and its region.
 GTEST_TEST(Filter, SustainedAndGuaranteedSetsOfSeededRandomPartsAreIdenticalJsonWithAndWithoutFilters) {
   std::mt19937_64 rng(2027);
-  int parts = 0, with_j = 0;
+  int parts = 0, with_j = 0, with_j_prime = 0;
   for (int k = 0; k < 400 && parts < 4; ++k) {
     const std::optional<Scene> part = bench::random_part(rng, k);
     if (!part) continue;
@@ -200,12 +220,14 @@ GTEST_TEST(Filter, SustainedAndGuaranteedSetsOfSeededRandomPartsAreIdenticalJson
         return std::string("error: ") + e.what();
       }
       j_empty = J.empty;
-      std::string out = masked(sustained_json(*part, J, std::nullopt));
+      const ApproachSet A = approach_set(*part, J);  // J′ too, built in each run
+      std::string out = masked(sustained_json(*part, J, std::nullopt, &A, std::nullopt));
       if (!J.empty) {
-        const auto target = sustained_target(J);
         RegionOptions o;
         o.resolution = Rational(1, 16);
-        out += masked(region_json(*part, compute_region(*part, *target, o)));
+        out += masked(region_json(*part, compute_region(*part, *sustained_target(J), o)));
+        if (A.decided) out += masked(region_json(*part, compute_region(*part, *approach_target(A), o)));
+        with_j_prime += A.decided && !A.empty;
       }
       return out;
     };
@@ -224,7 +246,8 @@ GTEST_TEST(Filter, SustainedAndGuaranteedSetsOfSeededRandomPartsAreIdenticalJson
     EXPECT_EQ(run(false, guaranteed), run(true, guaranteed));
   }
   EXPECT_EQ(parts, 4);
-  EXPECT_GT(with_j, 0);  // some J is non-empty, so its region ran
+  EXPECT_GT(with_j, 0);        // some J is non-empty, so its region ran
+  EXPECT_GT(with_j_prime, 0);  // and some J′, so its region ran on a non-empty set
 }
 
 GTEST_TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFilters) {
