@@ -44,6 +44,10 @@ for f in "$src"/data/scenes/*.json; do
     run "$s-sustained-region" region "$f" --push sustained --resolution 1/64 --svg j.svg
     run "$s-sustained-region-json" region "$f" --push sustained --resolution 1/64 --json
     run "$s-push" push "$f" --wrench "$imp" --time 2 --json
+    run "$s-push-plan" push-plan "$f" --at 0:1/2 --json
+  fi
+  if grep -q '"boundary"' "$f" && [ "$dof" = 3 ]; then
+    run "$s-approach-region" region "$f" --push sustained --approach --resolution 1/64 --json
   fi
   if [ "$dof" = 3 ]; then
     run "$s-sustained" seat "$f" --sustained --wrench -1,-1,0
