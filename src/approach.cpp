@@ -1,21 +1,21 @@
-// J′, the approach-aware sustained-push set (docs/theory.md §10.7): each
-// pair's two-contact family in t = tan(θ/2), and the exact tests along it
-// (a pair holds the part; a contact leaves its edge) by real root isolation.
+// J′, the approach-aware sustained-push set (docs/theory.md §10.7), built:
+// each pair's two-contact family in t = tan(θ/2), its pieces, and whether a
+// contact leaves its edge on the way (an exact visit, approach_visit.cpp).
+// Its wrench tests are in approach_hold.cpp.
 #include "fixel/approach.h"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/approach_data.h"
+#include "fixel/internal/approach_visit.h"
 #include "fixel/internal/cone3.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/polyline_edge.h"
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
-#include "fixel/internal/root_isolation.h"
 #include "fixel/internal/sustained_data.h"
 
 namespace fixel {
@@ -107,199 +107,6 @@ void add_pieces(PairFamily& fam, const Rational& end, int count) {
       piece.inner_rows = facets_of(piece.inner_gens, fam.planar);
     fam.pieces.push_back(std::move(piece));
   }
-}
-
-bool in_rows(const std::vector<std::array<Rational, 3>>& rows, const VectorQ& v) {
-  for (const auto& a : rows)
-    if (a[0] * v[0] + a[1] * v[1] + a[2] * v[2] < 0) return false;
-  return true;
-}
-
-Polynomial pdot(const PolyVec3& a, const PolyVec3& b) {
-  return padd(padd(pmul(a[0], b[0]), pmul(a[1], b[1])), pmul(a[2], b[2]));
-}
-
-PolyVec3 pcross(const PolyVec3& a, const PolyVec3& b) {
-  return {psub(pmul(a[1], b[2]), pmul(a[2], b[1])), psub(pmul(a[2], b[0]), pmul(a[0], b[2])),
-          psub(pmul(a[0], b[1]), pmul(a[1], b[0]))};
-}
-
-Q2 eval_q2(const Polynomial& p, const Q2& x) {
-  Q2 v(0);
-  for (std::size_t i = p.size(); i-- > 0;) v = v * x + Q2(p[i]);
-  return v;
-}
-
-// A point of the closed interval between 0 and t*: rational, an irrational
-// root of one of the polynomials, or t* itself.
-struct Point {
-  enum Kind { kRational, kRoot, kStar } kind = kRational;
-  Rational q;
-  AlgebraicReal root;
-};
-
-// Sign of p at x. At an irrational root x of the polynomials' product, p
-// either vanishes or has no root in x's isolating interval (the intervals of
-// the product's roots are disjoint), so its sign there is its sign at the
-// interval's midpoint.
-int sign_at(const Polynomial& p, const Point& x, const Q2& t_star) {
-  switch (x.kind) {
-    case Point::kRational:
-      return fixel::sign(peval(p, x.q));
-    case Point::kRoot:
-      return is_root(x.root, p) ? 0 : fixel::sign(peval(p, x.root.midpoint()));
-    case Point::kStar:
-      return sign(eval_q2(p, t_star));
-  }
-  return 0;
-}
-
-Rational upper(const Point& x) { return x.kind == Point::kRational ? x.q : x.root.hi; }
-Rational lower(const Point& x) { return x.kind == Point::kRational ? x.q : x.root.lo; }
-
-// The sign function handed to a predicate: signs of polys[k] at one point,
-// computed on first use.
-using Signs = std::function<int(std::size_t)>;
-
-// Visits the closed interval between 0 and t*, from 0 towards t*: every
-// point where a sign of `polys` may change, and one rational point inside
-// each open cell between two such points (where every sign is constant).
-// Returns the first point where `pred` is true.
-std::optional<Point> first_point(const std::vector<Polynomial>& polys, const ApproachData& d,
-                                 const std::function<bool(const Signs&)>& pred) {
-  const QuadraticIrrational& ts = d.t_star;
-  const Q2 t_star = from_public(ts);
-  auto visit = [&](const Point& x) {
-    std::vector<int> cache(polys.size(), 2);
-    const Signs s = [&](std::size_t k) {
-      if (cache[k] == 2) cache[k] = sign_at(polys[k], x, t_star);
-      return cache[k];
-    };
-    return pred(s);
-  };
-  Point zero;
-  zero.q = 0;
-  if (sign(t_star) == 0) {
-    if (visit(zero)) return zero;
-    return std::nullopt;
-  }
-  // t*'s own polynomial joins the list, so t* is one of the roots found.
-  std::vector<Polynomial> all = polys;
-  if (ts.b == 0)
-    all.push_back({-ts.a, Rational(1)});
-  else
-    all.push_back({ts.a * ts.a - ts.b * ts.b * ts.d, -2 * ts.a, Rational(1)});
-  const bool positive = sign(t_star) > 0;
-  const std::vector<AlgebraicReal> roots =
-      positive ? real_roots(all, Rational(0), d.t_hi) : real_roots(all, d.t_lo, Rational(0));
-  std::size_t star = roots.size();
-  for (std::size_t k = 0; k < roots.size() && star == roots.size(); ++k)
-    if (sign(Q2(roots[k].lo) - t_star) <= 0 && sign(Q2(roots[k].hi) - t_star) >= 0) star = k;
-  if (star == roots.size()) throw InternalError("approach: t* is not among the roots of its own polynomial");
-  // The events in increasing order, then visited from 0 towards t*.
-  std::vector<Point> events;
-  auto as_point = [](const AlgebraicReal& r) {
-    Point p;
-    if (r.is_rational()) {
-      p.q = r.lo;
-    } else {
-      p.kind = Point::kRoot;
-      p.root = r;
-    }
-    return p;
-  };
-  Point star_point;
-  star_point.kind = Point::kStar;
-  star_point.root = roots[star];
-  if (positive) {
-    events.push_back(zero);
-    for (std::size_t k = 0; k < star; ++k) events.push_back(as_point(roots[k]));
-    events.push_back(star_point);
-  } else {
-    events.push_back(star_point);
-    for (std::size_t k = star + 1; k < roots.size(); ++k) events.push_back(as_point(roots[k]));
-    events.push_back(zero);
-  }
-  // Each root's interval lies in the open search interval, so it clears 0;
-  // the check guards the cell samples against an interval touching it.
-  for (std::size_t k = 0; k + 1 < events.size(); ++k)
-    if (!(upper(events[k]) < lower(events[k + 1])))
-      throw InternalError("approach: isolating intervals overlap at a cell of the family");
-  const std::size_t n = events.size();
-  for (std::size_t m = 0; m < n; ++m) {
-    const std::size_t k = positive ? m : n - 1 - m;
-    if (visit(events[k])) return events[k];
-    if (m + 1 == n) break;
-    const std::size_t next = positive ? k + 1 : k - 1;
-    const std::size_t left = std::min(k, next);
-    Point cell;
-    cell.q = (upper(events[left]) + lower(events[left + 1])) / 2;
-    if (visit(cell)) return cell;
-  }
-  return std::nullopt;
-}
-
-// The polynomials of "v ∈ FC_i + FC_j" along a family (Carathéodory: v is in
-// the cone of a linearly independent subset of the generators), in the order
-// held() reads them.
-std::vector<Polynomial> hold_polynomials(const PairFamily& fam, const VectorQ& v) {
-  const PolyVec3 V{Polynomial{v[0]}, Polynomial{v[1]}, Polynomial{v[2]}};
-  PolyVec3 Vt = V;
-  for (auto& p : Vt) trim(p);
-  const auto& G = fam.gens;
-  const std::size_t m = G.size();
-  std::vector<Polynomial> out;
-  for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t b = a + 1; b < m; ++b)
-      for (std::size_t c = b + 1; c < m; ++c) {
-        out.push_back(pdot(G[a], pcross(G[b], G[c])));
-        out.push_back(pdot(Vt, pcross(G[b], G[c])));
-        out.push_back(pdot(G[a], pcross(Vt, G[c])));
-        out.push_back(pdot(G[a], pcross(G[b], Vt)));
-      }
-  for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t b = a + 1; b < m; ++b) {
-      const PolyVec3 X = pcross(G[a], G[b]);
-      for (const auto& x : X) out.push_back(x);
-      out.push_back(pdot(Vt, X));
-      out.push_back(pdot(pcross(Vt, G[b]), X));
-      out.push_back(pdot(pcross(G[a], Vt), X));
-    }
-  for (std::size_t a = 0; a < m; ++a) {
-    for (const auto& x : pcross(G[a], Vt)) out.push_back(x);
-    out.push_back(pdot(G[a], Vt));
-  }
-  return out;
-}
-
-bool held(std::size_t m, const Signs& s) {
-  std::size_t k = 0;
-  for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t b = a + 1; b < m; ++b)
-      for (std::size_t c = b + 1; c < m; ++c, k += 4) {
-        const int sd = s(k);
-        if (sd != 0 && s(k + 1) * sd >= 0 && s(k + 2) * sd >= 0 && s(k + 3) * sd >= 0) return true;
-      }
-  for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t b = a + 1; b < m; ++b, k += 6) {
-      const bool independent = s(k) != 0 || s(k + 1) != 0 || s(k + 2) != 0;
-      if (independent && s(k + 3) == 0 && s(k + 4) >= 0 && s(k + 5) >= 0) return true;
-    }
-  for (std::size_t a = 0; a < m; ++a, k += 4)
-    if (s(k) == 0 && s(k + 1) == 0 && s(k + 2) == 0 && s(k + 3) > 0) return true;
-  return false;
-}
-
-std::string theta_text(double theta) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.4f", theta);
-  return buf;
-}
-
-double theta_of(const Point& x, double theta_star) {
-  if (x.kind == Point::kStar) return theta_star;
-  const double t = x.kind == Point::kRational ? to_double(x.q) : x.root.approx();
-  return 2 * std::atan(t);
 }
 
 }  // namespace
@@ -401,75 +208,6 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
   A.empty = J.empty || !A.on_edges;
   A.data = std::move(data);
   return A;
-}
-
-bool ApproachSet::contains(const VectorQ& w_W) const { return why_not(w_W).empty(); }
-
-std::string ApproachSet::why_not(const VectorQ& w_W, ApproachHold* hold) const {
-  if (!decided) throw UnsupportedError("J'", "", "cannot be decided: " + undecided_reason);
-  std::string reason = J.why_not(w_W);
-  if (!reason.empty()) return reason;
-  if (!on_edges) return "J' is empty: " + edge_reason;
-  VectorQ v(3);
-  for (int k = 0; k < 3; ++k) v[k] = -w_W[k];
-  for (const auto& fam : data->pairs) {
-    // Filters, exact: a hold at a piece's start settles it; a wrench outside
-    // every piece's outer cone is held nowhere on the family. Root isolation
-    // decides the rest.
-    bool maybe = force_exact();
-    for (std::size_t k = 0; k < fam.pieces.size() && !force_exact(); ++k) {
-      const auto& piece = fam.pieces[k];
-      if (!piece.inner_rows.empty() && internal::in_rows(piece.inner_rows, v)) {
-        internal::record_filter(FilterSite::kApproach, true);
-        if (hold) {
-          *hold = ApproachHold{};
-          hold->fixels = fam.fixels;
-          hold->t = AlgebraicReal::rational(piece.t0);
-          hold->theta = 2 * std::atan(to_double(piece.t0));
-        }
-        return internal::fixel_name(fam.fixels[0]) + " and " + internal::fixel_name(fam.fixels[1]) +
-               " can hold the part at rest with friction on the way to the seat (at theta ~ " +
-               internal::theta_text(2 * std::atan(to_double(piece.t0))) + " rad, where only they touch)";
-      }
-      maybe = maybe || internal::in_rows(piece.outer_rows, v);
-    }
-    if (!force_exact()) internal::record_filter(FilterSite::kApproach, !maybe);
-    if (!maybe) continue;
-    const std::vector<Polynomial> polys = internal::hold_polynomials(fam, v);
-    const std::size_t m = fam.gens.size();
-    const auto found =
-        internal::first_point(polys, *data, [&](const internal::Signs& s) { return internal::held(m, s); });
-    if (!found) continue;
-    const double theta = internal::theta_of(*found, theta_star);
-    if (hold) {
-      *hold = ApproachHold{};
-      hold->fixels = fam.fixels;
-      hold->theta = theta;
-      if (found->kind == internal::Point::kStar)
-        hold->at_seat = true;
-      else
-        hold->t = found->kind == internal::Point::kRational ? AlgebraicReal::rational(found->q) : found->root;
-    }
-    return internal::fixel_name(fam.fixels[0]) + " and " + internal::fixel_name(fam.fixels[1]) +
-           " can hold the part at rest with friction on the way to the seat (at theta ~ " +
-           internal::theta_text(theta) + " rad, where only they touch)";
-  }
-  for (const auto& fam : data->slides) {
-    const auto slide = internal::slide_hold(fam, v);
-    if (!slide) continue;
-    if (hold) {
-      *hold = ApproachHold{};
-      hold->fixels = fam.fixels;
-      hold->theta = fam.theta;
-      hold->at_seat = fam.at_seat;
-      hold->slide = *slide;
-    }
-    return internal::fixel_name(fam.fixels[0]) + " and " + internal::fixel_name(fam.fixels[1]) +
-           " can hold the part at rest with friction while it slides along their parallel edges (theta ~ " +
-           internal::theta_text(fam.theta) + " rad, slid ~ " + internal::theta_text(*slide) +
-           (fam.at_seat ? " m from the seat)" : " m)");
-  }
-  return "";
 }
 
 }  // namespace fixel

@@ -148,11 +148,17 @@ bool slide_families(const Scene& scene, const std::vector<PolylineEdge>& edges, 
 }
 
 std::optional<double> slide_hold(const SlideFamily& fam, const VectorQ& v_W) {
+  return slide_hold(fam, v_W, VectorQ::Zero(3), Rational(0));
+}
+
+std::optional<double> slide_hold(const SlideFamily& fam, const VectorQ& v0, const VectorQ& v1, const Rational& d) {
+  Q3 v_W;
+  for (int k = 0; k < 3; ++k) v_W[k] = d == 0 || v1[k] == 0 ? Q2(v0[k]) : Q2(v0[k], v1[k], d);
   const Q2 C = from_public(fam.cos), S = from_public(fam.sin);
   // v in frame B at θ_r; the cone at slide s is M(s) cone(G(0)) with
   // M(s)(f, m) = (f, m + s e × f), so v ∈ cone(G(s)) ⇔ v + s h ∈ cone(G(0)),
   // h = (0, 0, −e × v_f).
-  const Q3 v{C * Q2(v_W[0]) + S * Q2(v_W[1]), -S * Q2(v_W[0]) + C * Q2(v_W[1]), Q2(v_W[2])};
+  const Q3 v{C * v_W[0] + S * v_W[1], -S * v_W[0] + C * v_W[1], v_W[2]};
   const Q3 h{Q2(0), Q2(0), -(Q2(fam.e.x) * v[1] - Q2(fam.e.y) * v[0])};
   std::vector<Q3> G;
   for (const auto& g : fam.gens) G.push_back(lift3(g));

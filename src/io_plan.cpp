@@ -66,7 +66,7 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
       a["status"] = to_string(*plan.in_J_approach);
     else
       a["note"] = plan.J_approach_note;
-    a.update(internal::approach_json(*plan.approach, std::nullopt));
+    a.update(internal::approach_json(*plan.approach, plan.J_approach_verdict));
     doc["sustained"]["approach"] = a;
   }
   internal::add_approx(doc);
@@ -114,16 +114,13 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
     out << "  sustained push, approach-aware J': " << to_string(*plan.in_J_approach);
     if (*plan.in_J_approach == RegionStatus::kIn)
       out << " (no pair of fixels can hold the part on its way to the seat; any magnitude)";
-    else if (*plan.in_J_approach == RegionStatus::kOut && plan.in_J == RegionStatus::kOut)
-      out << " (not in J)";
+    else if (plan.J_approach_verdict)
+      out << ": " << plan.J_approach_verdict->why_not;
     else if (*plan.in_J_approach == RegionStatus::kOut)
-      out << ": a pair of fixels can hold the part on its way to the seat";
-    else if (plan.corner)
+      out << " (at a corner: no push of its fan is in J')";
+    else
       out << ": a corner, whose fan of pushes is not wholly in J' nor wholly out (points on either side have "
              "one push each)";
-    else
-      out << ": near the boundary of J' (between the outer and inner cones of a pair's holds over pieces of the "
-             "approach, docs/theory.md 10.7)";
     out << "\n";
   } else if (plan.approach) {
     out << "  sustained push, approach-aware J': not judged: " << plan.J_approach_note << "\n";

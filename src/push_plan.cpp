@@ -64,8 +64,19 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
       plan.in_J = point_status(scene, *target, curve, u, Rational(0));
       plan.approach = approach_set(scene, J);
       try {
-        const auto approach = approach_target(*plan.approach);
-        plan.in_J_approach = point_status(scene, *approach, curve, u, Rational(0));
+        if (plan.corner) {  // a fan: J' is not convex, so its rays do not decide it
+          const auto approach = approach_target(*plan.approach);
+          plan.in_J_approach = point_status(scene, *approach, curve, u, Rational(0));
+        } else {
+          ApproachVerdict v;
+          ApproachHold hold;
+          hold.fixels = {-1, -1};
+          v.why_not = plan.approach->why_not_part_frame(g, &hold);
+          v.contains = v.why_not.empty();
+          if (hold.fixels[0] >= 0) v.hold = hold;
+          plan.in_J_approach = *v.contains ? RegionStatus::kIn : RegionStatus::kOut;
+          plan.J_approach_verdict = v;
+        }
       } catch (const UnsupportedError& e) {  // J' not decided (curved contacts)
         plan.J_approach_note = e.what();
       }

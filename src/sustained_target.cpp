@@ -288,6 +288,19 @@ std::unique_ptr<RegionTarget> internal::sustained_target(std::shared_ptr<const S
   return std::make_unique<SustainedTarget>(std::move(in), std::move(out), empty);
 }
 
+std::string internal::why_not_in_frame_B(const SustainedSet& J, const VectorQ& w_B) {
+  if (!J.data) throw InputError("J", "", "has no data (default-constructed SustainedSet)");
+  if (w_B.size() != 3)
+    throw InputError("wrench", std::to_string(w_B.size()) + " components", "must have 3 (fx, fy, moment)");
+  try {
+    return std::visit([&](const auto& d) { return reason(d, lift3<typename std::decay_t<decltype(d)>::NT>(w_B)); },
+                      J.data->data);
+  } catch (const Undecided&) {
+    throw UnsupportedError("wrench", "",
+                           "is too close to a boundary of J to decide with the certified enclosure of q*");
+  }
+}
+
 bool SustainedSet::contains(const VectorQ& w_W) const { return why_not(w_W).empty(); }
 
 std::string SustainedSet::why_not(const VectorQ& w_W) const {

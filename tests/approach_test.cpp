@@ -14,6 +14,9 @@
 #include "fixel/internal/polyline_edge.h"
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
+#include "fixel/internal/sustained_data.h"
+#include "fixel/region.h"
+#include "fixel/region_target.h"
 #include "fixel/scene_json.h"
 #include "fixel/seated_pose.h"
 #include "test_util.h"
@@ -76,6 +79,61 @@ std::optional<VectorQ> wrench_in_J(const SustainedSet& J, std::mt19937_64& rng) 
     if (J.contains(w)) return w;
   }
   return std::nullopt;
+}
+
+// The same in frame B at the seat: J's rays turned by −θ* in doubles and
+// rounded, kept when J contains the rational frame-B wrench exactly.
+std::optional<VectorQ> part_frame_wrench_in_J(const SustainedSet& J, std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> weight(1, 1000);
+  const double c = std::cos(J.pose.approx[2]), s = std::sin(J.pose.approx[2]);
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const auto& piece = J.pieces[rng() % J.pieces.size()];
+    VectorQ w = VectorQ::Zero(3);
+    for (const auto& ray : piece.rays) {
+      const double x = ray[0].approx(), y = ray[1].approx();
+      const std::array<double, 3> b{c * x + s * y, -s * x + c * y, ray[2].approx()};
+      for (int k = 0; k < 3; ++k) w[k] += Rational(weight(rng)) * Rational(std::llround(b[k] * 1e6), 1000000);
+    }
+    if (internal::why_not_in_frame_B(J, w).empty()) return w;
+  }
+  return std::nullopt;
+}
+
+// −R(θ*)·w_B: the world-frame v of a frame-B wrench, in Q(√d).
+internal::V3 world_v(const SustainedSet& J, const VectorQ& w_B) {
+  const Q2 c = internal::from_public((*J.pose.exact)[2]), s = internal::from_public((*J.pose.exact)[3]);
+  return {-(c * Q2(w_B[0]) - s * Q2(w_B[1])), -(s * Q2(w_B[0]) + c * Q2(w_B[1])), Q2(-w_B[2])};
+}
+
+// v ∈ cone(gens) for v in Q(√d), directly at one pose: v is in the cone of
+// a linearly independent subset (Carathéodory), each tried by Cramer's
+// rule. No polynomials, no root isolation.
+bool in_cone_q2(const std::vector<VectorQ>& gens, const internal::V3& v) {
+  using internal::cross;
+  using internal::dot;
+  if (internal::is_zero(v)) return true;
+  std::vector<internal::V3> G;
+  for (const auto& g : gens) G.push_back(internal::lift(g));
+  const std::size_t m = G.size();
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = a + 1; b < m; ++b)
+      for (std::size_t c = b + 1; c < m; ++c) {
+        const Q2 D = dot(G[a], cross(G[b], G[c]));
+        if (internal::sign(D) == 0) continue;
+        const int sd = internal::sign(D);
+        if (internal::sign(dot(v, cross(G[b], G[c]))) * sd >= 0 &&
+            internal::sign(dot(G[a], cross(v, G[c]))) * sd >= 0 && internal::sign(dot(G[a], cross(G[b], v))) * sd >= 0)
+          return true;
+      }
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t b = a + 1; b < m; ++b) {
+      const internal::V3 X = cross(G[a], G[b]);
+      if (internal::is_zero(X) || internal::sign(dot(v, X)) != 0) continue;
+      if (internal::sign(dot(cross(v, G[b]), X)) >= 0 && internal::sign(dot(cross(G[a], v), X)) >= 0) return true;
+    }
+  for (const auto& g : G)
+    if (internal::is_zero(cross(v, g)) && internal::sign(dot(v, g)) > 0) return true;
+  return false;
 }
 
 // Rational t strictly between 0 and t*, k/n of the way.
@@ -415,6 +473,76 @@ TEST(Approach, ASeatInAHugeQuadraticFieldHasAFiniteRotation) {
     }
   }
   EXPECT_EQ(huge, 3);
+}
+
+// Wrenches in frame B at the seat (a region's pushes): R(θ*)·w_B is in
+// Q(√d), so J′'s polynomials get coefficients in Q(√d) (approach_visit.cpp).
+TEST(Approach, AFrameBWrenchHeldAtARationalPoseIsNotInJPrimeAndTheFilterChangesNothing) {
+  std::mt19937_64 rng(17);
+  int irrational = 0, held_somewhere = 0, in_prime = 0, witnesses_checked = 0, compared = 0;
+  for (std::size_t k = 0; k < parts().size() && k < 8; ++k) {
+    const Part& p = parts()[k];
+    irrational += p.A.t_star.b != 0;
+    for (int sample = 0; sample < 3; ++sample) {
+      const auto w = part_frame_wrench_in_J(p.J, rng);
+      if (!w) continue;
+      const internal::V3 v = world_v(p.J, *w);
+      bool held = false;
+      for (const auto& fam : p.A.data->pairs)
+        for (int k = 0; k <= 16 && !held; ++k)
+          held = in_cone_q2(direct_pose(p.scene, p.J.mu, fam.fixels[0], fam.fixels[1], inside(p.A, k, 16)).gens, v);
+      ApproachHold hold;
+      hold.fixels = {-1, -1};
+      const std::string why = p.A.why_not_part_frame(*w, &hold);
+      if (held) {
+        ++held_somewhere;
+        EXPECT_FALSE(why.empty()) << p.scene.name;
+      }
+      in_prime += why.empty();
+      if (!why.empty() && p.A.on_edges && hold.t && hold.t->is_rational()) {
+        EXPECT_TRUE(in_cone_q2(direct_pose(p.scene, p.J.mu, hold.fixels[0], hold.fixels[1], hold.t->lo).gens, v))
+            << p.scene.name;
+        ++witnesses_checked;
+      }
+      if (compared < test::sanitizer_scaled(4)) {  // forced exact: about 0.7 s each on these parts' numbers
+        const ForceExactScope forced;
+        EXPECT_EQ(p.A.why_not_part_frame(*w), why) << p.scene.name;
+        ++compared;
+      }
+    }
+  }
+  // 8, 17, 8 and 4 here: not vacuous, and the Q(√d) path ran. Eight
+  // parts, even under the sanitizers: the first two alone keep no wrench.
+  EXPECT_GT(irrational, 0);
+  EXPECT_GT(held_somewhere, 0);
+  EXPECT_GT(witnesses_checked, 0);
+  EXPECT_GT(in_prime, 0);
+}
+
+// The J′ region decides stretches by the pairs' outer and inner cones; a
+// push inside an IN stretch is in J′ by the exact test, one inside an OUT
+// stretch is not (seats with irrational rotations: frame-B pushes).
+TEST(Approach, PushesInsideTheJPrimeRegionsStretchesGetTheirStatusFromTheExactFrameBTest) {
+  int in = 0, out = 0;
+  for (std::size_t k = 0; k < parts().size() && k < 8; ++k) {
+    const Part& p = parts()[k];
+    if (p.A.t_star.b == 0 || !p.A.on_edges) continue;
+    RegionOptions options;
+    options.resolution = Rational(1, 64);
+    const Region r = compute_region(p.scene, *approach_target(p.A), options);
+    for (const auto& i : r.intervals) {
+      if (i.status == RegionStatus::kPartial || i.u0 == i.u1) continue;
+      const Rational u = (i.u0 + i.u1) / 2;
+      const Curve& curve = p.scene.body.boundary->curves[i.curve];
+      const Vec2 t = curve.derivative(u), point = curve.point(u);
+      const VectorQ g = contact_wrench(sub(point, p.scene.body.p_AoCm_A), {-t.y, t.x}, 3);
+      const bool exact = p.A.contains_part_frame(g);
+      EXPECT_EQ(exact, i.status == RegionStatus::kIn) << p.scene.name << " u = " << u;
+      ++(exact ? in : out);
+    }
+  }
+  EXPECT_GT(in, 0);
+  EXPECT_GT(out, 0);
 }
 
 TEST(Approach, BadInputIsATypedErrorNamingTheField) {

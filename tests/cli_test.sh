@@ -264,7 +264,7 @@ expect 0 'one-step outcome(s)' -- "$fixel" push-plan "$src/data/scenes/blob.json
 expect 0 '"relative_width"' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10 --json
 expect 0 'sustained push: seats and stays: in' -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
 expect 0 "approach-aware J': in (no pair" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
-expect 0 "approach-aware J': out: a pair of fixels can hold" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:17/8
+expect 0 "approach-aware J': out: fixels[0] and fixels[2] can hold" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:17/8
 expect 0 "approach-aware J': partial: a corner" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:2
 expect 2 '--at' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:100
 

@@ -77,17 +77,32 @@ GTEST_TEST(PushPlan, JPrimeStatusesAreInsideJAndAgreeWithTheJPrimeRegion) {
   EXPECT_GT(compared, 60);
 }
 
-GTEST_TEST(PushPlan, ReportsJPrimeInTextAndJson) {
+// At u = 17/8 fixels 0 and 2 hold the part at θ = 0, before it turns
+// (fixel verify's sustained.approach check derives such a hold by an exact
+// LP; approach_test.cpp checks holds at rational poses against Cramer's
+// rule in Q(√d)).
+GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
   const Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/polygon.json");
   const PushPlan plan = plan_push(scene, 0, Rational(17, 8), false);
-  EXPECT_NE(push_plan_text(scene, plan).find("approach-aware J': out: a pair of fixels can hold"), std::string::npos)
+  EXPECT_NE(push_plan_text(scene, plan)
+                .find("approach-aware J': out: fixels[0] and fixels[2] can hold the part at "
+                      "rest with friction on the way to the seat (at theta ~ 0.0000 rad"),
+            std::string::npos)
       << push_plan_text(scene, plan);
   const auto doc = nlohmann::json::parse(push_plan_json(scene, plan));
   const auto& approach = doc.at("sustained").at("approach");
   EXPECT_EQ(doc.at("sustained").at("status"), "in");
   EXPECT_EQ(approach.at("status"), "out");
+  EXPECT_EQ(approach.at("contains"), false);
+  EXPECT_EQ(approach.at("hold").at("fixels"), nlohmann::json::array({0, 2}));
+  EXPECT_EQ(approach.at("hold").at("t"), "0");
   EXPECT_EQ(approach.at("t_star"), "15-1*sqrt(226)");
   EXPECT_EQ(doc.at("corner"), false);
+  // At the corner u = 2 the fan is classified as the J′ region does.
+  const PushPlan corner = plan_push(scene, 0, Rational(2), false);
+  EXPECT_TRUE(corner.corner);
+  EXPECT_FALSE(corner.J_approach_verdict.has_value());
+  EXPECT_EQ(corner.in_J_approach, RegionStatus::kPartial);
 }
 
 }  // namespace

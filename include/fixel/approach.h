@@ -72,6 +72,15 @@ struct ApproachSet {
   /// Empty when w ∈ J′; otherwise the reason in words. When a pair holds
   /// the part on the way, `hold` (if not null) gets the pose.
   std::string why_not(const VectorQ& w_W, ApproachHold* hold = nullptr) const;
+
+  /// The same tests for a wrench w_B given in frame B at the seat (force
+  /// along the part's own axes in N, moment about the centre of mass in
+  /// N·m; length 3), as a finger's push at a boundary point is (the
+  /// pushing region's frame): its world-frame wrench, held along the way,
+  /// is R(θ*)·w_B, whose coordinates lie in Q(√d) when θ* is irrational.
+  /// Exact as `contains`; the same exceptions.
+  bool contains_part_frame(const VectorQ& w_B) const;
+  std::string why_not_part_frame(const VectorQ& w_B, ApproachHold* hold = nullptr) const;
 };
 
 /// Builds J′ from J (which must come from sustained_set on the same

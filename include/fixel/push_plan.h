@@ -12,6 +12,7 @@
 #include "fixel/outcomes.h"
 #include "fixel/region.h"
 #include "fixel/scene.h"
+#include "fixel/seat_report.h"
 
 namespace fixel {
 
@@ -39,12 +40,16 @@ struct PushPlan {
   std::string J_note;                ///< Why J was not judged, when unset.
   /// J′ (docs/theory.md §10.7), built whenever J is.
   std::optional<ApproachSet> approach;
-  /// The point against J′ as `fixel region --push sustained --approach`
-  /// classifies it (the push's frame-B wrench at q*, held as a constant
-  /// world-frame wrench on the way): IN and OUT exact, PARTIAL where the
-  /// pairs' hold cones over pieces of the approach cannot tell. Unset when
-  /// J′ is not decided (`J_approach_note` says why).
+  /// The point against J′: at a smooth point the exact verdict on g, the
+  /// push's frame-B wrench at q* (held as the constant world-frame wrench
+  /// R(θ*)·g along the way), IN or OUT; at a corner the fan's status as
+  /// `fixel region --push sustained --approach` classifies it (PARTIAL
+  /// when it cannot tell). Unset when J′ is not decided (`J_approach_note`
+  /// says why).
   std::optional<RegionStatus> in_J_approach;
+  /// At a smooth point: why g is not in J′, and the pair's pose when a pair
+  /// holds the part on its way (`contains` unset when undecided).
+  std::optional<ApproachVerdict> J_approach_verdict;
   std::string J_approach_note;
 };
 

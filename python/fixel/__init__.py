@@ -319,9 +319,10 @@ def push_plan(scene, at, guaranteed=False, max_seconds=None):
     finger along the inward normal at the scene pose. Returns the ``fixel
     push-plan --json`` document as a dict: "one_step" (S: status and the
     window of |p|), "guaranteed" (G, with ``guaranteed=True``; dof 3),
-    "sustained" (J's status, and "approach": the point's status against
-    the approach-aware J', as ``region(push="sustained", approach=True)``
-    classifies it), "corner" (the pushes there form a fan). Exact values are
+    "sustained" (J's status, and "approach": the exact verdict of the
+    approach-aware J' on the push, with the pair that can hold the part on
+    its way; at a corner the fan's status as ``region(push="sustained",
+    approach=True)`` classifies it), "corner". Exact values are
     strings. ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
     if not isinstance(at, str):
@@ -359,23 +360,31 @@ class ApproachSet:
         self.edge_reason = impl.edge_reason
         self.empty = impl.empty
 
-    def why_not(self, w):
+    def why_not(self, w, frame="world"):
         """"" when w is in J', else the reason (as J's, or the pair that can
-        hold the part on the way, or the edge a contact leaves)."""
-        return self._impl.why_not(vector(w, "wrench"))[0]
+        hold the part on the way, or the edge a contact leaves). ``frame``:
+        "world" (w = (fx, fy, moment), world frame) or "part" (frame B at
+        the seat, as a finger's push at a boundary point: the world-frame
+        wrench held on the way is R(θ*)·w, in Q(√d))."""
+        return self._why_not(w, frame)[0]
 
-    def hold(self, w):
+    def hold(self, w, frame="world"):
         """None, or where a pair can hold the part under w on the way:
         {"fixels": (i, j), "theta": rad (display), "t": tan(theta/2) exact
         text or "t_star", "slide": display float for a pair on parallel
-        edges, else None}."""
-        return self._impl.why_not(vector(w, "wrench"))[1]
+        edges, else None}. ``frame`` as in why_not."""
+        return self._why_not(w, frame)[1]
 
-    def contains(self, w):
-        return self.why_not(w) == ""
+    def contains(self, w, frame="world"):
+        return self.why_not(w, frame) == ""
 
     def __contains__(self, w):
         return self.contains(w)
+
+    def _why_not(self, w, frame):
+        if frame not in ("world", "part"):
+            raise InputError.make("frame", repr(frame), 'must be "world" or "part"')
+        return self._impl.why_not(vector(w, "wrench"), frame == "part")
 
 
 def approach_set(scene, sustained=None):

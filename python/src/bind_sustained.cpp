@@ -50,14 +50,15 @@ void bind_sustained(py::module_& m) {
       .def_readonly("edge_reason", &ApproachSet::edge_reason)
       .def_readonly("empty", &ApproachSet::empty)
       // (why_not, hold): hold is None or {"fixels", "theta", "t", "slide"} ("t" exact text or "t_star").
-      .def("why_not", [](const ApproachSet& A, const std::vector<std::string>& w) {
+      // part_frame: w in frame B at the seat (ApproachSet::why_not_part_frame).
+      .def("why_not", [](const ApproachSet& A, const std::vector<std::string>& w, bool part_frame) {
         const VectorQ v = exact_vector(w, 3, "wrench");
         ApproachHold hold;
         hold.fixels = {-1, -1};
         std::string reason;
         {
           py::gil_scoped_release release;
-          reason = A.why_not(v, &hold);
+          reason = part_frame ? A.why_not_part_frame(v, &hold) : A.why_not(v, &hold);
         }
         py::object h = py::none();
         if (hold.fixels[0] >= 0) {

@@ -128,3 +128,26 @@ def test_push_plan_bad_points_raise_input_errors_naming_at():
             fixel.push_plan(scene, at=at)
     with pytest.raises(TypeError, match="at"):
         fixel.push_plan(scene, at=(0, 1))
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.fractions(min_value=F(1, 64), max_value=F(319, 64), max_denominator=64))
+def test_push_plan_j_prime_at_a_smooth_point_is_the_part_frame_verdict_on_g(polygon_approach, u):
+    plan = fixel.push_plan(fixel.Scene.load(POLYGON), at=f"0:{u}")
+    approach = plan["sustained"]["approach"]
+    if plan["corner"]:
+        assert "contains" not in approach
+        return
+    g = plan["wrench_direction"]  # frame B at the seat
+    assert approach["contains"] == polygon_approach.contains(g, frame="part")
+    assert approach["status"] == ("in" if approach["contains"] else "out")
+    assert approach.get("why_not", "") == polygon_approach.why_not(g, frame="part")
+    hold = polygon_approach.hold(g, frame="part")
+    assert (hold is None) == ("hold" not in approach)
+    if hold is not None:
+        assert list(hold["fixels"]) == approach["hold"]["fixels"] and hold["t"] == approach["hold"]["t"]
+
+
+def test_a_frame_other_than_world_or_part_is_an_input_error(polygon_approach):
+    with pytest.raises(fixel.InputError, match="frame"):
+        polygon_approach.contains(["-1", "-1", "0"], frame="body")

@@ -69,6 +69,9 @@ bool slide_families(const Scene& scene, const std::vector<PolylineEdge>& edges, 
 // A slide s (display) of the family at which v_W ∈ FC_i + FC_j (world
 // frame): the pair holds the part under the wrench −v_W; none if no s does.
 std::optional<double> slide_hold(const SlideFamily& fam, const VectorQ& v_W);
+// The same for v_W = v0 + √d·v1 in the seat's field (a frame-B wrench at
+// the seat, rotated to the world frame by θ*).
+std::optional<double> slide_hold(const SlideFamily& fam, const VectorQ& v0, const VectorQ& v1, const Rational& d);
 
 struct ApproachData {
   std::vector<PairFamily> pairs;

@@ -9,14 +9,16 @@
 #include <vector>
 
 #include "fixel/internal/cone3.h"
+#include "fixel/sustained.h"
 
 namespace fixel::internal {
 
 // Everything in the part's body frame at q*, where a finger's push wrench
 // (d, (b − c) ⊗ d) is rational: only J's own data lives in NT, exact Q(√d)
 // for polyline contacts or certified intervals for curved ones.
-template <class NT>
+template <class NT_>
 struct Data {
+  using NT = NT_;
   using V = std::array<NT, 3>;
   NT cos, sin;            // the rotation of q*
   std::vector<V> K_rows;  // w ∈ int K ⇔ a·w > 0 for every row (K = −cone(W_n*))
@@ -44,6 +46,11 @@ template <class NT>
 bool in_jam(const typename Data<NT>::Jam& jam, const A3<NT>& w) {
   return satisfies(w, jam.facets, {});
 }
+
+// J's reason for rejecting a wrench given in frame B at q* (force along
+// the part's axes, moment about its centre of mass), "" when it is in J:
+// J.why_not of its world-frame form R(θ*)·w_B, without leaving Q(√d).
+std::string why_not_in_frame_B(const SustainedSet& J, const VectorQ& w_B);
 
 inline std::string fixel_name(int i) { return "fixels[" + std::to_string(i) + "]"; }
 
