@@ -249,15 +249,19 @@ TEST(Approach, ThePiecesFilterChangesNoAnswerAndRootIsolationStillRuns) {
       if (!w) continue;
       if (sample % 2) *w += test::vec({Rational(coord(rng), 40), Rational(coord(rng), 40), Rational(coord(rng), 40)});
       bool filtered = false, exact = false;
+      std::string filtered_why, exact_why;  // the reason names a pose: the filter must not move it
       {
         const ForceExactScope on(false);
         filtered = p.A.contains(*w);
+        filtered_why = p.A.why_not(*w);
       }
       {
         const ForceExactScope forced;
-        exact = p.A.contains(*w);
+        exact_why = p.A.why_not(*w);
+        exact = exact_why.empty();
       }
       EXPECT_EQ(filtered, exact) << p.scene.name;
+      EXPECT_EQ(filtered_why, exact_why) << p.scene.name;
       ++compared;
       kept += exact;
     }
