@@ -31,9 +31,12 @@ inline std::string q(const Rational& x) { return "\"" + fixel::to_string(x) + "\
 // A random convex polygon as an intersection of half-planes u_k·x ≤ d_k with
 // exact rational unit normals, and 3 fixels on 3 of its edges.
 // `gap_max` and `mu_max` in thousandths (the defaults are the studies' 1/10
-// and 1/8); `json`, when given, gets the scene file's text.
+// and 1/8); `json`, when given, gets the scene file's text. With `build`
+// false it only draws what a part would (the generator then stands where
+// it would after the part) and returns nothing: for skipping to a known
+// part without parsing and checking those before it.
 inline std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index, int gap_max = 100, int mu_max = 125,
-                                               std::string* json = nullptr) {
+                                               std::string* json = nullptr, bool build = true) {
   std::uniform_real_distribution<double> U(0, 1);
   const int K = 5 + static_cast<int>(rng() % 3);
   std::vector<fixel::Vec2> u;
@@ -74,6 +77,7 @@ inline std::optional<fixel::Scene> random_part(std::mt19937_64& rng, int index, 
       << "}";
   }
   s << "]}";
+  if (!build) return std::nullopt;
   if (json) *json = s.str();
   try {
     fixel::Scene scene = fixel::parse_scene(s.str());
