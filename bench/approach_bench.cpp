@@ -7,11 +7,14 @@
 // rationals, kept when J contains them exactly), splits them by J′, and runs
 // each in Box2D as a sustained push. Then the pushing regions against J and
 // J′ (resolution 1/256, frictionless pusher), with --region-pushes pushes
-// at random points of every IN stretch (`region --validate`). Prints a
-// Markdown table and the pooled seated fractions.
+// at random points of every IN stretch (`region --validate`). Then, as
+// `fixel push-plan` judges a point, --plan-points points of J's IN stretches
+// split by J′'s exact verdict on the push in the part's frame (no partial
+// band), each pushed in Box2D. Prints a Markdown table and the pooled
+// seated fractions.
 //
-//   approach_bench [--random K] [--samples N] [--region-pushes P] [--seed S] [--gap G] [--mu M] [--time T]
-//                  [--dump DIR]   (writes each part's scene file, DIR/<name>.json)
+//   approach_bench [--random K] [--samples N] [--region-pushes P] [--plan-points Q] [--seed S] [--gap G]
+//                  [--mu M] [--time T] [--dump DIR]   (writes each part's scene file, DIR/<name>.json)
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -20,6 +23,7 @@
 #include <string>
 
 #include "fixel/approach.h"
+#include "fixel/geometry.h"
 #include "fixel/physics.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
@@ -43,7 +47,7 @@ struct Tally {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int random_parts = 40, samples = 20, gap = 200, mu = 500, region_pushes = 5;
+  int random_parts = 40, samples = 20, gap = 200, mu = 500, region_pushes = 5, plan_points = 5;
   std::uint64_t seed = 7;
   std::string time = "20", dump;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -51,6 +55,7 @@ int main(int argc, char** argv) {
     if (a == "--random") random_parts = std::atoi(argv[i + 1]);
     if (a == "--samples") samples = std::atoi(argv[i + 1]);
     if (a == "--region-pushes") region_pushes = std::atoi(argv[i + 1]);
+    if (a == "--plan-points") plan_points = std::atoi(argv[i + 1]);
     if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
     if (a == "--gap") gap = std::atoi(argv[i + 1]);
     if (a == "--mu") mu = std::atoi(argv[i + 1]);
@@ -60,13 +65,41 @@ int main(int argc, char** argv) {
   fp::PushOptions options;
   options.time = fixel::parse_rational(time);
   options.trajectory_samples = 1;
-  std::mt19937_64 rng(seed);
+  std::mt19937_64 rng(seed), plan_rng(seed + 1);  // the plan points draw apart: the parts stay those of before
   std::uniform_real_distribution<double> U(0.05, 1);
 
   std::cout << "| part | abs(theta*) rad | J' | J' pushes seated | J \\ J' pushes seated | not seated: "
                "jammed/escaped/timeout | J region "
-               "IN length, pushes seated | J' region IN length, pushes seated |\n|---|---|---|---|---|---|---|---|\n";
-  Tally in_all, out_all, in_large, out_large, in_small, out_small, region_j, region_a;
+               "IN length, pushes seated | J' region IN length, pushes seated | J IN points: in J' seated | J IN "
+               "points: not in J' seated |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  Tally in_all, out_all, in_large, out_large, in_small, out_small, region_j, region_a, plan_in, plan_out;
+  // Points of J's IN stretches (interiors), judged by J′ in the part's frame
+  // as push-plan does, and pushed at the approximate seat as `push --at` does.
+  auto plan_cells = [&](const fixel::Scene& scene, const fixel::ApproachSet& A) {
+    fixel::RegionOptions ro;
+    ro.resolution = fixel::Rational(1, 256);
+    const fixel::Region r = fixel::compute_region(scene, *fixel::sustained_target(A.J), ro);
+    std::vector<const fixel::RegionInterval*> in;
+    for (const auto& i : r.intervals)
+      if (i.status == fixel::RegionStatus::kIn && i.u0 < i.u1) in.push_back(&i);
+    Tally yes, no;
+    for (int k = 0; k < plan_points && !in.empty(); ++k) {
+      const fixel::RegionInterval& i = *in[plan_rng() % in.size()];
+      const fixel::Rational u = i.u0 + (i.u1 - i.u0) * fixel::Rational(1 + static_cast<long>(plan_rng() % 999), 1000);
+      const fixel::Curve& curve = scene.body.boundary->curves[i.curve];
+      const fixel::Vec2 t = curve.derivative(u);
+      const fixel::VectorQ g =
+          fixel::contact_wrench(fixel::sub(curve.point(u), scene.body.p_AoCm_A), fixel::Vec2{-t.y, t.x}, 3);
+      const bool in_prime = A.contains_part_frame(g);
+      const auto& q = A.J.pose.approx;
+      const fp::PushResult pr = fp::push(scene, fp::push_wrench_at(scene, i.curve, u, {q[0], q[1], q[2]}), options);
+      Tally& tally = in_prime ? yes : no;
+      ++tally.n;
+      tally.seated += pr.outcome == fp::Outcome::kSeated;
+    }
+    plan_in.n += yes.n, plan_in.seated += yes.seated, plan_out.n += no.n, plan_out.seated += no.seated;
+    return frac(yes.seated, yes.n) + " | " + frac(no.seated, no.n);
+  };
   auto region_cell = [&](const fixel::Scene& scene, fixel::RegionTarget& target, Tally& pooled) {
     fixel::RegionOptions ro;
     ro.resolution = fixel::Rational(1, 256);
@@ -129,12 +162,13 @@ int main(int argc, char** argv) {
               << frac(in.seated, in.n) << " | " << frac(out.seated, out.n) << " | J': " << in_jammed << "/"
               << in_escaped << "/" << in_timeout << "; J \\ J': " << jammed << "/" << escaped << "/" << timeout << " | "
               << region_cell(*scene, *fixel::sustained_target(A.J), region_j) << " | "
-              << region_cell(*scene, *fixel::approach_target(A), region_a) << " |\n";
+              << region_cell(*scene, *fixel::approach_target(A), region_a) << " | " << plan_cells(*scene, A) << " |\n";
   }
   std::cout << "\npooled: J' pushes seated " << frac(in_all.seated, in_all.n) << ", J \\ J' pushes seated "
             << frac(out_all.seated, out_all.n) << "\n  abs(theta*) >= 0.2 rad: J' " << frac(in_large.seated, in_large.n)
             << ", J \\ J' " << frac(out_large.seated, out_large.n) << "\n  abs(theta*) < 0.2 rad: J' "
             << frac(in_small.seated, in_small.n) << ", J \\ J' " << frac(out_small.seated, out_small.n)
             << "\nregions: J IN pushes seated " << frac(region_j.seated, region_j.n) << ", J' IN pushes seated "
-            << frac(region_a.seated, region_a.n) << "\n";
+            << frac(region_a.seated, region_a.n) << "\npush-plan points of J's IN stretches: in J' seated "
+            << frac(plan_in.seated, plan_in.n) << ", not in J' seated " << frac(plan_out.seated, plan_out.n) << "\n";
 }
