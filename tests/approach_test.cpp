@@ -337,6 +337,19 @@ std::optional<Scene> two_on_one_edge(std::mt19937_64& rng, int k, const Rational
   return scene;
 }
 
+// two_on_one_edge's part with its J and J′; nothing when the scene is refused.
+std::optional<Part> slide_part(std::mt19937_64& rng, int k, const Rational& gap1, const Rational& gap2) {
+  auto scene = two_on_one_edge(rng, k, gap1, gap2);
+  if (!scene) return std::nullopt;
+  try {
+    SustainedSet J = sustained_set(*scene, false);
+    ApproachSet A = approach_set(*scene, J);
+    return Part{*scene, std::move(J), std::move(A)};
+  } catch (const SceneError&) {
+    return std::nullopt;
+  }
+}
+
 TEST(Approach, APairSlidingOnOneEdgeHoldsWhereAnExactLpSaysSo) {
   // Equal gaps on the shared edge: the seat does not turn (θ* = 0), the
   // slide family is rational, and the second method is an exact LP at
@@ -346,16 +359,11 @@ TEST(Approach, APairSlidingOnOneEdgeHoldsWhereAnExactLpSaysSo) {
   int parts_checked = 0, held_direct = 0, free_direct = 0, held_off_seat = 0;
   std::uniform_int_distribution<int> coord(-30, 30);
   for (int k = 0; k < 400 && parts_checked < 8; ++k) {
-    auto scene = two_on_one_edge(rng, k, Rational(1, 10), Rational(1, 10));
-    if (!scene) continue;
-    SustainedSet J;
-    ApproachSet A;
-    try {
-      J = sustained_set(*scene, false);
-      A = approach_set(*scene, J);
-    } catch (const SceneError&) {
-      continue;
-    }
+    const auto part = slide_part(rng, k, Rational(1, 10), Rational(1, 10));
+    if (!part) continue;
+    const Scene* const scene = &part->scene;
+    const SustainedSet& J = part->J;
+    const ApproachSet& A = part->A;
     ASSERT_TRUE(A.decided) << A.undecided_reason;
     ASSERT_EQ(A.t_star.a, 0);
     ASSERT_EQ(A.data->slides.size(), 1u);
@@ -420,16 +428,11 @@ TEST(Approach, ASlideFamilyAtATurnedSeatHoldsEveryWrenchOfItsJamConeThere) {
   int families = 0, jammed = 0;
   std::uniform_int_distribution<int> coord(-30, 30);
   for (int k = 0; k < 400 && families < 6; ++k) {
-    auto scene = two_on_one_edge(rng, k, Rational(1, 20), Rational(3, 20));
-    if (!scene) continue;
-    SustainedSet J;
-    ApproachSet A;
-    try {
-      J = sustained_set(*scene, false);
-      A = approach_set(*scene, J);
-    } catch (const SceneError&) {
-      continue;
-    }
+    const auto part = slide_part(rng, k, Rational(1, 20), Rational(3, 20));
+    if (!part) continue;
+    const Scene* const scene = &part->scene;
+    const SustainedSet& J = part->J;
+    const ApproachSet& A = part->A;
     ASSERT_TRUE(A.decided) << A.undecided_reason;
     const internal::SlideFamily* at_seat = nullptr;
     for (const auto& f : A.data->slides)
