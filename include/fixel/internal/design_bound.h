@@ -32,7 +32,7 @@ class PairBound {
   // the pair regions' resolution: the design's `resolution` or the outline's
   // parameter length over kCells, whichever is coarser (measured: a finer
   // grid costs more in pair regions than it saves in layouts scored,
-  // docs/performance.md). Throws what the region would (no outline).
+  // docs/performance_log.md). Throws what the region would (no outline).
   // The jam cones use the fixels' friction J is judged at (mu_hi, else mu).
   PairBound(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
   static constexpr int kCells = 256;

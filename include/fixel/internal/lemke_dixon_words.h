@@ -5,7 +5,7 @@
 // (low_128, low_bits, block_in_words, the Int128 residues) read their
 // operands without a branch on their signs, sizes or zeros: those follow
 // no pattern a branch predictor could learn, and a mispredicted branch
-// costs more than the arithmetic here (docs/performance.md). The GMP-path
+// costs more than the arithmetic here (docs/performance_log.md). The GMP-path
 // residue and the factoring's skip of zero multipliers still branch.
 #include <flint/nmod.h>
 #include <gmp.h>
