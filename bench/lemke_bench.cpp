@@ -35,11 +35,15 @@ using fixel::MatrixQ;
 using fixel::Rational;
 using fixel::VectorQ;
 
+// Each solver gets B in its own form, made once per problem outside the
+// timed loops: Siconos and the double Lemke B in doubles, fixel's prepared
+// solve a LemkeMatrix (B with its enclosures and integer rows).
 struct Problem {
   MatrixQ B;
   VectorQ b;
   Eigen::MatrixXd Bd;
   Eigen::VectorXd bd;
+  fixel::LemkeMatrix prepared;
 };
 
 // Seating LCPs (size 12) of random 3-fixel scenes, at impulses around S.
@@ -58,7 +62,7 @@ const std::vector<Problem>& problems() {
       VectorQ p = S.apex;
       for (int j = 0; j < 3; ++j) p -= fixel::test::random_rational(rng, -1, 3, 7) * S.generators[j];
       const fixel::TimeSteppingLcp lcp = fixel::build_lcp(scene);
-      Problem pr{lcp.B, lcp.b(p), Eigen::MatrixXd(12, 12), Eigen::VectorXd(12)};
+      Problem pr{lcp.B, lcp.b(p), Eigen::MatrixXd(12, 12), Eigen::VectorXd(12), fixel::LemkeMatrix(lcp.B)};
       for (int i = 0; i < 12; ++i) {
         pr.bd[i] = fixel::to_double(pr.b[i]);
         for (int j = 0; j < 12; ++j) pr.Bd(i, j) = fixel::to_double(pr.B(i, j));
@@ -225,6 +229,32 @@ void BM_FilteredLemkeIntoReusedResult(benchmark::State& state) {
 }
 BENCHMARK(BM_FilteredLemkeIntoReusedResult)->Repetitions(5)->ReportAggregatesOnly(true);
 
+// The same with each problem's B prepared (a LemkeMatrix, made once per
+// problem as Bd is for Siconos): what a solve costs in a stepper.
+void BM_FilteredLemkePreparedIntoReusedResult(benchmark::State& state) {
+  const auto& all = problems();
+  fixel::ForceExactScope filtered(false);
+  fixel::LemkeResult result;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    fixel::solve_lcp_lemke(all[k].prepared, all[k].b, result);
+    benchmark::DoNotOptimize(result);
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_FilteredLemkePreparedIntoReusedResult)->Repetitions(5)->ReportAggregatesOnly(true);
+
+// Preparing B: what the prepared solves leave out of each solve.
+void BM_PrepareLemkeMatrix(benchmark::State& state) {
+  const auto& all = problems();
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fixel::LemkeMatrix(all[k].B));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_PrepareLemkeMatrix)->Repetitions(5)->ReportAggregatesOnly(true);
+
 // The filtered run's pivot path alone, without its exact final values: what
 // the interval path and its tie certificates cost, a floor for
 // BM_FilteredLemke (docs/performance.md). Every problem here has a negative
@@ -272,6 +302,16 @@ void report_filtered_agreement() {
             << values.factored << " (lifting steps " << values.lifting_steps << ", reconstructions tried "
             << values.reconstructions << "); z0-row decisions settled by the final values " << values.z0_settled
             << ", runs repeated " << values.z0_reruns << "\n";
+  int prepared_differ = 0;
+  for (const auto& pr : problems()) {
+    fixel::ForceExactScope filtered(false);
+    const fixel::LemkeResult f = fixel::solve_lcp_lemke(pr.prepared, pr.b);
+    fixel::ForceExactScope exact;
+    const fixel::LemkeResult e = fixel::solve_lcp_lemke(pr.B, pr.b);
+    prepared_differ += f.status != e.status || f.pivots != e.pivots || f.w != e.w || f.z != e.z;
+  }
+  std::cout << "filtered Lemke with B prepared (LemkeMatrix): " << prepared_differ << " of " << problems().size()
+            << " problems differ from forced exact Lemke\n";
 }
 
 // Per-problem times: each problem solved `reps` times by each solver in
@@ -280,7 +320,7 @@ void report_filtered_agreement() {
 void report_per_problem_times() {
   constexpr int reps = 100;
   using clock = std::chrono::steady_clock;
-  std::vector<double> filtered, reused, doubles, siconos, ratios, reused_ratios;
+  std::vector<double> filtered, reused, prepared, preparing, doubles, siconos, ratios, reused_ratios, prepared_ratios;
   Eigen::VectorXd z;
   fixel::LemkeResult result;  // solve_lcp_lemke into a caller's result, as the stepper does
   for (const auto& pr : problems()) {
@@ -295,11 +335,17 @@ void report_per_problem_times() {
       fixel::solve_lcp_lemke(pr.B, pr.b, result);
       benchmark::DoNotOptimize(result);
     }));
+    prepared.push_back(time([&] {
+      fixel::solve_lcp_lemke(pr.prepared, pr.b, result);
+      benchmark::DoNotOptimize(result);
+    }));
+    preparing.push_back(time([&] { benchmark::DoNotOptimize(fixel::LemkeMatrix(pr.B)); }));
     doubles.push_back(time([&] { benchmark::DoNotOptimize(double_lemke(pr.Bd, pr.bd, z)); }));
 #ifdef FIXEL_HAVE_SICONOS
     siconos.push_back(time([&] { benchmark::DoNotOptimize(siconos_lemke(pr.Bd, pr.bd, z)); }));
     ratios.push_back(filtered.back() / siconos.back());
     reused_ratios.push_back(reused.back() / siconos.back());
+    prepared_ratios.push_back(prepared.back() / siconos.back());
 #endif
   }
   auto median = [](std::vector<double> v) {
@@ -323,6 +369,10 @@ void report_per_problem_times() {
             << " us\n"
             << "  the same into a reused result  " << median(reused) << " us " << range(reused) << "; " << mean(reused)
             << " us\n"
+            << "  the same with B prepared (LemkeMatrix)  " << median(prepared) << " us " << range(prepared) << "; "
+            << mean(prepared) << " us\n"
+            << "  preparing B (LemkeMatrix)  " << median(preparing) << " us " << range(preparing) << "; "
+            << mean(preparing) << " us\n"
             << "  double Lemke          " << median(doubles) << " us " << range(doubles) << "; " << mean(doubles)
             << " us\n";
 #ifdef FIXEL_HAVE_SICONOS
@@ -331,7 +381,9 @@ void report_per_problem_times() {
             << "  filtered / Siconos: median of the ratios " << median(ratios) << ", range " << range(ratios)
             << "; ratio of the medians " << median(filtered) / median(siconos) << "\n"
             << "  into a reused result / Siconos: median of the ratios " << median(reused_ratios) << ", range "
-            << range(reused_ratios) << "; ratio of the medians " << median(reused) / median(siconos) << "\n";
+            << range(reused_ratios) << "; ratio of the medians " << median(reused) / median(siconos) << "\n"
+            << "  with B prepared / Siconos: median of the ratios " << median(prepared_ratios) << ", range "
+            << range(prepared_ratios) << "; ratio of the medians " << median(prepared) / median(siconos) << "\n";
 #endif
 }
 

@@ -90,12 +90,18 @@ TimeSteppingLcp build_lcp(const Scene& scene) {
   lcp.P.topRows(nc) = W.Wn.transpose() * Minv;
   lcp.P.middleRows(nc, 2 * nc) = W.Wf.transpose() * Minv;
 
+  set_lcp_state(lcp, scene);
+  return lcp;
+}
+
+void set_lcp_state(TimeSteppingLcp& lcp, const Scene& scene) {
+  const int nc = scene.num_contacts();
+  const ContactMatrices& W = lcp.W;
   VectorQ psi(nc);
   for (int i = 0; i < nc; ++i) psi[i] = scene.fixels[i].gap;
-  lcp.a = VectorQ::Zero(n);
+  lcp.a = VectorQ::Zero(4 * nc);
   lcp.a.head(nc) = W.Wn.transpose() * scene.body.velocity + psi / scene.time_step;
   lcp.a.segment(nc, 2 * nc) = W.Wf.transpose() * scene.body.velocity;
-  return lcp;
 }
 
 VectorQ TimeSteppingLcp::b(const VectorQ& p_ext) const { return P * p_ext + a; }

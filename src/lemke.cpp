@@ -8,6 +8,7 @@
 #include "fixel/filter.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/lemke_filtered.h"
+#include "fixel/internal/lemke_prepared.h"
 
 namespace fixel {
 
@@ -178,7 +179,11 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots) 
   return result;
 }
 
-void solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, LemkeResult& result, int max_pivots) {
+namespace {
+
+// Both overloads: `prepared` is B's cached parts, or null.
+void solve(const MatrixQ& B, const internal::PreparedLemkeMatrix* prepared, const VectorQ& b, LemkeResult& result,
+           int max_pivots) {
   const int n = static_cast<int>(b.size());
   if (B.rows() != n || B.cols() != n)
     throw InputError("B", std::to_string(B.rows()) + "x" + std::to_string(B.cols()),
@@ -196,7 +201,7 @@ void solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, LemkeResult& result, in
   }
 
   if (!force_exact()) {
-    if (internal::filtered_lemke(B, b, max_pivots, result)) return;
+    if (internal::filtered_lemke(B, b, max_pivots, result, prepared)) return;
     internal::record_filter(FilterSite::kLemke, 0, 1);  // a pivot interval held zero: the whole run is exact
   }
 
@@ -235,6 +240,39 @@ void solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, LemkeResult& result, in
   if (!is_solution(B, b, result.w, result.z))
     throw InternalError("solve_lcp_lemke: the final basis fails the independent is_solution check");
   result.status = LemkeStatus::kSolved;
+}
+
+}  // namespace
+
+void solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, LemkeResult& result, int max_pivots) {
+  solve(B, nullptr, b, result, max_pivots);
+}
+
+LemkeMatrix::LemkeMatrix(MatrixQ B) {
+  if (B.rows() != B.cols())
+    throw InputError("B", std::to_string(B.rows()) + "x" + std::to_string(B.cols()), "must be square");
+  auto prepared = std::make_shared<internal::PreparedLemkeMatrix>();
+  prepared->B = std::move(B);
+  {
+    internal::Protect guard;
+    prepared->intervals.assign(prepared->B);
+  }
+  prepared->scaled.assign(prepared->B);
+  prepared_ = std::move(prepared);
+}
+
+const MatrixQ& LemkeMatrix::matrix() const { return prepared_->B; }
+
+int LemkeMatrix::size() const { return static_cast<int>(prepared_->B.rows()); }
+
+void solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, LemkeResult& result, int max_pivots) {
+  solve(B.prepared_->B, B.prepared_.get(), b, result, max_pivots);
+}
+
+LemkeResult solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, int max_pivots) {
+  LemkeResult result;
+  solve_lcp_lemke(B, b, result, max_pivots);
+  return result;
 }
 
 }  // namespace fixel

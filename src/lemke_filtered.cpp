@@ -9,6 +9,7 @@
 #include "fixel/internal/lemke_dixon.h"
 #include "fixel/internal/lemke_exact.h"
 #include "fixel/internal/lemke_interval.h"
+#include "fixel/internal/lemke_prepared.h"
 #include "fixel/internal/lemke_scaled.h"
 #include "fixel/internal/lemke_tie.h"
 
@@ -50,8 +51,14 @@ ExactWorkspace& exact_workspace() {
 // without settling (the decision is then proved or made exactly).
 class FilteredRun {
  public:
-  FilteredRun(const MatrixQ& B, const VectorQ& b, bool settle_z0_by_values = false)
-      : B_(B), b_(b), n_(static_cast<int>(b.size())), T_(B, b), settle_z0_(settle_z0_by_values) {}
+  FilteredRun(const MatrixQ& B, const VectorQ& b, bool settle_z0_by_values = false,
+              const PreparedLemkeMatrix* prepared = nullptr)
+      : B_(B),
+        b_(b),
+        n_(static_cast<int>(b.size())),
+        prepared_(prepared),
+        T_(prepared != nullptr ? IntervalTableau(prepared->intervals, b) : IntervalTableau(B, b)),
+        settle_z0_(settle_z0_by_values) {}
   ~FilteredRun() {
     record_filter(FilterSite::kLemke, certified_, exact_);
     record_filter(FilterSite::kLemkeTie, ties_proved_, ties_unproved_);
@@ -205,7 +212,10 @@ class FilteredRun {
   const ScaledProblem& problem() {
     ExactWorkspace& ws = exact_workspace();
     if (!scaled_) {
-      ws.problem.assign(B_, b_);
+      if (prepared_ != nullptr)
+        ws.problem.assign(prepared_->scaled, b_);
+      else
+        ws.problem.assign(B_, b_);
       scaled_ = true;
     }
     return ws.problem;
@@ -345,6 +355,7 @@ class FilteredRun {
   const MatrixQ& B_;
   const VectorQ& b_;
   int n_;
+  const PreparedLemkeMatrix* prepared_;
   Protect guard_;  // the interval tableau's whole life
   IntervalTableau T_;
   bool scaled_ = false, tableau_current_ = false;
@@ -358,14 +369,15 @@ class FilteredRun {
 
 }  // namespace
 
-bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result) {
+bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result,
+                    const PreparedLemkeMatrix* prepared) {
   {
     // One run at a time: the runs share per-thread storage.
-    FilteredRun run(B, b, true);
+    FilteredRun run(B, b, true, prepared);
     if (!run.run(max_pivots, result)) return false;
     if (!run.settlement_failed()) return true;
   }
-  FilteredRun run(B, b, false);
+  FilteredRun run(B, b, false, prepared);
   return run.run(max_pivots, result);
 }
 

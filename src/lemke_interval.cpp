@@ -1,23 +1,55 @@
 #include "fixel/internal/lemke_interval.h"
 
+#include <algorithm>
+
 namespace fixel::internal {
 
 IntervalTableau::IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())), width_(n_ + 2) {
+  start();
+  for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < n_; ++j)
+      if (mpq_sgn(B(i, j).backend().data()) != 0) at_slot(i, j) = -enclosure(B(i, j));  // no Rational(0) temporary
+    at_slot(i, n_) = FI(-1);
+    at_slot(i, n_ + 1) = enclosure(b[i]);
+  }
+  keep_initial();
+}
+
+IntervalTableau::IntervalTableau(const IntervalRows& prepared, const VectorQ& b)
+    : n_(static_cast<int>(b.size())), width_(n_ + 2) {
+  start();
+  const FI* row = prepared.rows.data();
+  for (int i = 0; i < n_; ++i, row += n_ + 1) {
+    std::copy(row, row + n_ + 1, &at_slot(i, 0));
+    at_slot(i, n_ + 1) = enclosure(b[i]);
+  }
+  keep_initial();
+}
+
+void IntervalRows::assign(const MatrixQ& B) {
+  n = static_cast<int>(B.rows());
+  rows.assign(static_cast<std::size_t>(n) * (n + 1), FI(0));
+  for (int i = 0; i < n; ++i) {
+    FI* row = &rows[static_cast<std::size_t>(i) * (n + 1)];
+    for (int j = 0; j < n; ++j)
+      if (mpq_sgn(B(i, j).backend().data()) != 0) row[j] = -IntervalTableau::enclosure(B(i, j));
+    row[n] = FI(-1);
+  }
+}
+
+void IntervalTableau::start() {
   T_.assign(static_cast<std::size_t>(n_) * width_, FI(0));
   basis_.resize(n_);
+  for (int i = 0; i < n_; ++i) basis_[i] = i;
   slot_.assign(2 * n_ + 2, -1);
   stamp_.assign(width_, 0);
   forget_pivots();
   // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
   for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
   slot_[rhs()] = n_ + 1;
-  for (int i = 0; i < n_; ++i) {
-    for (int j = 0; j < n_; ++j)
-      if (mpq_sgn(B(i, j).backend().data()) != 0) at_slot(i, j) = -enclosure(B(i, j));  // no Rational(0) temporary
-    at_slot(i, n_) = FI(-1);
-    at_slot(i, n_ + 1) = enclosure(b[i]);
-    basis_[i] = i;
-  }
+}
+
+void IntervalTableau::keep_initial() {
   initial_.resize(T_.size());
   for (std::size_t k = 0; k < T_.size(); ++k) initial_[k] = T_[k].inf();  // width_ = n + 2: ApproxProblem's layout
 }

@@ -18,11 +18,15 @@ Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, in
   VectorQ q = VectorQ::Zero(dof);
   Simulation sim;
   LemkeResult solved;  // reused from step to step
+  // B, P and W depend on the contacts' geometry, the masses and μ, which no
+  // step changes: built and prepared once; each step sets a (ν, ψ).
+  TimeSteppingLcp lcp = build_lcp(state);
+  const LemkeMatrix B(lcp.B);
   for (int k = 0; k < steps; ++k) {
     poll(control, "simulate", k, steps, "steps");
     const VectorQ p = k < static_cast<int>(impulses.size()) ? impulses[k] : VectorQ(VectorQ::Zero(dof));
-    const TimeSteppingLcp lcp = build_lcp(state);
-    solve_lcp_lemke(lcp.B, lcp.b(p), solved);
+    if (k > 0) set_lcp_state(lcp, state);
+    solve_lcp_lemke(B, lcp.b(p), solved);
     if (solved.status != LemkeStatus::kSolved)
       throw UnsupportedError("step " + std::to_string(k + 1), "Lemke ended in " + to_string(solved.status),
                              "and no motion was computed; fixel does not handle this contact situation");

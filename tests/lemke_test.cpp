@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <random>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
 
 #include "fixel/error.h"
 #include "fixel/filter.h"
@@ -431,6 +435,140 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerWithDenominatorsBeyondSixtyFo
     solved += r.status == LemkeStatus::kSolved;
   }
   EXPECT_EQ(solved, 60);  // B positive definite: every LCP has a solution, which Lemke finds
+}
+
+// A prepared matrix (LemkeMatrix) against the bare one: each B prepared
+// once and solved for several b in turn, filtered and forced exact,
+// returned and into one reused result. Every answer must be the bare
+// matrix's forced exact answer, field for field. The problems: seating
+// LCPs of random scenes (three impulses around S each), degenerate PSD
+// problems (ties, zero pivots), and rows whose denominators need more than
+// 64 bits (scaled in GMP integers, not words).
+GTEST_TEST(LemkeMatrix, GivesTheBareMatrixsAnswerForEveryRightHandSide) {
+  std::mt19937_64 rng(2029);
+  std::vector<std::pair<MatrixQ, std::vector<VectorQ>>> problems;
+  const int scenes = test::sanitizer_scaled(20);
+  while (static_cast<int>(problems.size()) < scenes) {
+    const Scene scene = test::random_scene(rng, 3);
+    SeatingSet S;
+    try {
+      S = seating_set(scene);
+    } catch (const Error&) {
+      continue;
+    }
+    const TimeSteppingLcp lcp = build_lcp(scene);
+    std::vector<VectorQ> rhs;
+    for (int k = 0; k < 3; ++k) {
+      VectorQ p = S.apex;
+      for (int j = 0; j < 3; ++j) p -= test::random_rational(rng, -1, 3, 7) * S.generators[j];
+      rhs.push_back(lcp.b(p));
+    }
+    problems.emplace_back(lcp.B, rhs);
+  }
+  std::uniform_int_distribution<int> small(-2, 2), size(1, 6);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = size(rng);
+    MatrixQ A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = Rational(small(rng), 1 + trial % 3);
+    std::vector<VectorQ> rhs(2, VectorQ(n));
+    for (VectorQ& b : rhs)
+      for (int i = 0; i < n; ++i) b[i] = i % 2 ? Rational(0) : Rational(small(rng) - 1, 3);
+    problems.emplace_back(A.transpose() * A, rhs);
+  }
+  const Integer p61 = (Integer(1) << 61) - 1, p31 = (Integer(1) << 31) - 1;
+  for (int trial = 0; trial < 10; ++trial) {
+    const int n = 2 + trial % 4;
+    MatrixQ A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = Rational(Integer(small(rng)), (i + j) % 2 ? p61 : p61 * p31);
+    std::vector<VectorQ> rhs(2, VectorQ(n));
+    for (VectorQ& b : rhs)
+      for (int i = 0; i < n; ++i) b[i] = Rational(Integer(small(rng) - 1), i % 2 ? p31 : Integer(3));
+    problems.emplace_back(A.transpose() * A + MatrixQ::Identity(n, n), rhs);
+  }
+  int solved = 0, unsolved = 0, solves = 0;
+  LemkeResult reused;
+  for (const auto& [B, rhs] : problems) {
+    const LemkeMatrix prepared(B);
+    ASSERT_EQ(prepared.size(), B.rows());
+    ASSERT_EQ(prepared.matrix(), B);
+    for (const VectorQ& b : rhs) {
+      const LemkeResult expected = solve_forced_exact(B, b);
+      // The filtered runs also take the same decisions, on the same
+      // evidence: a prepared tableau that lost anything would show as more
+      // exact fallbacks, even where the fallback restores the answer.
+      FilterCounts bare, twice;
+      for (const bool exact : {false, true}) {
+        ForceExactScope scope(exact);
+        reset_filter_stats();
+        expect_same(solve_lcp_lemke(prepared, b), expected, solves);
+        solve_lcp_lemke(prepared, b, reused);
+        expect_same(reused, expected, solves);
+        if (!exact) twice = filter_stats().at(FilterSite::kLemke);
+      }
+      // The bare run after the prepared ones: its scaled rows must not be
+      // what the prepared run read.
+      {
+        ForceExactScope filtered(false);
+        reset_filter_stats();
+        expect_same(solve_lcp_lemke(B, b), expected, solves);
+        bare = filter_stats().at(FilterSite::kLemke);
+      }
+      EXPECT_EQ(twice.certified, 2 * bare.certified) << "solve " << solves;
+      EXPECT_EQ(twice.fallbacks, 2 * bare.fallbacks) << "solve " << solves;
+      ++(expected.status == LemkeStatus::kSolved ? solved : unsolved);
+      ++solves;
+    }
+  }
+  // Most seating LCPs and PSD problems solve; every one beyond 64 bits does
+  // (B positive definite).
+  EXPECT_GT(solved, 2 * scenes);
+  EXPECT_GE(solves, 3 * scenes + 100);
+}
+
+// One LemkeMatrix shared by two threads, each solving its own right-hand
+// sides: the prepared data is only read, and each thread's answers are the
+// ones it gets alone.
+GTEST_TEST(LemkeMatrix, OneMatrixSolvedFromTwoThreadsGivesEachThreadsOwnAnswers) {
+  std::mt19937_64 rng(2030);
+  TimeSteppingLcp lcp;
+  VectorQ b;
+  while (!random_seating_lcp(rng, lcp, b)) {
+  }
+  const LemkeMatrix prepared(lcp.B);
+  std::vector<VectorQ> rhs;
+  for (int k = 0; k < 8; ++k) rhs.push_back(lcp.b(VectorQ::Constant(3, Rational(-1 - k, 3 + k))));
+  std::vector<LemkeResult> alone;
+  for (const VectorQ& x : rhs) alone.push_back(solve_lcp_lemke(lcp.B, x));
+  std::vector<LemkeResult> first(rhs.size()), second(rhs.size());
+  std::thread t([&] {
+    for (std::size_t k = 0; k < rhs.size(); ++k) first[k] = solve_lcp_lemke(prepared, rhs[k]);
+  });
+  for (std::size_t k = rhs.size(); k-- > 0;) second[k] = solve_lcp_lemke(prepared, rhs[k]);
+  t.join();
+  int solved = 0;
+  for (std::size_t k = 0; k < rhs.size(); ++k) {
+    expect_same(first[k], alone[k], static_cast<int>(k));
+    expect_same(second[k], alone[k], static_cast<int>(k));
+    solved += alone[k].status == LemkeStatus::kSolved;
+  }
+  EXPECT_GT(solved, 0);
+}
+
+GTEST_TEST(LemkeMatrix, RejectsANonSquareMatrixAndAWrongSizedRightHandSide) {
+  try {
+    LemkeMatrix bad(mat({{1, 0}}));
+    FAIL() << "a 1x2 matrix was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1x2"), std::string::npos) << e.what();
+  }
+  const LemkeMatrix B(mat({{2, 1}, {1, 2}}));
+  EXPECT_THROW(solve_lcp_lemke(B, vec({1, -1, 1})), InputError);
+  const LemkeResult r = solve_lcp_lemke(B, vec({-1, -1}));
+  ASSERT_EQ(r.status, LemkeStatus::kSolved);
+  EXPECT_EQ(r.z, vec({Rational(1, 3), Rational(1, 3)}));  // 2z + z = 1 in both rows
+  EXPECT_EQ(r.w, vec({0, 0}));
 }
 
 GTEST_TEST(FilteredLemke, ForcedExactRunsCountNoFilterDecision) {

@@ -2,9 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+#include <vector>
+
 #include "fixel/error.h"
+#include "fixel/filter.h"
 #include "fixel/internal/paper_reference.h"
 #include "fixel/lcp.h"
+#include "fixel/lemke.h"
 #include "fixel/progress.h"
 #include "fixel/scene_json.h"
 #include "fixel/seating.h"
@@ -47,6 +52,45 @@ GTEST_TEST(Simulate, StateCarriesOverBetweenStepsConsistently) {
     }
     EXPECT_EQ(s.gaps, gaps);
   }
+}
+
+// The stepper builds the LCP once and sets only a (ν, ψ) at each step;
+// the second method builds the whole LCP again from each step's state, as
+// eq. (16)–(19) define it, and solves it forced exact. Every step's
+// impulses must be that LCP's solution, on random scenes over five steps.
+GTEST_TEST(Simulate, EachStepSolvesTheLcpBuiltAfreshFromThatStepsState) {
+  std::mt19937_64 rng(41);
+  int scenes = 0, contact_steps = 0;
+  for (int trial = 0; trial < 200 && scenes < test::sanitizer_scaled(12); ++trial) {
+    const Scene scene = test::random_scene(rng, 3);
+    std::vector<VectorQ> impulses;
+    for (int k = 0; k < 3; ++k)
+      impulses.push_back(vec({test::random_rational(rng, -2, 1, 5), test::random_rational(rng, -2, 1, 5),
+                              test::random_rational(rng, -1, 1, 5)}));
+    Simulation sim;
+    try {
+      sim = simulate(scene, impulses, 5);
+    } catch (const Error&) {
+      continue;  // no seating-type contacts, or a contact situation Lemke does not solve
+    }
+    ++scenes;
+    Scene state = scene;
+    for (std::size_t k = 0; k < sim.steps.size(); ++k) {
+      const TimeSteppingLcp lcp = build_lcp(state);
+      const VectorQ p = k < impulses.size() ? impulses[k] : VectorQ(VectorQ::Zero(3));
+      ForceExactScope exact;
+      const LemkeResult r = solve_lcp_lemke(lcp.B, lcp.b(p));
+      ASSERT_EQ(r.status, LemkeStatus::kSolved) << "scene " << scenes << ", step " << k;
+      const int nc = scene.num_contacts();
+      EXPECT_EQ(sim.steps[k].p_n, r.z.head(nc)) << "scene " << scenes << ", step " << k;
+      EXPECT_EQ(sim.steps[k].p_f, r.z.segment(nc, 2 * nc)) << "scene " << scenes << ", step " << k;
+      contact_steps += !r.z.head(nc).isZero();
+      state.body.velocity = sim.steps[k].velocity;
+      for (int i = 0; i < nc; ++i) state.fixels[i].gap = sim.steps[k].gaps[i];
+    }
+  }
+  EXPECT_EQ(scenes, test::sanitizer_scaled(12));
+  EXPECT_GT(contact_steps, scenes);  // steps where a fixel pushed back, not just free flight
 }
 
 GTEST_TEST(Simulate, RejectsBadStepsAndImpulseLength) {

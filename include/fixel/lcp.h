@@ -53,4 +53,10 @@ struct TimeSteppingLcp {
 /// Builds the time-stepping LCP of a validated scene.
 TimeSteppingLcp build_lcp(const Scene& scene);
 
+/// Sets lcp.a from the scene's velocity ν and gaps ψ, eq. (19): all that
+/// changes from one time step to the next (B, P and W depend on the
+/// contacts' geometry, the masses and μ only). `scene` is the one `lcp`
+/// was built from, or a later state of it with the same fixels.
+void set_lcp_state(TimeSteppingLcp& lcp, const Scene& scene);
+
 }  // namespace fixel

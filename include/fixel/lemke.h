@@ -3,11 +3,16 @@
 /// Exact LCP solving: lexicographic Lemke on a fraction-free integer tableau,
 /// and an independent solution checker.
 
+#include <memory>
 #include <string>
 
 #include "fixel/rational.h"
 
 namespace fixel {
+
+namespace internal {
+struct PreparedLemkeMatrix;
+}
 
 /// How a Lemke run ended. Only kSolved carries a solution.
 enum class LemkeStatus {
@@ -48,6 +53,36 @@ LemkeResult solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots =
 /// answer is the returning overload's, field for field. On a throw,
 /// `result` holds no meaningful answer.
 void solve_lcp_lemke(const MatrixQ& B, const VectorQ& b, LemkeResult& result, int max_pivots = 0);
+
+class LemkeMatrix;
+
+/// solve_lcp_lemke(B.matrix(), b, max_pivots) for a prepared B (below): the
+/// same answer, field for field, and the same exceptions.
+LemkeResult solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, int max_pivots = 0);
+
+/// The same into `result`, as the MatrixQ overload does.
+void solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, LemkeResult& result, int max_pivots = 0);
+
+/// An LCP matrix B prepared once for many solves of LCP(B, b) with
+/// different b, as a time-stepper's steps or a scene's impulses have: B's
+/// rationals, with each entry's interval enclosure and B's rows scaled to
+/// integers cached beside them. A solve then does only b's share of that
+/// work (`docs/performance.md`, "Lemke"). Copies share the prepared data,
+/// which is never modified, so one LemkeMatrix may be solved from several
+/// threads.
+class LemkeMatrix {
+ public:
+  /// Throws InputError if B is not square.
+  explicit LemkeMatrix(MatrixQ B);
+  /// B, exactly as given.
+  const MatrixQ& matrix() const;
+  /// B's size n.
+  int size() const;
+
+ private:
+  friend void solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, LemkeResult& result, int max_pivots);
+  std::shared_ptr<const internal::PreparedLemkeMatrix> prepared_;
+};
 
 /// Exact check that w = Bz + b, w ≥ 0, z ≥ 0 and wᵀz = 0.
 bool is_solution(const MatrixQ& B, const VectorQ& b, const VectorQ& w, const VectorQ& z);

@@ -18,7 +18,9 @@ namespace fixel::internal {
 // Records the decisions in FilterSite::kLemke. A comparison of the z0 row
 // that the intervals leave open may be settled by the final values' exact
 // signs (a second run when they show it wrong): same answer.
-bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result);
+// `prepared`, when not null, is B's cached parts (a LemkeMatrix of B).
+bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result,
+                    const PreparedLemkeMatrix* prepared = nullptr);
 
 // The same run without its final values, for the benchmark that measures
 // what the pivot path alone costs: `result` gets status and pivots (w and

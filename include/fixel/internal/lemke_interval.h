@@ -11,6 +11,15 @@
 
 namespace fixel::internal {
 
+// B's part of the first interval tableau: row i is [−B(i, ·), −1], n + 1
+// enclosures. It depends on B alone, so a prepared matrix (LemkeMatrix)
+// keeps one for all its solves. Needs a Protect scope to assign.
+struct IntervalRows {
+  int n = 0;
+  std::vector<FI> rows;  // row-major, n + 1 per row
+  void assign(const MatrixQ& B);
+};
+
 // The same tableau in intervals (Gauss–Jordan on [I, −B, −e | b]): every
 // entry encloses the exact tableau's. It is the integer tableau of
 // src/lemke.cpp up to positive row and column scalings, which change no
@@ -20,6 +29,8 @@ namespace fixel::internal {
 class IntervalTableau {
  public:
   IntervalTableau(const MatrixQ& B, const VectorQ& b);
+  // The same first tableau, B's part copied from `prepared` (made from B).
+  IntervalTableau(const IntervalRows& prepared, const VectorQ& b);
 
   // Doubles near the first tableau's entries, for guesses only.
   ApproxProblem approx() const { return {initial_.data(), n_}; }
@@ -56,9 +67,14 @@ class IntervalTableau {
   void pivot(int r, int s);
 
  private:
+  friend struct IntervalRows;  // encloses B as the first tableau does
   FI& at_slot(int i, int k) { return T_[static_cast<std::size_t>(i) * width_ + k]; }
 
   void forget_pivots();
+  // The state every first tableau starts from; T_ sized and zero.
+  void start();
+  // initial_ from T_.
+  void keep_initial();
 
   // Applies the pivots made since slot k was last read, in order, with the
   // operations of a Gauss–Jordan step on that column (row r times the

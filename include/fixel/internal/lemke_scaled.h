@@ -18,23 +18,16 @@ namespace fixel::internal {
 inline mpz_ptr mp(Integer& x) { return x.backend().data(); }
 inline mpz_srcptr mp(const Integer& x) { return x.backend().data(); }
 
-// [A | b] = [I, −B, −e | b] with equation i scaled by L_i > 0, the lcm of
-// the denominators of B's row i, and the b column also by δ > 0, the lcm of
-// the denominators of the L_i·b_i: every entry an integer. Scaling an
-// equation changes no solution of the systems the runs solve, and scaling
-// the b column by δ scales every basic value by δ. b's denominators are
-// kept out of the L_i on purpose: on the seating LCPs they are 25–30 bits
-// larger than B's on the friction rows, and the same few bits for every
-// row, so one δ is much smaller than their share of every L_i.
-class ScaledProblem {
+// B's part of the scaled tableau: row i of [−B, −e] times L_i > 0, the lcm
+// of the denominators of B's row i. It depends on B alone, so a prepared
+// matrix (LemkeMatrix) keeps one for all its solves.
+class ScaledMatrix {
  public:
-  void assign(const MatrixQ& B, const VectorQ& b) {
-    n_ = static_cast<int>(b.size());
-    width_ = n_ + 2;  // the w columns (L_i e_i) are not stored
+  void assign(const MatrixQ& B) {
+    n_ = static_cast<int>(B.rows());
+    width_ = n_ + 1;  // the z columns and z0's
     A_.resize(static_cast<std::size_t>(n_) * width_);
     scale_.resize(n_);
-    Integer& factor = factor_;
-    mpz_set_ui(mp(delta_), 1);
     word_factors_.resize(n_);
     words_row_ = -1;
     for (int i = 0; i < n_; ++i) {
@@ -46,56 +39,22 @@ class ScaledProblem {
           if (!mpz_divisible_p(mp(L), q)) mpz_lcm(mp(L), mp(L), q);  // denominators repeat
         }
         for (int j = 0; j < n_; ++j) {
-          scaled(at(i, n_ + j), B(i, j), L, factor);
+          scaled(at(i, n_ + j), B(i, j), L, factor_);
           mpz_neg(mp(at(i, n_ + j)), mp(at(i, n_ + j)));
         }
       }
       mpz_neg(mp(at(i, 2 * n_)), mp(L));
-      // δ: the denominator of L_i·b_i is den(b_i)/gcd(den(b_i), L_i); a
-      // row with the L and den(b) of the previous one adds nothing (the
-      // seating LCPs' friction rows come in such pairs, and b_i = 0 has 1).
-      mpz_srcptr d = mpq_denref(b[i].backend().data());
-      if (mpz_cmp_ui(d, 1) == 0 || (i > 0 && same_rhs_scaling(b, i))) continue;
-      mpz_gcd(mp(factor), d, mp(L));
-      mpz_divexact(mp(factor), d, mp(factor));
-      if (!mpz_divisible_p(mp(delta_), mp(factor))) mpz_lcm(mp(delta_), mp(delta_), mp(factor));
-    }
-    for (int i = 0; i < n_; ++i) {
-      // L_i·δ·b_i = num(b_i)·(L_i·δ/den(b_i)), the division exact; the
-      // factor of the previous row when L and den(b) are its.
-      const auto* q = b[i].backend().data();
-      if (mpq_sgn(q) == 0) {
-        mpz_set_ui(mp(at(i, 2 * n_ + 1)), 0);
-        continue;
-      }
-      if (i == 0 || !same_rhs_scaling(b, i) || mpq_sgn(b[i - 1].backend().data()) == 0) {
-        mpz_mul(mp(factor), mp(scale_[i]), mp(delta_));
-        mpz_divexact(mp(factor), mp(factor), mpq_denref(q));
-      }
-      mpz_mul(mp(at(i, 2 * n_ + 1)), mpq_numref(q), mp(factor));
     }
   }
 
   int n() const { return n_; }
   // L_i.
   const Integer& scale(int i) const { return scale_[i]; }
-  // δ, the b column's own factor.
-  const Integer& rhs_factor() const { return delta_; }
-  // L_i · (i, var) of [A | b], times δ for var = b; var 0..n−1 w, n..2n−1 z,
-  // 2n z0, 2n+1 b.
-  const Integer& entry(int i, int var) const {
-    if (var < n_) return var == i ? scale_[i] : zero_;
-    return A_[static_cast<std::size_t>(i) * width_ + (var - n_)];
-  }
+  // L_i · (i, var) for var n..2n−1 (z) and 2n (z0).
+  const Integer& entry(int i, int var) const { return A_[static_cast<std::size_t>(i) * width_ + (var - n_)]; }
 
  private:
   Integer& at(int i, int var) { return A_[static_cast<std::size_t>(i) * width_ + (var - n_)]; }  // var ≥ n
-
-  // Whether row i has the L and den(b) of row i − 1.
-  bool same_rhs_scaling(const VectorQ& b, int i) const {
-    return mpz_cmp(mp(scale_[i]), mp(scale_[i - 1])) == 0 &&
-           mpz_cmp(mpq_denref(b[i].backend().data()), mpq_denref(b[i - 1].backend().data())) == 0;
-  }
 
   // Row i scaled with the factors of row i − 1 when that row was scaled in
   // words and B's row i has its denominators, one by one (the seating
@@ -157,11 +116,97 @@ class ScaledProblem {
   int n_ = 0, width_ = 0;
   std::vector<Integer> A_;
   std::vector<Integer> scale_;
-  Integer delta_;
-  Integer zero_;
   Integer factor_;
   std::vector<unsigned long> word_factors_;  // of row words_row_, the last row scaled in words (−1: none)
   int words_row_ = -1;
+};
+
+// [A | b] = [I, −B, −e | b] with equation i scaled by L_i > 0, the lcm of
+// the denominators of B's row i, and the b column also by δ > 0, the lcm of
+// the denominators of the L_i·b_i: every entry an integer. Scaling an
+// equation changes no solution of the systems the runs solve, and scaling
+// the b column by δ scales every basic value by δ. b's denominators are
+// kept out of the L_i on purpose: on the seating LCPs they are 25–30 bits
+// larger than B's on the friction rows, and the same few bits for every
+// row, so one δ is much smaller than their share of every L_i.
+//
+// B's part is its own ScaledMatrix, or a prepared one it points to, which
+// must then outlive every use of this problem until the next assign.
+class ScaledProblem {
+ public:
+  ScaledProblem() = default;
+  ScaledProblem(const ScaledProblem&) = delete;  // matrix_ may point into *this
+  ScaledProblem& operator=(const ScaledProblem&) = delete;
+
+  void assign(const MatrixQ& B, const VectorQ& b) {
+    own_.assign(B);
+    matrix_ = &own_;
+    assign_rhs(b);
+  }
+  // B's part prepared already (the same B as a ScaledMatrix::assign(B)).
+  void assign(const ScaledMatrix& prepared, const VectorQ& b) {
+    matrix_ = &prepared;
+    assign_rhs(b);
+  }
+
+  int n() const { return n_; }
+  // L_i.
+  const Integer& scale(int i) const { return matrix_->scale(i); }
+  // δ, the b column's own factor.
+  const Integer& rhs_factor() const { return delta_; }
+  // L_i · (i, var) of [A | b], times δ for var = b; var 0..n−1 w, n..2n−1 z,
+  // 2n z0, 2n+1 b.
+  const Integer& entry(int i, int var) const {
+    if (var < n_) return var == i ? matrix_->scale(i) : zero_;
+    if (var == 2 * n_ + 1) return rhs_[i];
+    return matrix_->entry(i, var);
+  }
+
+ private:
+  void assign_rhs(const VectorQ& b) {
+    n_ = static_cast<int>(b.size());
+    rhs_.resize(n_);
+    Integer& factor = factor_;
+    mpz_set_ui(mp(delta_), 1);
+    for (int i = 0; i < n_; ++i) {
+      // δ: the denominator of L_i·b_i is den(b_i)/gcd(den(b_i), L_i); a
+      // row with the L and den(b) of the previous one adds nothing (the
+      // seating LCPs' friction rows come in such pairs, and b_i = 0 has 1).
+      mpz_srcptr d = mpq_denref(b[i].backend().data());
+      if (mpz_cmp_ui(d, 1) == 0 || (i > 0 && same_rhs_scaling(b, i))) continue;
+      mpz_gcd(mp(factor), d, mp(scale(i)));
+      mpz_divexact(mp(factor), d, mp(factor));
+      if (!mpz_divisible_p(mp(delta_), mp(factor))) mpz_lcm(mp(delta_), mp(delta_), mp(factor));
+    }
+    for (int i = 0; i < n_; ++i) {
+      // L_i·δ·b_i = num(b_i)·(L_i·δ/den(b_i)), the division exact; the
+      // factor of the previous row when L and den(b) are its.
+      const auto* q = b[i].backend().data();
+      if (mpq_sgn(q) == 0) {
+        mpz_set_ui(mp(rhs_[i]), 0);
+        continue;
+      }
+      if (i == 0 || !same_rhs_scaling(b, i) || mpq_sgn(b[i - 1].backend().data()) == 0) {
+        mpz_mul(mp(factor), mp(scale(i)), mp(delta_));
+        mpz_divexact(mp(factor), mp(factor), mpq_denref(q));
+      }
+      mpz_mul(mp(rhs_[i]), mpq_numref(q), mp(factor));
+    }
+  }
+
+  // Whether row i has the L and den(b) of row i − 1.
+  bool same_rhs_scaling(const VectorQ& b, int i) const {
+    return mpz_cmp(mp(scale(i)), mp(scale(i - 1))) == 0 &&
+           mpz_cmp(mpq_denref(b[i].backend().data()), mpq_denref(b[i - 1].backend().data())) == 0;
+  }
+
+  int n_ = 0;
+  ScaledMatrix own_;
+  const ScaledMatrix* matrix_ = &own_;
+  std::vector<Integer> rhs_;  // L_i·δ·b_i
+  Integer delta_;
+  Integer zero_;
+  Integer factor_;
 };
 
 }  // namespace fixel::internal
