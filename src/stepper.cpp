@@ -1,5 +1,7 @@
 #include "fixel/stepper.h"
 
+#include <utility>
+
 #include "fixel/error.h"
 #include "fixel/lcp.h"
 #include "fixel/progress.h"
@@ -21,7 +23,7 @@ Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, in
   // B, P and W depend on the contacts' geometry, the masses and μ, which no
   // step changes: built and prepared once; each step sets a (ν, ψ).
   TimeSteppingLcp lcp = build_lcp(state);
-  const LemkeMatrix B(lcp.B);
+  const LemkeMatrix B(std::move(lcp.B));  // lcp.b() needs only P and a
   for (int k = 0; k < steps; ++k) {
     poll(control, "simulate", k, steps, "steps");
     const VectorQ p = k < static_cast<int>(impulses.size()) ? impulses[k] : VectorQ(VectorQ::Zero(dof));

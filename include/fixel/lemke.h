@@ -67,7 +67,8 @@ void solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, LemkeResult& result
 /// different b, as a time-stepper's steps or a scene's impulses have: B's
 /// rationals, with each entry's interval enclosure and B's rows scaled to
 /// integers cached beside them. A solve then does only b's share of that
-/// work (`docs/performance.md`, "Lemke"). Copies share the prepared data,
+/// work (`docs/performance.md`, "Lemke"). Preparing costs about one solve
+/// with the bare B, so it pays from the second solve. Copies share the prepared data,
 /// which is never modified, so one LemkeMatrix may be solved from several
 /// threads.
 class LemkeMatrix {
