@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
@@ -385,6 +386,11 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
 }  // namespace
 
 std::unique_ptr<RegionTarget> guaranteed_target(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) {
+  internal::check_rigid_seating_set(S, b0);
+  for (const Polyhedron& piece : G.pieces)
+    if (piece.dim != 3)
+      throw InputError("G", "a piece of dimension " + std::to_string(piece.dim),
+                       "a region target needs a rigid body's guaranteed set (dof 3)");
   return std::make_unique<GuaranteedTarget>(G, S, b0);
 }
 

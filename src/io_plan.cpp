@@ -116,11 +116,9 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
       out << " (no pair of fixels can hold the part on its way to the seat; any magnitude)";
     else if (plan.J_approach_verdict)
       out << ": " << plan.J_approach_verdict->why_not;
-    else if (*plan.in_J_approach == RegionStatus::kOut)
-      out << " (at a corner: no push of its fan is in J')";
     else
-      out << ": a corner, whose fan of pushes is not wholly in J' nor wholly out (points on either side have "
-             "one push each)";
+      out << " (a corner: not every push of its fan is in J'; push at a smooth point for a verdict with its "
+             "reason)";
     out << "\n";
   } else if (plan.approach) {
     out << "  sustained push, approach-aware J': not judged: " << plan.J_approach_note << "\n";

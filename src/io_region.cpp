@@ -145,7 +145,7 @@ std::string region_text(const Scene& scene, const Region& region) {
     out << ", resolution " << to_string(*region.resolution);
   else if (region.resolution_length)
     out << ", resolution length " << internal::readable(*region.resolution_length)
-        << " m (every stretch left is at most this long)";
+        << " m (each sub-piece left partial is at most this long)";
   out << ", pusher mu " << to_string(region.pusher_mu) << ")\n";
   out << "  IN means \"" << meaning << "\""
       << (region.target == "S"   ? ": some outcome of the one-step model seats"

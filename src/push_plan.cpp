@@ -66,7 +66,11 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
       try {
         if (plan.corner) {  // a fan: J' is not convex, so its rays do not decide it
           const auto approach = approach_target(*plan.approach);
-          plan.in_J_approach = point_status(scene, *approach, curve, u, Rational(0));
+          // As for J and S at a point: IN when the whole fan is in J', else
+          // OUT. The region's PARTIAL (its stand-ins leave the fan
+          // undecided) is no claim that some push is in J'.
+          const RegionStatus fan = point_status(scene, *approach, curve, u, Rational(0));
+          plan.in_J_approach = fan == RegionStatus::kIn ? RegionStatus::kIn : RegionStatus::kOut;
         } else {
           ApproachVerdict v;
           ApproachHold hold;

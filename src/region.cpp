@@ -300,11 +300,17 @@ const std::vector<EdgeFamily>& families(const Rational& mu) {
   return mu == 0 ? normal : edges;
 }
 
-void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {
-  target.check_pusher(mu);
+void check_region_scene(const Scene& scene) {
   if (!scene.body.boundary)
     throw SceneError("body.boundary", "", "is missing: the pushing region needs the part's outline");
-  if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no boundary to push on");
+  if (scene.body.dof != 3)
+    throw SceneError("body.dof", std::to_string(scene.body.dof),
+                     "a point mass has no boundary to push on: the pushing region needs a rigid body (dof 3)");
+}
+
+void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {
+  check_region_scene(scene);
+  target.check_pusher(mu);
   if (mu < 0) throw InputError("RegionOptions.pusher_mu", to_string(mu), "must be >= 0");
 }
 
@@ -316,6 +322,7 @@ bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
 }
 
 std::unique_ptr<RegionTarget> step_target(const Scene& scene, const SeatingSet& S, const GuaranteedSet* G) {
+  check_region_scene(scene);  // before a target is built from S: a point mass's S has two dimensions
   if (G) return guaranteed_target(*G, S, scene.background_impulse);
   return seating_target(S, scene.background_impulse);
 }

@@ -7,6 +7,7 @@
 #include <boost/range/iterator_range.hpp>
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "fixel/error.h"
 #include "fixel/filter.h"
@@ -371,7 +372,17 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
 
 }  // namespace
 
+void internal::check_rigid_seating_set(const SeatingSet& S, const VectorQ& b0) {
+  // Rows of another length would be read past their end by the region.
+  bool rigid = S.dof == 3 && b0.size() == 3;
+  for (const Halfspace& h : S.halfspaces) rigid = rigid && h.a.size() == 3;
+  if (!rigid)
+    throw InputError("S", "dof " + std::to_string(S.dof) + ", b0 of " + std::to_string(b0.size()) + " components",
+                     "a region target needs a rigid body's seating set (dof 3) and a three-component b0");
+}
+
 std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0) {
+  internal::check_rigid_seating_set(S, b0);
   return std::make_unique<SeatingTarget>(S, b0);
 }
 

@@ -37,6 +37,18 @@ grep -q "<svg" "$tmp/p.svg" || { echo "FAIL: no svg"; fail=1; }
 expect 0 '"method": "sample"' -- "$fixel" sample "$src/data/scenes/blob.json" --points 16 --json
 expect 0 'pusher mu 7/10' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --pusher-mu 7/10
 expect 2 'body.boundary: is missing' -- "$fixel" region "$src/data/scenes/example2.json"
+# A point mass (dof 2) is a scene error for every region question, with or
+# without an outline: these crashed (exit 139) before the scene was checked
+# ahead of the target.
+expect 2 'body.boundary: is missing' -- "$fixel" region "$src/data/scenes/example1.json"
+cat > "$tmp/point_mass_outline.json" <<'SCENE'
+{"time_step": "1", "body": {"dof": 2, "mass": "1", "boundary": [{"type": "polyline", "points": [["0", "0"], ["2", "0"], ["2", "2"], ["0", "2"], ["0", "0"]]}]},
+ "fixels": [{"point": ["0", "1"], "normal": ["1", "0"], "mu": "1/5", "gap": "3/10"}, {"point": ["1", "0"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"}]}
+SCENE
+for args in "region" "region --exact" "region --guaranteed" "sample" "push-plan --at 0:1/2"; do
+  # shellcheck disable=SC2086
+  expect 2 'body.dof: 2 a point mass has no boundary to push on' -- "$fixel" $args "$tmp/point_mass_outline.json"
+done
 expect 2 '--resolution: 0 must be > 0' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 0
 expect 2 '--pusher-mu: -1 must be >= 0' -- "$fixel" region "$src/data/scenes/blob.json" --pusher-mu -1
 expect 2 '--cone: diagonal not in {tight,paper}' -- "$fixel" region "$src/data/scenes/blob.json" --cone diagonal
@@ -265,7 +277,7 @@ expect 0 '"relative_width"' -- "$fixel" push-plan "$src/data/scenes/blob.json" -
 expect 0 'sustained push: seats and stays: in' -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
 expect 0 "approach-aware J': in (no pair" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
 expect 0 "approach-aware J': out: fixels[0] and fixels[2] can hold" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:17/8
-expect 0 "approach-aware J': partial: a corner" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:2
+expect 0 "approach-aware J': out (a corner: not every push of its fan is in J'" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:2
 expect 2 '--at' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:100
 
 # An unwritable picture path is refused before any report is printed.
@@ -420,7 +432,7 @@ d = json.load(sys.stdin)
 assert d["resolution"] is None and d["resolution_length"] == "1/4", (d["resolution"], d.get("resolution_length"))
 assert d["piece_widths"] == ["1/16", "1/8", "1/8", "1/8", "1/8"], d["piece_widths"]' ||
   { echo "FAIL: region --resolution-length --json"; fail=1; }
-expect 0 'resolution length 1/4 = 0.25 m (every stretch left is at most this long)' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4
+expect 0 'resolution length 1/4 = 0.25 m (each sub-piece left partial is at most this long)' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4
 expect 2 '--resolution: 0.5mm is a curve-parameter width, not a length: give a length in m with --resolution-length' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution 0.5mm
 expect 2 '--resolution-length: 0 must be > 0' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 0
 expect 2 '--resolution-length: 1/4 cannot be combined with --exact' -- "$fixel" region "$src/data/scenes/polygon.json" --resolution-length 1/4 --exact

@@ -60,7 +60,7 @@ GTEST_TEST(PushPlan, JPrimeStatusesAreInsideJAndAgreeWithTheJPrimeRegion) {
     if (jp == RegionStatus::kIn) {
       EXPECT_EQ(j, RegionStatus::kIn) << to_string(u);
     }
-    if (j == RegionStatus::kOut && !plan.corner) {
+    if (j == RegionStatus::kOut) {  // J' ⊆ J, at smooth points and at corners (IN = the whole fan)
       EXPECT_EQ(jp, RegionStatus::kOut) << to_string(u);
     }
     in += jp == RegionStatus::kIn;
@@ -98,11 +98,21 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
   EXPECT_EQ(approach.at("hold").at("t"), "0");
   EXPECT_EQ(approach.at("t_star"), "15-1*sqrt(226)");
   EXPECT_EQ(doc.at("corner"), false);
-  // At the corner u = 2 the fan is classified as the J′ region does.
+  // At the corner u = 2 a status is for the whole fan, as for J and S: IN
+  // only when all of it is in J'. The J' region leaves this fan PARTIAL
+  // (undecided between its stand-ins), which is no claim that some push is
+  // in J', so the plan says OUT: not every push of the fan is in J' (nor
+  // in J).
   const PushPlan corner = plan_push(scene, 0, Rational(2), false);
   EXPECT_TRUE(corner.corner);
   EXPECT_FALSE(corner.J_approach_verdict.has_value());
-  EXPECT_EQ(corner.in_J_approach, RegionStatus::kPartial);
+  EXPECT_EQ(point_status(scene, *approach_target(*corner.approach), 0, Rational(2), Rational(0)),
+            RegionStatus::kPartial);
+  EXPECT_EQ(corner.in_J, RegionStatus::kOut);
+  EXPECT_EQ(corner.in_J_approach, RegionStatus::kOut);
+  EXPECT_NE(push_plan_text(scene, corner).find("approach-aware J': out (a corner: not every push of its fan is in J'"),
+            std::string::npos)
+      << push_plan_text(scene, corner);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "filter_test_util.h"
 #include "fixel/error.h"
@@ -11,6 +12,7 @@
 #include "fixel/io.h"
 #include "fixel/lcp.h"
 #include "fixel/region_target.h"
+#include "fixel/scene_json.h"
 #include "fixel/sustained.h"
 #include "test_util.h"
 
@@ -397,6 +399,37 @@ GTEST_TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
   const Scene plain = scene_file("example2");
   EXPECT_THROW(compute_region(plain, seating_set(plain), RegionOptions{}), SceneError);
   EXPECT_THROW(sample_region(scene, S, 0), InputError);
+}
+
+// A point mass (dof 2) has a two-dimensional S. Every region question is a
+// SceneError naming body.dof, asked before a target is built from S (the
+// target read S's rows as three-dimensional and crashed), and S itself is
+// no region target.
+GTEST_TEST(Region, APointMassIsASceneErrorForEveryRegionQuestionAndItsSIsNoTarget) {
+  const Scene point_mass = parse_scene(R"({"time_step": "1",
+    "body": {"dof": 2, "mass": "1", "boundary": [{"type": "polyline",
+      "points": [["0", "0"], ["2", "0"], ["2", "2"], ["0", "2"], ["0", "0"]]}]},
+    "fixels": [{"point": ["0", "1"], "normal": ["1", "0"], "mu": "1/5", "gap": "3/10"},
+               {"point": ["1", "0"], "normal": ["0", "1"], "mu": "1/10", "gap": "1/5"}]})");
+  const SeatingSet S = seating_set(point_mass);
+  ASSERT_EQ(S.dof, 2);
+  auto names_dof = [](const auto& ask) {
+    try {
+      ask();
+      ADD_FAILURE() << "no error";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("body.dof"), std::string::npos) << e.what();
+    }
+  };
+  names_dof([&] { compute_region(point_mass, S, RegionOptions{}); });
+  names_dof([&] { sample_region(point_mass, S, 4); });
+  names_dof([&] { point_status(point_mass, S, 0, Rational(1, 2), Rational(0)); });
+  EXPECT_THROW(seating_target(S, point_mass.background_impulse), InputError);
+  EXPECT_THROW(seating_target(S, VectorQ::Zero(3)), InputError);
+  // A rigid body's S with a two-component b0 is no target either.
+  const Scene rigid = scene_file("example2_rounded");
+  EXPECT_THROW(seating_target(seating_set(rigid), VectorQ::Zero(2)), InputError);
+  EXPECT_NO_THROW(seating_target(seating_set(rigid), rigid.background_impulse));
 }
 
 }  // namespace

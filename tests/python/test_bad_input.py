@@ -222,3 +222,24 @@ def test_none_never_crashes(example2, tmp_path):
     ]:
         with pytest.raises(TypeError):
             call()
+
+
+def test_point_mass_region_questions_raise_scene_errors():
+    # These killed the interpreter (a segfault in the core) before the scene
+    # was checked ahead of the target: a point mass has no boundary to push on.
+    example1 = fixel.Scene.load(SCENE_DIR / "example1.json")
+    with pytest.raises(fixel.SceneError, match="body.boundary"):
+        fixel.region(example1)
+    d = json.loads((SCENE_DIR / "example1.json").read_text())
+    d["body"]["boundary"] = [{"type": "polyline", "points": [["-3", "-3"], ["3", "-3"], ["3", "3"], ["-3", "3"], ["-3", "-3"]]}]
+    for f in d["fixels"]:
+        f["off_boundary"] = True  # the point mass's contacts are not on this outline
+    point_mass = fixel.Scene.from_dict(d)
+    for ask in (
+        lambda: fixel.region(point_mass),
+        lambda: fixel.region(point_mass, exact=True),
+        lambda: fixel.sample(point_mass, 8),
+        lambda: fixel.push_plan(point_mass, at="0:1/2"),
+    ):
+        with pytest.raises(fixel.SceneError, match="body.dof"):
+            ask()

@@ -35,6 +35,10 @@ constexpr std::size_t kUnplaced = static_cast<std::size_t>(-1);
 // The edge families of a pusher with friction μ: the normal alone for 0.
 const std::vector<EdgeFamily>& families(const Rational& mu);
 
+// The scene checks every region run makes first: an outline, and dof 3
+// (SceneError).
+void check_region_scene(const Scene& scene);
+
 // The checks every region run makes first (InputError, SceneError).
 void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target);
 

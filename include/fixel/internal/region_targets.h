@@ -45,4 +45,8 @@ bool some_combination(const std::array<FI, 3>* gens, std::size_t n, Certified ce
   return false;
 }
 
+// Throws InputError unless S and b0 are a rigid body's (dof 3, rows and b0
+// of three components): the one-step targets read them as such.
+void check_rigid_seating_set(const SeatingSet& S, const VectorQ& b0);
+
 }  // namespace fixel::internal
