@@ -146,11 +146,13 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
   s << "push " << push_name(o) << ", resolution " << to_string(o.resolution) << ", fixel mu " << mu_text(o)
     << ", pusher mu " << to_string(o.pusher_mu) << ", gap " << to_string(o.gap) << " (one-step score)\n";
   const DesignStats& c = r.stats;
-  // With the bound, the counts after "singular" are of the triples scored.
+  // With the bound, the counts after "singular" are of the triples scored;
+  // the singular ones are never scored.
   const std::string of_scored =
-      c.bounded ? " (of the " + std::to_string(c.no_form_closure + c.j_empty + c.regions) + " scored)" : "";
-  s << "dropped: " << c.singular << " with W_n singular, " << c.no_form_closure << " without form closure" << of_scored
-    << "; pruned: " << c.j_empty << " with J empty (score 0, no region); " << c.regions << " regions computed; ";
+      c.bounded ? " of the " + std::to_string(c.no_form_closure + c.j_empty + c.regions) + " scored" : "";
+  s << "dropped: " << c.singular << " with W_n singular (never scored), " << c.no_form_closure << of_scored
+    << " without form closure; pruned: " << c.j_empty << " with J empty (score 0, no region); " << c.regions
+    << " regions computed; ";
   if (c.bounded) s << c.bounded << " never scored (pair bound below the K-th score); ";
   s << c.jobs << " threads, " << std::fixed << std::setprecision(2) << c.seconds << " s\n";
   if (!r.no_layout.empty()) {

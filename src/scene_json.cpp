@@ -2,8 +2,11 @@
 // JSON path in errors.
 #include "fixel/scene_json.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -321,8 +324,15 @@ Scene parse_scene(const std::string& json_text, const std::string& source, RunCo
 }
 
 Scene load_scene(const std::string& path, RunControl* control) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw InputError(path, "", "is a directory, not a scene file");
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot be opened");
+  if (!in) {
+    const int reason = errno;  // the open's (ENOENT, EACCES, ...), when the library set it
+    throw InputError(path, "",
+                     std::string("cannot be opened") + (reason ? std::string(": ") + std::strerror(reason) : ""));
+  }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path, "", "cannot be read");

@@ -109,7 +109,11 @@ for cmd in seat dump verify simulate solutions region sample push; do expect 0 '
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
 expect 2 '--impulse[1]: "x" is not an exact number' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,x,2
-expect 2 'cannot be opened' -- "$fixel" seat "$tmp/missing.json"
+expect 2 'cannot be opened: No such file or directory' -- "$fixel" seat "$tmp/missing.json"
+expect 2 "$tmp: is a directory, not a scene file" -- "$fixel" seat "$tmp"
+# In a batch, a file error names its path once.
+out=$("$fixel" info "$src/data/scenes/example2.json" "$tmp/missing.json" 2>&1 >/dev/null)
+[ "$out" = "fixel: error: $tmp/missing.json: cannot be opened: No such file or directory" ] || { echo "FAIL: batch file error: $out"; fail=1; }
 expect 2 'The following argument was not expected: --bogus' -- "$fixel" seat "$src/data/scenes/example2.json" --bogus
 expect 2 '' -- "$fixel"
 printf '{"name": ' > "$tmp/bad.json"
@@ -358,6 +362,8 @@ expect 4 'time limit reached after' -- "$fixel" design "$src/data/scenes/blob.js
 expect 4 'the pair bound applies up to 1024, so every one of the 11655753980 triples is scored' -- "$fixel" design "$src/data/scenes/polygon.json" --spacing 1/500 --max-seconds 0.5 --quiet
 # The pair bound: same best layout as scoring every triple, most triples never scored.
 expect 0 'never scored (pair bound below the K-th score)' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
+# The singular triples are never scored, so they are not counted "of the scored".
+expect 0 'dropped: 105 with W_n singular (never scored), 1 of the 59 scored without form closure;' -- "$fixel" design "$src/data/scenes/polygon.json" --quiet
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive
 expect 0 '"bounded": 0' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive --json

@@ -259,7 +259,7 @@ def region(
         return r
     if approach not in (False, None):
         raise InputError.make("approach", repr(approach), "needs push='sustained' (J' refines J)")
-    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
+    S = _seating_for(seating, guaranteed, scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = _run(
         lambda c: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits, res_len, c),
@@ -270,6 +270,19 @@ def region(
     return r
 
 
+def _seating_for(seating, guaranteed, scene):
+    """The S a one-step question is asked of: ``seating``, else the one a
+    given GuaranteedSet was built from (G is checked against S), else S of
+    the scene."""
+    from . import GuaranteedSet, SeatingSet, _expect, seating_set
+
+    if seating is not None:
+        return _expect(seating, SeatingSet, "seating")
+    if isinstance(guaranteed, GuaranteedSet):
+        return guaranteed.seating
+    return seating_set(scene)
+
+
 def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None, max_seconds=None):
     """The point-sampling baseline (``fixel sample``): ``points`` per curve.
     ``max_seconds`` and Ctrl-C stop it as in region."""
@@ -278,7 +291,7 @@ def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None, max_sec
     scene = _scene(scene)
     points = whole(points, "points")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
-    S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
+    S = _seating_for(seating, guaranteed, scene)
     g = _guaranteed_impl(guaranteed, scene, S)
     impl = stoppable(lambda c: _fixel.sample_region(scene._impl, S._impl, points, mu, g, c), max_seconds)
     return _region_of(scene, S, impl, "sample", None, None if mu is None else frac(mu))

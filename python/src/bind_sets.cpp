@@ -60,7 +60,10 @@ py::dict step_dict(const StepRecord& s) {
 const GuaranteedSet* guaranteed_of(const py::object& g, const SeatingPtr& S) {
   if (g.is_none()) return nullptr;
   const auto& handle = g.cast<const GuaranteedHandle&>();
-  if (handle.S != S) throw InputError("guaranteed", "G", "belongs to another seating set");
+  if (handle.S != S)
+    throw InputError("guaranteed", "G",
+                     "belongs to another seating set: pass the SeatingSet G was built from (G.seating), or no "
+                     "seating at all");
   return &handle.G;
 }
 

@@ -89,6 +89,8 @@ int run_batch(const std::vector<std::string>& paths, bool json, const std::funct
       std::cout << "== " << path << "\n";
       if (error.empty())
         std::cout << output;
+      else if (error.rfind(path + ":", 0) == 0)  // a file error names the path already
+        std::cerr << "fixel: error: " << error << "\n";
       else
         std::cerr << "fixel: error: " << path << ": " << error << "\n";
     }

@@ -132,6 +132,23 @@ def test_guaranteed_region(polygon):
     assert r.intervals
 
 
+def test_a_guaranteed_set_given_alone_brings_its_own_seating_set(polygon):
+    # fixel.region(scene, guaranteed=G) used to build a new S and refuse G
+    # ("belongs to another seating set"): S is now the one G was built from.
+    G = fixel.guaranteed_set(polygon)
+    given = fixel.region(polygon, resolution="1/16", guaranteed=G)
+    built = fixel.region(polygon, resolution="1/16", guaranteed=True)
+    assert [(i.u0, i.u1, i.status) for i in given.intervals] == [(i.u0, i.u1, i.status) for i in built.intervals]
+    assert given.seating is G.seating
+    sampled = fixel.sample(polygon, 8, guaranteed=G)
+    assert [i.status for i in sampled.intervals] == [
+        i.status for i in fixel.sample(polygon, 8, guaranteed=True).intervals
+    ]
+    # With a seating set of its own, the mismatch says what to pass.
+    with pytest.raises(fixel.InputError, match=r"G\.seating"):
+        fixel.region(polygon, resolution="1/16", guaranteed=G, seating=fixel.seating_set(polygon))
+
+
 def test_files(tmp_path, polygon):
     r = fixel.region(polygon, resolution="1/64")
     fixel.to_svg(tmp_path / "r.svg", r)
