@@ -105,6 +105,10 @@ expect 0 '"validation": {' -- "$fixel" region "$src/data/scenes/polygon.json" --
 expect 0 '"seated": 2' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
 expect 0 'validation (Box2D 2.4' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 1 --time 5
 expect 2 '--validate: -1 must be >= 1' -- "$fixel" region "$src/data/scenes/polygon.json" --validate -1
+# Options the contract nests ([--validate N [--time T]], [--exact [--digits D]]) are refused alone, not ignored.
+expect 2 '--validate: 0 must be >= 1' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 0
+expect 2 '--time requires --validate' -- "$fixel" region "$src/data/scenes/polygon.json" --time 5
+expect 2 '--digits requires --exact' -- "$fixel" region "$src/data/scenes/polygon.json" --digits 5
 for cmd in seat dump verify simulate solutions region sample push; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2
@@ -115,6 +119,12 @@ expect 2 "$tmp: is a directory, not a scene file" -- "$fixel" seat "$tmp"
 out=$("$fixel" info "$src/data/scenes/example2.json" "$tmp/missing.json" 2>&1 >/dev/null)
 [ "$out" = "fixel: error: $tmp/missing.json: cannot be opened: No such file or directory" ] || { echo "FAIL: batch file error: $out"; fail=1; }
 expect 2 'The following argument was not expected: --bogus' -- "$fixel" seat "$src/data/scenes/example2.json" --bogus
+# Parse errors in fixel's own format, readable ranges, and unknown commands named.
+expect 2 'fixel: error: The following argument was not expected: --bogus' -- "$fixel" seat "$src/data/scenes/example2.json" --bogus
+expect 2 'fixel: error: --max-seconds: 0 must be a positive number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds 0
+expect 2 'fixel: error: --max-seconds: abc is not a number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds abc
+expect 2 'fixel: error: bogus: is not a fixel command (seat, dump, simulate' -- "$fixel" bogus
+expect 0 'Usage:' -- "$fixel" region --help
 expect 2 '' -- "$fixel"
 printf '{"name": ' > "$tmp/bad.json"
 expect 2 'is not valid JSON' -- "$fixel" seat "$tmp/bad.json"

@@ -232,6 +232,8 @@ def region(
     if not isinstance(exact, bool):
         raise TypeError(f"exact: {exact!r} is not a bool")
     digits = whole(digits, "digits")
+    if digits != 0 and not exact:
+        raise InputError.make("digits", str(digits), "needs exact=True (it refines the exact region's ends)")
     if push == "sustained":
         from . import sustained_set
 

@@ -89,17 +89,41 @@ void raise(const char* name, const std::string& message, const std::string& fiel
   }
 }
 
+// The core names an option by its C++ home ("RegionOptions.resolution",
+// "simulate(steps)"); Python callers know it by its argument name
+// ("resolution", "steps"). JSON paths (fixels[1].normal) stay as they are.
+std::string argument_name(const std::string& field) {
+  std::string name;
+  if (const auto dot = field.find("Options."); dot != std::string::npos && field.find('(') == std::string::npos)
+    name = field.substr(dot + 8);
+  else if (const auto open = field.find('('); open != std::string::npos && !field.empty() && field.back() == ')')
+    name = field.substr(open + 1, field.size() - open - 2);
+  else
+    return field;
+  if (name == "points_per_curve") return "points";  // fixel.sample(scene, points)
+  if (field == "plan_push(curve)") return "at";     // fixel.push_plan(scene, at="K:U")
+  return name;
+}
+
+// raise() with the field, and the message's leading field, as Python names it.
+void raise_input(const char* name, const InputError& e) {
+  const std::string field = argument_name(e.field());
+  std::string message = e.what();
+  if (field != e.field() && message.rfind(e.field(), 0) == 0) message = field + message.substr(e.field().size());
+  raise(name, message, field, e.value());
+}
+
 void translate(std::exception_ptr p) {
   try {
     if (p) std::rethrow_exception(p);
   } catch (const UnsupportedError& e) {
-    raise("UnsupportedError", e.what(), e.field(), e.value());
+    raise_input("UnsupportedError", e);
   } catch (const SceneError& e) {
-    raise("SceneError", e.what(), e.field(), e.value());
+    raise_input("SceneError", e);
   } catch (const ParseError& e) {
-    raise("ParseError", e.what(), e.field(), e.value());
+    raise_input("ParseError", e);
   } catch (const InputError& e) {
-    raise("InputError", e.what(), e.field(), e.value());
+    raise_input("InputError", e);
   } catch (const StoppedError& e) {
     raise("StoppedError", e.what(), "", "");
   } catch (const Error& e) {

@@ -3,6 +3,8 @@
 #include <memory>
 #include <optional>
 
+#include <string>
+
 #include "cli.h"
 #include "fixel/approach.h"
 #include "fixel/error.h"
@@ -171,12 +173,24 @@ Command add_region(CLI::App& app) {
   cmd->add_flag("--approach", a->approach,
                 "With --push sustained: classify against the approach-aware J' (no pair holds the part on its way "
                 "to the seat, docs/theory.md 10.7)");
-  cmd->add_option("--validate", a->validate, "Run N pushes per IN interval in Box2D (docs/physics.md)");
-  cmd->add_option("--time", a->time_text, "With --validate: hold each push for T time steps h (default 20)");
-  cmd->add_flag("--exact", a->exact,
-                "Exact ends by root isolation instead of subdivision: no partial stretch (docs/theory.md §12)");
-  cmd->add_option("--digits", a->digits,
-                  "With --exact: refine irrational ends to width 10^-D (default 0: as isolated)");
+  auto* validate = cmd->add_option("--validate", a->validate, "Run N pushes per IN interval in Box2D (docs/physics.md)")
+                       ->check(CLI::Validator(
+                           [](std::string& text) {
+                             try {
+                               if (std::stol(text) >= 1) return std::string();
+                             } catch (const std::exception&) {
+                             }
+                             return text + " must be >= 1 (a whole number of pushes per IN interval)";
+                           },
+                           "N >= 1"));
+  // The contract's grammar nests these: [--validate N [--time T]], [--exact [--digits D]].
+  cmd->add_option("--time", a->time_text, "With --validate: hold each push for T time steps h (default 20)")
+      ->needs(validate);
+  auto* exact =
+      cmd->add_flag("--exact", a->exact,
+                    "Exact ends by root isolation instead of subdivision: no partial stretch (docs/theory.md §12)");
+  cmd->add_option("--digits", a->digits, "With --exact: refine irrational ends to width 10^-D (default 0: as isolated)")
+      ->needs(exact);
   add_run_options(cmd, a->run);
   return {cmd, [a] {
             if (a->scene_paths.size() > 1 && !a->svg_path.empty())

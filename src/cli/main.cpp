@@ -85,7 +85,20 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // fixel's own error format; an unknown first word is named as such.
+    std::string what = e.what();
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string names;
+      bool known = false;
+      for (const auto& command : commands) {
+        known = known || command.app->get_name() == argv[1];
+        names += (names.empty() ? "" : ", ") + command.app->get_name();
+      }
+      if (!known) what = std::string(argv[1]) + ": is not a fixel command (" + names + ")";
+    }
+    std::cerr << "fixel: error: " << what << "\nRun with --help for more information.\n";
+    return kExitBadInput;
   }
 
   try {

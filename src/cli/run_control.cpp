@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string>
 
 #include "cli.h"
 #include "fixel/error.h"
@@ -45,7 +46,17 @@ void show_progress(const char* task, long done, long total, const char* unit) {
 
 void add_run_options(CLI::App* cmd, RunOptions& options) {
   cmd->add_option("--max-seconds", options.max_seconds, "Stop with exit 4 after this many seconds (default: no limit)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            double x = 0;
+            try {
+              x = std::stod(text);
+            } catch (const std::exception&) {
+              return text + " is not a number of seconds";
+            }
+            return x > 0 && std::isfinite(x) ? std::string() : text + " must be a positive number of seconds";
+          },
+          "SECONDS > 0"));
   cmd->add_flag("--quiet", options.quiet,
                 "No progress line on stderr (shown on a terminal after 1 s, also while loading a huge part)");
 }

@@ -243,3 +243,31 @@ def test_point_mass_region_questions_raise_scene_errors():
     ):
         with pytest.raises(fixel.SceneError, match="body.dof"):
             ask()
+
+
+@pytest.mark.parametrize(
+    "call, field",
+    [
+        (lambda s: fixel.region(s, resolution=0), "resolution"),
+        (lambda s: fixel.region(s, pusher_mu="-1"), "pusher_mu"),
+        (lambda s: fixel.simulate(s, (-1, -1, -1), steps=0), "steps"),
+        (lambda s: fixel.sample(s, 0), "points"),
+        (lambda s: fixel.push_plan(s, at="7:1/2"), "at"),
+    ],
+)
+def test_option_errors_name_the_python_argument(call, field):
+    # The core names these RegionOptions.resolution, simulate(steps),
+    # sample_region(points_per_curve), plan_push(curve): Python says what the
+    # caller wrote.
+    polygon = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    with pytest.raises(fixel.InputError) as e:
+        call(polygon)
+    assert e.value.field == field
+    assert str(e.value).startswith(field + ":")
+
+
+def test_digits_without_exact_is_refused_not_ignored():
+    polygon = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    with pytest.raises(fixel.InputError) as e:
+        fixel.region(polygon, digits=5)
+    assert e.value.field == "digits"

@@ -249,7 +249,7 @@ def test_bad_input_names_the_field_and_value():
     assert e.value.value == "0"
     with pytest.raises(fixel.InputError) as e:
         fixel.design(HOUSE, top=0)
-    assert (e.value.field, e.value.value) == ("DesignOptions.top", "0")
+    assert (e.value.field, e.value.value) == ("top", "0")  # the argument name, not the C++ option's
     with pytest.raises(TypeError):
         fixel.design(HOUSE, mu=0.1)
     with pytest.raises(fixel.SceneError):
