@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -61,7 +62,19 @@ struct Workspace {
 
 std::atomic<bool> g_words_allowed{true};
 
+// FLINT keeps per-thread caches (its fmpz pool) that only flint_cleanup()
+// frees: a thread that lifted values would leak them when it ends. The main
+// thread's are FLINT's own to free at exit (flint_cleanup_master), after
+// every static that may still hold an fmpz.
+const std::thread::id g_main_thread = std::this_thread::get_id();
+struct FlintThreadCleanup {
+  ~FlintThreadCleanup() {
+    if (std::this_thread::get_id() != g_main_thread) flint_cleanup();
+  }
+};
+
 Workspace& workspace() {
+  thread_local FlintThreadCleanup cleanup;  // constructed first, so destroyed after ws
   thread_local Workspace ws;
   return ws;
 }
