@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "fixel/internal/flint_thread.h"
 #include "fixel/internal/lemke_dixon_words.h"
 #include "fixel/internal/lemke_scaled.h"
 
@@ -62,19 +63,8 @@ struct Workspace {
 
 std::atomic<bool> g_words_allowed{true};
 
-// FLINT keeps per-thread caches (its fmpz pool) that only flint_cleanup()
-// frees: a thread that lifted values would leak them when it ends. The main
-// thread's are FLINT's own to free at exit (flint_cleanup_master), after
-// every static that may still hold an fmpz.
-const std::thread::id g_main_thread = std::this_thread::get_id();
-struct FlintThreadCleanup {
-  ~FlintThreadCleanup() {
-    if (std::this_thread::get_id() != g_main_thread) flint_cleanup();
-  }
-};
-
 Workspace& workspace() {
-  thread_local FlintThreadCleanup cleanup;  // constructed first, so destroyed after ws
+  free_flint_caches_at_thread_exit();  // first, so FLINT's caches go after ws
   thread_local Workspace ws;
   return ws;
 }

@@ -17,6 +17,7 @@
 #include <algorithm>
 
 #include "fixel/error.h"
+#include "fixel/internal/flint_thread.h"
 #include "fixel/internal/polynomial.h"
 
 namespace fixel::internal {
@@ -128,6 +129,7 @@ void irrational_roots(const fmpz_poly_t f, const Rational& a, const Rational& b,
 }  // namespace
 
 std::vector<AlgebraicReal> real_roots(const std::vector<Polynomial>& polys, const Rational& a, const Rational& b) {
+  free_flint_caches_at_thread_exit();
   if (!(a < b)) throw InputError("interval", to_string(a) + ", " + to_string(b), "must have a < b");
   std::vector<std::vector<Integer>> factors;  // distinct irreducible factors, positive leading coefficient
   const bool unit = a == 0 && b == 1;         // Descartes' exclusion test applies
@@ -181,6 +183,7 @@ std::vector<AlgebraicReal> real_roots(const std::vector<Polynomial>& polys, cons
 }
 
 bool is_root(const AlgebraicReal& x, const Polynomial& p) {
+  free_flint_caches_at_thread_exit();
   const std::vector<Integer> c = primitive_integer(p);
   if (c.empty()) return true;
   if (x.is_rational()) return sign_at(c, x.lo) == 0;
@@ -192,6 +195,7 @@ bool is_root(const AlgebraicReal& x, const Polynomial& p) {
 }
 
 Polynomial gcd(const Polynomial& p, const Polynomial& q) {
+  free_flint_caches_at_thread_exit();
   QPoly P, Q, G;
   to_flint(p, P.p);
   to_flint(q, Q.p);

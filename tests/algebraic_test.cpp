@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "fixel/error.h"
 #include "fixel/internal/root_isolation.h"
 
@@ -85,6 +87,37 @@ GTEST_TEST(Algebraic, AnAffineImageKeepsTheRootExact) {
   EXPECT_EQ(compare(y, Rational(3829, 1000)), -1);
   EXPECT_TRUE(internal::is_root(roots[0], Polynomial{-4, 0, 2}));
   EXPECT_FALSE(internal::is_root(roots[0], Polynomial{-3, 0, 1}));
+}
+
+// Root isolation in a thread that then ends, as a Python thread pool runs
+// it: the roots are the main thread's, and FLINT's per-thread caches (Arb's
+// constants among them) are freed with the thread (LeakSanitizer in CI's
+// sanitizer build reports them otherwise).
+GTEST_TEST(Algebraic, RootsIsolatedInAThreadThatEndsAreTheMainThreadsAndLeaveNothingBehind) {
+  // x³ − 3x + 1: three irrational roots 2cos(2πk/9) in (−2, 2), near
+  // −1.879, 0.347 and 1.532.
+  const Polynomial cubic{1, -3, 0, 1};
+  const auto here = real_roots({cubic}, Rational(-2), Rational(2));
+  ASSERT_EQ(here.size(), 3u);
+  std::vector<AlgebraicReal> there;
+  Polynomial common;
+  bool root_there = false;
+  std::thread worker([&] {
+    there = real_roots({cubic}, Rational(-2), Rational(2));
+    common = internal::gcd(Polynomial{-2, 1, 1}, Polynomial{-1, 1});  // (x + 2)(x − 1) and x − 1
+    root_there = internal::is_root(there[1], Polynomial{2, -6, 0, 2});
+  });
+  worker.join();
+  ASSERT_EQ(there.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(there[i].poly, ints({1, -3, 0, 1}));
+    EXPECT_EQ(there[i].lo, here[i].lo);  // the same isolating interval
+    EXPECT_EQ(there[i].hi, here[i].hi);
+  }
+  EXPECT_EQ(compare(there[1], Rational(347, 1000)), 1);  // 2cos(4π/9) = 0.3472…
+  EXPECT_EQ(compare(there[1], Rational(348, 1000)), -1);
+  EXPECT_EQ(common, (Polynomial{-1, 1}));
+  EXPECT_TRUE(root_there);
 }
 
 }  // namespace
