@@ -171,7 +171,8 @@ std::array<int, 3> triple_at(long n, long index) {
 }
 
 void check_design(const Scene& part, const DesignOptions& o) {
-  if (part.body.dof != 3) throw SceneError("body.dof", "2", "fixture design needs a rigid body (dof 3)");
+  if (part.body.dof != 3)
+    throw SceneError("body.dof", "2", "is a point mass: fixture design needs a rigid body (dof 3)");
   boundary_of(part);
   if (o.resolution <= 0) throw InputError("DesignOptions.resolution", to_string(o.resolution), "must be > 0");
   if (o.mu < 0) throw InputError("DesignOptions.mu", to_string(o.mu), "must be >= 0");

@@ -114,6 +114,29 @@ DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, co
   return d;
 }
 
+void check_candidate_list(const std::vector<DesignCandidate>& candidates, const std::string& source) {
+  if (candidates.size() > 10000)
+    throw InputError(source, std::to_string(candidates.size()) + " entries", "is more than 10000");
+  // Sorted by point (exact), equal points become neighbours: O(n log n).
+  std::vector<std::size_t> order(candidates.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto before = [&](std::size_t i, std::size_t j) {
+    const Vec2 &a = candidates[i].point, &b = candidates[j].point;
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return i < j;
+  };
+  std::sort(order.begin(), order.end(), before);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const DesignCandidate &first = candidates[order[k - 1]], &again = candidates[order[k]];
+    if (first.point.x != again.point.x || first.point.y != again.point.y) continue;
+    throw InputError(source + "[" + std::to_string(order[k]) + "]",
+                     "curve " + std::to_string(again.curve) + ", u " + to_string(again.u),
+                     "is the same boundary point as " + source + "[" + std::to_string(order[k - 1]) +
+                         "]: a layout would put two fixels there");
+  }
+}
+
 std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::optional<Rational>& spacing) {
   const Boundary& b = boundary_of(part);
   if (spacing && *spacing <= 0) throw InputError("boundary_candidates(spacing)", to_string(*spacing), "must be > 0");

@@ -1,6 +1,9 @@
 // Fixture design input and output: the candidate file, `fixel design --json`,
 // the text report and the SVG of the best layouts (docs/design.md).
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -99,12 +102,20 @@ std::vector<DesignCandidate> parse_candidates(const Scene& part, const std::stri
     out.push_back(candidate_at(part, static_cast<int>(boost::multiprecision::numerator(k).convert_to<long>()),
                                parse_rational(u.get<std::string>(), field + ".u"), field));
   }
+  check_candidate_list(out);
   return out;
 }
 
 std::vector<DesignCandidate> load_candidates(const Scene& part, const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw InputError(path, "", "is a directory, not a candidate file");
+  errno = 0;
   std::ifstream in(path);
-  if (!in) throw InputError("load_candidates(path)", path, "cannot be read");
+  if (!in) {
+    const int reason = errno;  // the open's (ENOENT, EACCES, ...), when the library set it
+    throw InputError(path, "",
+                     std::string("cannot be opened") + (reason ? std::string(": ") + std::strerror(reason) : ""));
+  }
   std::stringstream buffer;
   buffer << in.rdbuf();
   return parse_candidates(part, buffer.str(), path);

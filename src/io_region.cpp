@@ -92,7 +92,9 @@ std::string region_json(const Scene& scene, const Region& region) {
       j["end"] = point_json(at.end_A);
       j["arc_length"] = at.arc_length;
       j["push_direction"] =
-          at.push_direction_A ? json::array({(*at.push_direction_A)[0], (*at.push_direction_A)[1]}) : json(nullptr);
+          at.push_direction_A
+              ? json::array({(*at.push_direction_A)[0] + 0.0, (*at.push_direction_A)[1] + 0.0})  // -0.0 shown as 0.0
+              : json(nullptr);
     }
     if (!r.magnitude_set.empty()) {
       json set = json::array();

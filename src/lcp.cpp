@@ -36,6 +36,7 @@ void require_determined_fixture(const Scene& scene) {
 }
 
 ContactMatrices contact_matrices(const Scene& scene) {
+  check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
   require_determined_fixture(scene);
   const int dof = scene.body.dof, nc = scene.num_contacts();
   // The one-step model is not monotone in μ: an interval has no single

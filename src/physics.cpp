@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
@@ -36,7 +37,11 @@ constexpr double kContactOffset = kFixelRadius + 1.5 * kSlop;
 // Engine inputs are floats: a value outside float's range is bad input, not
 // a silent infinity (and converting it would be undefined behaviour).
 float engine_float(double x, const std::string& field) {
-  if (!(std::abs(x) < 1e30)) throw InputError(field, std::to_string(x), "is outside the engine's float range");
+  if (!(std::abs(x) < 1e30)) {
+    std::ostringstream shown;  // 2.8e+300, not std::to_string's 300 digits
+    shown << x;
+    throw InputError(field, shown.str(), "is outside the engine's float range (|x| < 1e30)");
+  }
   return static_cast<float>(x);
 }
 
@@ -225,8 +230,12 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   if (options.time <= 0) throw InputError("PushOptions.time", to_string(options.time), "must be > 0");
   if (options.steps_per_h < 1000)
     throw InputError("PushOptions.steps_per_h", std::to_string(options.steps_per_h), "must be >= 1000 (dt <= h/1000)");
-  if (!std::isfinite(w.fx) || !std::isfinite(w.fy) || !std::isfinite(w.m))
-    throw InputError("push(wrench)", "non-finite", "must be finite");
+  if (!std::isfinite(w.fx) || !std::isfinite(w.fy) || !std::isfinite(w.m)) {
+    std::ostringstream shown;
+    shown << "(" << w.fx << ", " << w.fy << ", " << w.m << ")";
+    throw InputError("push(wrench)", shown.str(), "has a component that is not finite");
+  }
+  check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
   const PartPolygon poly = part_polygon(scene);
   Engine e;
   PushResult r;

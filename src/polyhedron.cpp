@@ -287,6 +287,11 @@ Polyhedron project_out_x(const LiftedSystem& s) {
 }
 
 Magnitudes ray_magnitudes(const Polyhedron& P, const VectorQ& b0, const VectorQ& g) {
+  const auto dimension = !P.closed.empty() ? P.closed[0].a.size() : !P.strict.empty() ? P.strict[0].a.size() : -1;
+  for (const auto& [v, name] : {std::pair<const VectorQ&, const char*>{b0, "b0"}, {g, "g"}})
+    if (dimension >= 0 && v.size() != dimension)
+      throw InputError(name, std::to_string(v.size()) + " components",
+                       "where the polyhedron is in " + std::to_string(dimension) + " dimensions");
   Magnitudes m;
   m.empty = false;
   m.lo = 0;

@@ -111,6 +111,10 @@ RegionStatus status_at(RegionContext& ctx, const Boundary& b, const std::vector<
 RegionStatus point_status(const Scene& scene, RegionTarget& target, int curve, const Rational& u, const Rational& mu,
                           Magnitudes* magnitudes) {
   internal::check_region_inputs(scene, mu, target);
+  const int curves = static_cast<int>(scene.body.boundary->curves.size());
+  if (curve < 0 || curve >= curves)
+    throw InputError("curve", std::to_string(curve),
+                     "is not a curve of the boundary (it has " + std::to_string(curves) + ")");
   internal::RegionContext ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = nullptr;
   return internal::status_at(ctx, *scene.body.boundary, internal::joins(*scene.body.boundary), curve, u, magnitudes);

@@ -42,7 +42,7 @@ void check_friction(const Rational& lo, const std::optional<Rational>& hi, const
 
 void check_length(const VectorQ& v, int dof, const std::string& path) {
   if (v.size() != dof)
-    throw SceneError(path, std::to_string(v.size()) + " entries", "must have dof = " + std::to_string(dof));
+    throw SceneError(path, std::to_string(v.size()) + " entries", "but the body has dof " + std::to_string(dof));
 }
 
 }  // namespace
@@ -91,6 +91,13 @@ void check_fixels_on_boundary(const Scene& scene) {
 }
 
 void validate_scene(const Scene& scene) {
+  check_scene_values(scene);
+  for (std::size_t i = 0; i < scene.fixels.size(); ++i)
+    check_unit_normal(scene.fixels[i].n_A, "fixels[" + std::to_string(i) + "].normal");
+  check_fixels_on_boundary(scene);
+}
+
+void check_scene_values(const Scene& scene) {
   check_positive(scene.time_step, "time_step");
   const Body& b = scene.body;
   if (b.dof != 2 && b.dof != 3)
@@ -101,13 +108,11 @@ void validate_scene(const Scene& scene) {
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
     const std::string path = "fixels[" + std::to_string(i) + "]";
     const Fixel& f = scene.fixels[i];
-    check_unit_normal(f.n_A, path + ".normal");
     check_friction(f.mu, f.mu_hi, path + ".mu");
     check_nonnegative(f.gap, path + ".gap");
   }
   check_friction(scene.pusher_mu, scene.pusher_mu_hi, "pusher.mu");
   check_length(scene.background_impulse, b.dof, "background_impulse");
-  check_fixels_on_boundary(scene);
 }
 
 }  // namespace fixel

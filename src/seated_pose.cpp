@@ -123,7 +123,8 @@ double internal::approx(const QuadraticIrrational& x) {
 SeatedPose seated_pose(const Scene& scene) {
   if (!scene.body.boundary)
     throw SceneError("body.boundary", "", "is missing: the seated pose needs the part's outline");
-  if (scene.body.dof != 3) throw SceneError("body.dof", "2", "a point mass has no seated pose to rotate into");
+  if (scene.body.dof != 3)
+    throw SceneError("body.dof", "2", "is a point mass, which has no seated pose to rotate into");
   const int nc = scene.num_contacts();
   bool all_closed = true;
   for (const auto& f : scene.fixels) all_closed = all_closed && f.gap == 0;

@@ -96,6 +96,9 @@ VectorQ SeatingSystem::linear_part(const VectorQ& p_ext) const { return K_inv * 
 VectorQ SeatingSystem::threshold() const { return -(K_inv * a); }
 
 Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g) {
+  for (const auto& [v, name] : {std::pair<const VectorQ&, const char*>{b0, "b0"}, {g, "g"}})
+    if (v.size() != S.dof)
+      throw InputError(name, std::to_string(v.size()) + " components", "where S has dof " + std::to_string(S.dof));
   Magnitudes m;
   m.empty = false;
   m.lo = 0;

@@ -10,7 +10,7 @@ namespace fixel {
 
 void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet* G,
                           const Rational& theta, const std::optional<VectorQ>& impulse) {
-  if (S.dof != 3) throw InputError("svg(path)", path, "the S/G picture needs dof 3");
+  if (S.dof != 3) throw InputError("S.dof", std::to_string(S.dof), "is a point mass's: the S/G picture needs dof 3");
   // The window: the apex and the tips apex + 2 r of every ray, in (px, py).
   Rational x0 = S.apex[0], x1 = S.apex[0], y0 = S.apex[1], y1 = S.apex[1];
   for (const auto& r : S.rays) {

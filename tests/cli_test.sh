@@ -123,6 +123,10 @@ expect 2 'The following argument was not expected: --bogus' -- "$fixel" seat "$s
 expect 2 'fixel: error: The following argument was not expected: --bogus' -- "$fixel" seat "$src/data/scenes/example2.json" --bogus
 expect 2 'fixel: error: --max-seconds: 0 must be a positive number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds 0
 expect 2 'fixel: error: --max-seconds: abc is not a number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds abc
+# A limit past what the clock can hold is no limit (1e10 s once stopped the run before it began).
+expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --json --max-seconds 1e10
+expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --json --max-seconds inf
+expect 2 'fixel: error: --max-seconds: nan must be a positive number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds nan
 expect 2 'fixel: error: bogus: is not a fixel command (seat, dump, simulate' -- "$fixel" bogus
 expect 0 'Usage:' -- "$fixel" region --help
 expect 2 '' -- "$fixel"
@@ -358,6 +362,10 @@ echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}, {"curv
 expect 0 '"triple": [' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
 expect 0 '"singular": 2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
 expect 0 '#1 fixels [0] curve 0 u=1/4 [1] curve 0 u=3/4 [2] curve 0 u=9/2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --jobs 2
+# Two candidates at one point (u = 1/4 written twice) would put two fixels there; a missing file says why.
+echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}, {"curve": 0, "u": "0.25"}]}' > "$tmp/house_dup.json"
+expect 2 'candidates[2]: curve 0, u 1/4 is the same boundary point as candidates[0]' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_dup.json"
+expect 2 'cannot be opened: No such file or directory' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/none.json"
 expect 0 'wrote' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --svg "$tmp/house.svg"
 echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}]}' > "$tmp/two.json"
 expect 0 'no layout: only 2 candidates: a layout needs three fixels' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json"

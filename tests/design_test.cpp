@@ -267,6 +267,54 @@ GTEST_TEST(Design, BoundaryCandidatesAvoidCornersAndFollowTheSpacing) {
   EXPECT_EQ(blob.size(), 24u);  // a smooth outline has no corner to skip
 }
 
+// The house's bottom runs over u in [0, 1] of its one polyline curve, so
+// u = 1/4 given twice, or as "0.25", is one boundary point.
+GTEST_TEST(Design, TwoCandidatesAtOneBoundaryPointAreRefusedNamingTheLater) {
+  const Scene part = house();
+  for (const char* text : {R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
+                                               {"curve": 0, "u": "1/4"}]})",
+                           R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
+                                               {"curve": 0, "u": "0.25"}]})"}) {
+    try {
+      parse_candidates(part, text);
+      FAIL() << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "candidates[2]");
+      EXPECT_NE(std::string(e.what()).find("same boundary point as candidates[0]"), std::string::npos) << e.what();
+    }
+  }
+  // Distinct points pass, and check_candidate_list alone says the same.
+  auto distinct = house_candidates(part);
+  EXPECT_NO_THROW(check_candidate_list(distinct));
+  distinct.push_back(distinct[1]);
+  EXPECT_THROW(check_candidate_list(distinct), InputError);
+  std::vector<DesignCandidate> many(10001, distinct[0]);
+  try {
+    check_candidate_list(many);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "candidates");  // the count first, before any comparison
+  }
+}
+
+GTEST_TEST(Design, AMissingCandidateFileSaysWhyAndADirectoryIsNamed) {
+  const Scene part = house();
+  const std::string missing = std::string(FIXEL_SOURCE_DIR) + "/data/no_such_candidates.json";
+  try {
+    load_candidates(part, missing);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), missing);
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
+  }
+  try {
+    load_candidates(part, std::string(FIXEL_SOURCE_DIR) + "/data");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
+}
+
 GTEST_TEST(Design, BadInputNamesTheFieldAndValue) {
   const Scene part = house();
   try {

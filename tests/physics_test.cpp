@@ -289,5 +289,25 @@ GTEST_TEST(Physics, AStoppedValidationSaysHowManyOfItsPushesRan) {
   }
 }
 
+// A scene built in code with a massless part once ran: Box2D took it for a
+// static body. The engine's input is checked like any analysis's.
+GTEST_TEST(Physics, AHandBuiltSceneWithABadValueIsASceneErrorAndANonFiniteWrenchIsShown) {
+  Scene massless = square();
+  massless.body.mass = 0;
+  try {
+    push(massless, Wrench{1, 0, 0});
+    ADD_FAILURE() << "a massless part was pushed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.field(), "body.mass");
+  }
+  try {
+    push(square(), Wrench{std::nan(""), 0, 0});
+    ADD_FAILURE() << "a NaN wrench was pushed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "push(wrench)");
+    EXPECT_EQ(e.value(), "(nan, 0, 0)");
+  }
+}
+
 }  // namespace
 }  // namespace fixel::physics

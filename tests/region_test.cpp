@@ -424,6 +424,17 @@ GTEST_TEST(Region, APointMassIsASceneErrorForEveryRegionQuestionAndItsSIsNoTarge
   names_dof([&] { compute_region(point_mass, S, RegionOptions{}); });
   names_dof([&] { sample_region(point_mass, S, 4); });
   names_dof([&] { point_status(point_mass, S, 0, Rational(1, 2), Rational(0)); });
+  // A curve that does not exist is named as the bad value (not u).
+  const Scene polygon = scene_file("polygon");
+  for (const int curve : {-1, 1, 99}) {
+    try {
+      point_status(polygon, seating_set(polygon), curve, Rational(0), Rational(0));
+      ADD_FAILURE() << curve;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "curve");
+      EXPECT_EQ(e.value(), std::to_string(curve));
+    }
+  }
   EXPECT_THROW(seating_target(S, point_mass.background_impulse), InputError);
   EXPECT_THROW(seating_target(S, VectorQ::Zero(3)), InputError);
   // A rigid body's S with a two-component b0 is no target either.

@@ -5,8 +5,13 @@
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/paper_reference.h"
+#include "fixel/outcomes.h"
 #include "fixel/scene_json.h"
+#include "fixel/stepper.h"
 #include "test_util.h"
+
+#include <functional>
+#include <tuple>
 
 namespace fixel {
 namespace {
@@ -45,6 +50,58 @@ GTEST_TEST(SeatingSet, Example1HFormIsTheTwoEdgesOfTheCone) {
       const Rational a = (d[0] - Rational(1, 10) * d[1]) / det, b = (d[1] - Rational(1, 5) * d[0]) / det;
       EXPECT_EQ(S.contains(p), a >= 0 && b >= 0) << i << "," << j;
     }
+}
+
+GTEST_TEST(SeatingSet, ARayOfTheWrongLengthIsAnInputErrorNamingIt) {
+  const SeatingSet S = seating_set(test::scene_file("example2"));
+  const VectorQ three = test::v3(0, -1, 0), two = test::v2(1, 2);
+  EXPECT_NO_THROW(ray_magnitudes(S, three, three));  // the right lengths are answered
+  for (const auto& [b0, g, field] : {std::make_tuple(two, three, "b0"), std::make_tuple(three, two, "g")}) {
+    try {
+      ray_magnitudes(S, b0, g);
+      FAIL() << field;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), field);
+      EXPECT_EQ(e.value(), "2 components");
+    }
+  }
+}
+
+// A scene built in code skips the parser's checks; the analyses check the
+// values they read (they once read past a short vector, or divided by h = 0
+// in a way no fixel::Error reported).
+GTEST_TEST(SeatingSet, AHandBuiltSceneWithABadValueIsASceneErrorNamingTheField) {
+  const Scene good = test::scene_file("example2");
+  struct Case {
+    const char* field;
+    void (*spoil)(Scene&);
+  };
+  const Case cases[] = {
+      {"body.velocity", [](Scene& s) { s.body.velocity = VectorQ(); }},
+      {"time_step", [](Scene& s) { s.time_step = 0; }},
+      {"body.mass", [](Scene& s) { s.body.mass = 0; }},
+      {"body.inertia", [](Scene& s) { s.body.inertia = -1; }},
+      {"body.dof", [](Scene& s) { s.body.dof = 4; }},
+      {"fixels[1].gap", [](Scene& s) { s.fixels[1].gap = -1; }},
+      {"background_impulse", [](Scene& s) { s.background_impulse = VectorQ(2); }},
+  };
+  for (const Case& c : cases) {
+    Scene bad = good;
+    c.spoil(bad);
+    const std::function<void()> calls[] = {
+        [&] { seating_set(bad); },
+        [&] { simulate(bad, {VectorQ::Zero(3)}, 1); },
+        [&] { enumerate_outcomes(bad, VectorQ::Zero(3)); },
+    };
+    for (const auto& call : calls) {
+      try {
+        call();
+        ADD_FAILURE() << c.field;
+      } catch (const SceneError& e) {
+        EXPECT_EQ(e.field(), c.field);
+      }
+    }
+  }
 }
 
 GTEST_TEST(SeatingSet, ContainsPaperExample2Impulse) {

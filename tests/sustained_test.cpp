@@ -129,6 +129,18 @@ Scene curved_square() {
       {"point": ["33/50", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "1/50"}]})");
 }
 
+GTEST_TEST(SustainedSet, AHandBuiltSceneWithABadValueIsASceneErrorNamingTheField) {
+  Scene bad = scene_file("polygon");
+  bad.body.velocity = VectorQ();
+  try {
+    sustained_set(bad);
+    ADD_FAILURE() << "a scene with no velocity was analysed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.field(), "body.velocity");
+    EXPECT_EQ(e.value(), "0 entries");
+  }
+}
+
 GTEST_TEST(SeatedPose, NeedsABoundary) { EXPECT_THROW(seated_pose(scene_file("example2")), SceneError); }
 
 // The same hand-built seat with the bottom edge given as a cubic B-spline

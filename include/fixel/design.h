@@ -131,8 +131,14 @@ std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::o
 /// Throws InputError naming `field` (e.g. "candidates[2].u").
 DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, const std::string& field);
 
+/// Checks a list of candidates given by the caller: at most 10000, and no
+/// two at the same boundary point (a layout would put two fixels there).
+/// Throws InputError naming the later entry, e.g. "candidates[3]".
+void check_candidate_list(const std::vector<DesignCandidate>& candidates, const std::string& source = "candidates");
+
 /// Parses a candidate file {"candidates": [{"curve": k, "u": ".."}, ...]}.
-/// Throws ParseError for malformed JSON and InputError naming the entry.
+/// Throws ParseError for malformed JSON and InputError naming the entry
+/// (check_candidate_list included).
 std::vector<DesignCandidate> parse_candidates(const Scene& part, const std::string& json_text,
                                               const std::string& source = "candidates");
 /// Reads and parses a candidate file.

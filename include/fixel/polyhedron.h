@@ -60,6 +60,7 @@ struct LiftedSystem {
 Polyhedron project_out_x(const LiftedSystem& system);
 
 /// T = {τ > 0 : b0 + τ g ∈ P}, exact (an interval; strict rows give open ends).
+/// Throws InputError when b0 or g differs in length from P's rows.
 Magnitudes ray_magnitudes(const Polyhedron& P, const VectorQ& b0, const VectorQ& g);
 
 }  // namespace fixel

@@ -1,7 +1,12 @@
 #pragma once
 /// @file
 /// Cancellation, time limit and progress for loops whose length comes from
-/// the input (simulate's steps, sample's points, region's subdivision). The
+/// the input. Polled by simulate, enumerate_outcomes, guaranteed_set,
+/// compute_region (RegionOptions::control), sample_region, plan_push,
+/// parse_scene and load_scene (task "load", through make_boundary,
+/// check_simple_loop and mass_properties), the design search (design,
+/// design_batch, DesignSearch::start, through DesignOptions::control), and
+/// physics::push and physics::validate_region (PushOptions::control). The
 /// library only polls; installing signal handlers and exiting is the
 /// caller's business (the CLI sets `cancel` from its SIGINT handler).
 
@@ -9,6 +14,7 @@
 #include <chrono>
 #include <functional>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "fixel/error.h"
@@ -21,7 +27,7 @@ enum class StopReason { kInterrupted, kTimeLimit };
 /// Thrown by RunControl::poll when the run is cancelled or past its
 /// deadline. Not an InputError (the input was fine) and not an
 /// InternalError; `what()` says what was done, e.g. "simulate: interrupted
-/// after 1200 of 100000000 steps".
+/// after 1200 of 100000000 steps; no result".
 class StoppedError : public Error {
  public:
   StoppedError(StopReason reason, const std::string& message, long done, long total)
@@ -49,6 +55,27 @@ struct RunControl {
   std::function<void(const char* task, long done, long total, const char* unit)> on_progress;
   std::chrono::milliseconds interval{1000};
   Clock::time_point start = Clock::now();
+
+  /// A limit at or beyond this (about 32 years), +∞ included, sets no
+  /// deadline: steady_clock's nanoseconds would overflow past 292 years,
+  /// and a deadline before now would stop the run at once.
+  static constexpr double kNoLimitSeconds = 1e9;
+
+  /// Sets `deadline` to `seconds` (s, > 0) after `from`, or none for a limit
+  /// of kNoLimitSeconds or more. Throws InputError naming `field` for a
+  /// limit that is not > 0 (NaN included).
+  void set_time_limit(double seconds, const std::string& field = "max_seconds", Clock::time_point from = Clock::now()) {
+    if (!(seconds > 0)) {
+      std::ostringstream shown;  // 0, -2.5, nan: not std::to_string's 0.000000
+      shown << seconds;
+      throw InputError(field, shown.str(), "must be a positive number of seconds");
+    }
+    if (seconds >= kNoLimitSeconds) {
+      deadline.reset();
+      return;
+    }
+    deadline = from + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  }
 
   /// Throws StoppedError if cancelled or past the deadline; reports progress
   /// when due. `unit` names the work ("steps", "points", "segments").

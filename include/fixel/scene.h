@@ -92,4 +92,12 @@ void check_fixels_on_boundary(const Scene& scene);
 /// dof and W_n nonsingular belong to the analyses that need them.)
 void validate_scene(const Scene& scene);
 
+/// validate_scene without the unit normals and the outline check: the cheap
+/// checks that every analysis built on contact_matrices (seating_set,
+/// simulate, enumerate_outcomes, guaranteed_set, ...), sustained_set and
+/// physics::push run first, so that a scene built in code with a wrong
+/// value is a SceneError, never a crash. (Fixture design builds scenes whose
+/// normals are inward but not of unit length; the analyses accept them.)
+void check_scene_values(const Scene& scene);
+
 }  // namespace fixel

@@ -39,7 +39,8 @@ struct SeatingSet {
 };
 
 /// Ray test: T(g) = {τ > 0 : b0 + τ g ∈ S}, exact from the H-form, one facet
-/// at a time. The ray hits S iff the result is not empty.
+/// at a time. The ray hits S iff the result is not empty. Throws InputError
+/// when b0 or g does not have S.dof components.
 Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g);
 
 /// Computes S for a validated scene (n_c == dof, W_n nonsingular), for

@@ -54,7 +54,8 @@ void add_run_options(CLI::App* cmd, RunOptions& options) {
             } catch (const std::exception&) {
               return text + " is not a number of seconds";
             }
-            return x > 0 && std::isfinite(x) ? std::string() : text + " must be a positive number of seconds";
+            // inf, and any limit of 10^9 s or more, sets none (RunControl::set_time_limit).
+            return x > 0 ? std::string() : text + " must be a positive number of seconds";
           },
           "SECONDS > 0"));
   cmd->add_flag("--quiet", options.quiet,
@@ -62,12 +63,7 @@ void add_run_options(CLI::App* cmd, RunOptions& options) {
 }
 
 void arm_run_control(const RunOptions& options) {
-  const double max_seconds = options.max_seconds;
-  if (max_seconds < 0 || !std::isfinite(max_seconds))
-    throw InputError("--max-seconds", std::to_string(max_seconds), "must be > 0");
-  if (max_seconds > 0)
-    g_run.deadline = g_run.start + std::chrono::duration_cast<RunControl::Clock::duration>(
-                                       std::chrono::duration<double>(max_seconds));
+  if (options.max_seconds != 0) g_run.set_time_limit(options.max_seconds, "--max-seconds", g_run.start);
   if (!options.quiet && isatty(STDERR_FILENO)) g_run.on_progress = show_progress;
   std::signal(SIGINT, on_sigint);
 }

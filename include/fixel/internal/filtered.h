@@ -96,7 +96,8 @@ inline int orientation_filtered(const Vec2& a, const Vec2& b) {
 // InputError when p and a differ in length.
 inline int affine_sign_filtered(const VectorQ& a, const Rational& c, const VectorQ& p) {
   if (p.size() != a.size())
-    throw InputError("p", std::to_string(p.size()) + " components", "must have " + std::to_string(a.size()));
+    throw InputError("p", std::to_string(p.size()) + " components",
+                     "where " + std::to_string(a.size()) + " are needed");
   if (!force_exact()) {
     Protect guard;
     FI s = -to_interval(c);
