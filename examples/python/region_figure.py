@@ -21,7 +21,7 @@ print("counts", region.counts(), "in-length", region.lengths()["in"], f"({region
 
 fig, (left, right) = plt.subplots(1, 2, figsize=(12, 5))
 fixel.plot.region(left, scene, region)
-left.legend(loc="center")
+left.legend(loc="best")  # "center" would cover the centre-of-mass mark
 left.set_title(f"pushing region of {scene.name} (resolution 1/1024)")
 fixel.plot.wrench_sphere(right, scene, region)
 right.set_title("unit wrench directions; shaded: ray meets S")

@@ -40,6 +40,10 @@ class Scene:
     """A validated scene (the library's parse_scene/load_scene)."""
 
     def __init__(self, impl):
+        if not isinstance(impl, _fixel.Scene):
+            raise TypeError(
+                f"Scene: {impl!r} is not a parsed scene; use fixel.Scene.load(path) or fixel.Scene.from_dict(d)"
+            )
         self._impl = impl
 
     @classmethod
@@ -53,6 +57,8 @@ class Scene:
     def from_dict(cls, d, source="scene"):
         """Validates a scene given as a dict in the scene-file format. Numbers
         may be strings, ints or Fractions; floats are refused (not exact)."""
+        if not isinstance(source, str):
+            raise TypeError(f"source: {source!r} is not a string (the name error messages give the scene)")
         if not isinstance(d, dict):
             raise TypeError(f"{source}: a scene is a dict in the scene-file format, not {type(d).__name__}")
         # Serialised and parsed by the C++ parser, so validation and messages
@@ -63,12 +69,12 @@ class Scene:
         """The scene in the scene-file format, every number an exact string."""
         return self._impl.to_dict()
 
-    name = property(lambda self: self._impl.name)
-    dof = property(lambda self: self._impl.dof)
-    num_contacts = property(lambda self: self._impl.num_contacts)
-    has_boundary = property(lambda self: self._impl.has_boundary)
-    num_curves = property(lambda self: self._impl.num_curves)
-    pusher_mu = property(lambda self: frac(self._impl.pusher_mu))
+    name = property(lambda self: self._impl.name, doc="The scene's name (its file's, or from_dict's source).")
+    dof = property(lambda self: self._impl.dof, doc="Degrees of freedom: 3 for a rigid body, 2 for a point mass.")
+    num_contacts = property(lambda self: self._impl.num_contacts, doc="Number of fixels (contacts), n_c.")
+    has_boundary = property(lambda self: self._impl.has_boundary, doc="Whether the body has an outline.")
+    num_curves = property(lambda self: self._impl.num_curves, doc="Curves of the outline (0 without one).")
+    pusher_mu = property(lambda self: frac(self._impl.pusher_mu), doc="Pusher friction μ_p (Fraction).")
 
     def curve_range(self, k):
         """(u_begin, u_end) of curve k as Fractions."""
@@ -89,6 +95,8 @@ def _jsonable(x, path):
         return {k: _jsonable(v, f"{path}.{k}" if path else str(k)) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
         return [_jsonable(v, f"{path}[{i}]") for i, v in enumerate(x)]
+    if type(x) is int and x.bit_length() > 13000:
+        return text(x, path)  # beyond json.dumps (4300 digits): as exact text
     if x is None or isinstance(x, (str, bool)) or type(x) is int:
         return x  # left to the C++ parser, which names the field if it is wrong
     if getattr(x, "dtype", None) is not None and getattr(x, "ndim", 0) > 0:
@@ -104,6 +112,20 @@ def _expect(x, cls, name):
     if not isinstance(x, cls):
         raise TypeError(f"{name}: expected a fixel.{cls.__name__}, not {type(x).__name__}")
     return x
+
+
+def _same_scene(owner_scene, scene, field):
+    """InputError naming ``field`` unless ``owner_scene`` (the scene an
+    object was built from) is ``scene``: the same object, or one equal to it
+    in the scene-file format. An object of another scene would give a wrong
+    answer silently."""
+    if owner_scene is scene or owner_scene._impl is scene._impl or owner_scene.to_dict() == scene.to_dict():
+        return
+    raise InputError.make(
+        field,
+        f"built from scene {owner_scene.name!r}",
+        f"belongs to another scene than {scene.name!r}; build it from this scene",
+    )
 
 
 def _scene(scene):
@@ -174,10 +196,14 @@ class GuaranteedSet:
         self.non_seating = [(tuple(modes), fixel) for modes, fixel in impl.non_seating]
 
     def contains(self, p):
+        """Exact membership: every one-step outcome at impulse p seats the part."""
         return self._impl.contains(vector(p, "p"))
 
     def __contains__(self, p):
         return self.contains(p)
+
+    def __repr__(self):
+        return f"<fixel.GuaranteedSet pieces={self.num_pieces} of S of scene {self.seating.scene.name!r}>"
 
     def lost_fraction(self, grid=6):
         """Fraction of sample points of S that are not in G (exact)."""
@@ -191,6 +217,7 @@ def guaranteed_set(scene, seating=None, progress=None, max_seconds=None):
 
     scene = _scene(scene)
     S = _expect(seating, SeatingSet, "seating") if seating is not None else seating_set(scene)
+    _same_scene(S.scene, scene, "seating")
     impl = _run(lambda c: _fixel.guaranteed_set(scene._impl, S._impl, c), progress, "fixel.guaranteed_set", max_seconds)
     return GuaranteedSet(S, impl)
 
@@ -223,7 +250,15 @@ def simulate(scene, impulse, steps=1, max_seconds=None):
 
 
 def _is_list_of_vectors(x):
-    return isinstance(x, (list, tuple)) and len(x) > 0 and all(isinstance(e, (list, tuple)) for e in x)
+    """Whether ``impulse`` is one impulse per step: a list or tuple of
+    vectors (lists, tuples or 1-D arrays), or a 2-D array, one row a step."""
+    if getattr(x, "ndim", None) == 2:
+        return True
+    return (
+        isinstance(x, (list, tuple))
+        and len(x) > 0
+        and all(isinstance(e, (list, tuple)) or getattr(e, "ndim", None) == 1 for e in x)
+    )
 
 
 def solutions(scene, impulse, max_seconds=None):
@@ -243,8 +278,10 @@ def to_off(scene, seating, directory, length=1, guaranteed=None):
     JSON sidecar of the same stem with its metadata. Returns the paths."""
     scene = _scene(scene)
     _expect(seating, SeatingSet, "seating")
+    _same_scene(seating.scene, scene, "seating")
     if guaranteed is not None:
         _expect(guaranteed, GuaranteedSet, "guaranteed")
+        _same_scene(guaranteed.seating.scene, scene, "guaranteed")
     g = guaranteed._impl if guaranteed is not None else None
     return _fixel.dump_off(scene._impl, seating._impl, str(directory), text(length, "length"), g)
 
@@ -262,7 +299,11 @@ def to_svg(path, result, theta=None, impulse=None):
         _fixel.write_guaranteed_svg(str(path), S.scene._impl, S._impl, result._impl, text(theta, "theta"), p)
         return
     r = _expect(result, Region, "region")
-    _fixel.write_region_svg(str(path), r.scene._impl, r.seating._impl, r._impl)
+    if isinstance(r.seating, SustainedSet):  # region(push="sustained"): the picture against J
+        _fixel.write_sustained_region_svg(str(path), r.scene._impl, r.seating._impl, r._impl)
+        return
+    g = None if r.guaranteed is None else r.guaranteed._impl
+    _fixel.write_region_svg(str(path), r.scene._impl, r.seating._impl, r._impl, g)
 
 
 class SustainedSet:
@@ -289,10 +330,15 @@ class SustainedSet:
         return self._impl.why_not(vector(w, "wrench"))
 
     def contains(self, w):
+        """Exact membership of the world-frame wrench w in J."""
         return self.why_not(w) == ""
 
     def __contains__(self, w):
         return self.contains(w)
+
+    def __repr__(self):
+        state = "empty" if self.empty else ("strongly stable" if self.strongly_stable else "not strongly stable")
+        return f"<fixel.SustainedSet J of scene {self.scene.name!r}: {state}>"
 
 
 def push(scene, wrench=None, at=None, time=20, max_seconds=None):
@@ -304,8 +350,10 @@ def push(scene, wrench=None, at=None, time=20, max_seconds=None):
     --json`` document as a dict: "outcome" is "seated", "jammed", "escaped"
     or "timeout". ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
-    if (wrench is None) == (at is None):
-        raise InputError.make("wrench", repr(wrench), "give exactly one of wrench= and at=")
+    if wrench is None and at is None:
+        raise InputError.make("wrench", "None", "and at=None: give one of wrench= and at=")
+    if wrench is not None and at is not None:
+        raise InputError.make("at", repr(at), "and a wrench are both given: give only one of wrench= and at=")
     w = None if wrench is None else vector(wrench, "wrench")
     if at is not None and not isinstance(at, str):
         raise TypeError(f"at: {at!r} is not a string 'K:U'")
@@ -327,7 +375,9 @@ def push_plan(scene, at, guaranteed=False, max_seconds=None):
     scene = _scene(scene)
     if not isinstance(at, str):
         raise TypeError(f"at: {at!r} is not a string 'K:U'")
-    g = bool(guaranteed)
+    if not isinstance(guaranteed, bool):
+        raise TypeError(f"guaranteed: {guaranteed!r} is not a bool")
+    g = guaranteed
     return json.loads(stoppable(lambda c: _fixel.push_plan(scene._impl, at, g, c), max_seconds))
 
 
@@ -376,10 +426,19 @@ class ApproachSet:
         return self._why_not(w, frame)[1]
 
     def contains(self, w, frame="world"):
+        """Exact membership of w in J' (``frame`` as in why_not);
+        UnsupportedError when J' is undecided for the scene."""
         return self.why_not(w, frame) == ""
 
     def __contains__(self, w):
         return self.contains(w)
+
+    def __repr__(self):
+        if not self.decided:
+            state = "undecided"
+        else:
+            state = "empty" if self.empty else f"t* = {self.t_star}"
+        return f"<fixel.ApproachSet J' of scene {self.scene.name!r}: {state}>"
 
     def _why_not(self, w, frame):
         if frame not in ("world", "part"):
@@ -393,6 +452,7 @@ def approach_set(scene, sustained=None):
     already computed."""
     scene = _scene(scene)
     J = _expect(sustained, SustainedSet, "sustained") if sustained is not None else sustained_set(scene)
+    _same_scene(J.scene, scene, "sustained")
     return ApproachSet(J, _fixel.approach_set(scene._impl, J._impl))
 
 

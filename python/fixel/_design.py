@@ -107,7 +107,7 @@ def _mu_pair(mu, name):
 def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive=False):
     if mu is None:  # as the CLI: the scene's largest fixel mu, else 1/10
         mus = [f["mu"] for f in scene.to_dict().get("fixels", [])]
-        flat = [Fraction(m[-1] if isinstance(m, list) else m) for m in mus]
+        flat = [frac(m[-1] if isinstance(m, list) else m) for m in mus]
         mu = max(flat) if flat else Fraction(1, 10)
     lo, hi = _mu_pair(mu, "mu")
     if pusher_mu is None:
@@ -139,12 +139,22 @@ def _candidates(scene, candidates, spacing):
         return _fixel.design_candidates(scene._impl, None if spacing is None else text(spacing, "spacing"))
     if isinstance(candidates, (str, os.PathLike)):
         return _fixel.design_load_candidates(scene._impl, os.fspath(candidates))
+    if not hasattr(candidates, "__iter__") or isinstance(candidates, (bytes, dict)):
+        raise TypeError(
+            f"candidates: {candidates!r} is neither 'boundary', a file path nor a list of (curve, u) pairs"
+        )
     pairs = []
     for i, c in enumerate(candidates):
+        field = f"candidates[{i}]"
         if isinstance(c, dict):
+            missing = [k for k in ("curve", "u") if k not in c]
+            if missing:
+                raise InputError.make(field, repr(c), f"has no {missing[0]!r} (a candidate is {{'curve': k, 'u': u}})")
             c = (c["curve"], c["u"])
+        if isinstance(c, (str, bytes)) or not isinstance(c, (tuple, list)) or len(c) != 2:
+            raise InputError.make(field, repr(c), "is not a (curve, u) pair")
         curve, u = c
-        pairs.append((int(curve), text(u, f"candidates[{i}].u")))
+        pairs.append((whole(curve, f"{field}.curve"), text(u, f"{field}.u")))
     return _fixel.design_check_candidates(scene._impl, pairs)
 
 
@@ -440,7 +450,7 @@ def _merge(records, top, counts, k):
         for i in range(4):
             counts[i] += rec["counts"][i]
         top.extend(rec["layouts"])
-    top.sort(key=lambda l: (-Fraction(l[4]), l[3]))
+    top.sort(key=lambda l: (-frac(l[4]), l[3]))
     del top[k:]
 
 

@@ -7,7 +7,9 @@ would make "exact" results depend on rounding. ``exact(x)`` converts a float
 deliberately, to the exact value of its binary representation.
 """
 
+import collections.abc
 import decimal
+import math
 import numbers
 from fractions import Fraction
 
@@ -16,10 +18,16 @@ from .errors import InputError
 
 def exact(x):
     """The exact value of ``x`` as a Fraction; a float gives its binary value
-    (``exact(0.1) == Fraction(3602879701896397, 36028797018963968)``)."""
+    (``exact(0.1) == Fraction(3602879701896397, 36028797018963968)``).
+    Strings are read as everywhere else in fixel (``"p/q"``, ``"0.1"``,
+    ``"1e-3"``; ParseError otherwise)."""
     if isinstance(x, float) or _is_numpy_float(x):
+        if getattr(getattr(x, "dtype", None), "kind", None) == "c":
+            raise TypeError(f"x: {x!r} is a complex number")
+        if not math.isfinite(float(x)):
+            raise InputError.make("x", repr(float(x)), "is not a finite number")
         return Fraction(float(x))
-    return Fraction(text(x, "x"))
+    return parse(x, "x")
 
 
 def _is_numpy_float(x):
@@ -29,18 +37,17 @@ def _is_numpy_float(x):
 
 def text(x, field):
     """Exact text of one number ("p/q", an integer, or the user's string)."""
-    try:
-        return _text(x, field)
-    except ValueError as e:  # Python refuses str() of integers beyond 4300 digits
-        raise InputError.make(field, f"({type(x).__name__})", f"is too large to convert to exact text ({e})") from e
+    return _text(x, field)
 
 
 def _text(x, field):
     t = type(x)
-    if t is int or t is str:  # fast paths of the common exact types
-        return str(x)
+    if t is str:
+        return x
+    if t is int:  # fast paths of the common exact types
+        return int_text(x)
     if t is Fraction:
-        return f"{x.numerator}/{x.denominator}"
+        return f"{int_text(x.numerator)}/{int_text(x.denominator)}"
     if x is None:
         raise TypeError(f"{field}: None is not a number")
     if isinstance(x, bool):
@@ -48,9 +55,9 @@ def _text(x, field):
     if isinstance(x, str):
         return x  # parsed by fixel::parse_rational: ParseError names the field
     if isinstance(x, Fraction):
-        return f"{x.numerator}/{x.denominator}"
+        return f"{int_text(x.numerator)}/{int_text(x.denominator)}"
     if isinstance(x, numbers.Integral):
-        return str(int(x))
+        return int_text(int(x))
     if isinstance(x, float) or _is_numpy_float(x) or isinstance(x, numbers.Real) and not isinstance(
         x, (numbers.Rational, decimal.Decimal)
     ):
@@ -64,7 +71,7 @@ def _text(x, field):
             raise TypeError(f"{field}: {x!r} is not a finite number")
         return text(Fraction(x), field)
     if isinstance(x, numbers.Rational):
-        return f"{int(x.numerator)}/{int(x.denominator)}"
+        return f"{int_text(int(x.numerator))}/{int_text(int(x.denominator))}"
     raise TypeError(f"{field}: {x!r} ({type(x).__name__}) is not an exact number (Fraction, int or str)")
 
 
@@ -72,8 +79,12 @@ def vector(p, field):
     """Exact texts of a flat sequence; C++ checks the length against dof."""
     if p is None:
         raise TypeError(f"{field}: None is not a vector")
-    if isinstance(p, (str, bytes)) or not hasattr(p, "__iter__"):
+    if isinstance(p, (str, bytes, bytearray, memoryview)) or not hasattr(p, "__iter__"):
         raise TypeError(f"{field}: {p!r} is not a sequence of exact numbers")
+    if isinstance(p, (collections.abc.Set, collections.abc.Mapping)):
+        raise TypeError(
+            f"{field}: a {type(p).__name__} has no order of its entries; pass a list, tuple or 1-D numpy array"
+        )
     dtype = getattr(p, "dtype", None)
     if dtype is not None:
         if dtype.kind in ("f", "c"):
@@ -83,6 +94,8 @@ def vector(p, field):
             )
         if getattr(p, "ndim", 1) != 1:
             raise InputError.make(field, f"shape {p.shape}", "must be a flat vector")
+    elif not isinstance(p, (list, tuple)):
+        p = list(p)  # an iterator can be read only once, and the slow path reads again
     out = []
     try:
         for x in p:
@@ -103,12 +116,51 @@ class _Slow(Exception):
 
 
 def frac(s):
-    """Fraction from the core's exact text."""
-    return Fraction(s)
+    """Fraction from the core's exact text ("p/q" or an integer)."""
+    if len(s) <= _DIGITS:
+        return Fraction(s)
+    num, _, den = s.partition("/")
+    return Fraction(_int(num), _int(den) if den else 1)
+
+
+# Python refuses int(str) and str(int) beyond 4300 digits (a guard against
+# slow conversions, sys.set_int_max_str_digits). Exact values may be longer:
+# they are converted in halves of at most _DIGITS digits each.
+_DIGITS = 4000
+
+
+def _int(s):
+    """int of a decimal integer text of any length."""
+    if len(s) <= _DIGITS:
+        return int(s)
+    negative = s.startswith("-")
+    body = s[1:] if negative else s
+    m = len(body) // 2
+    value = _int(body[:-m]) * 10**m + _int(body[-m:])
+    return -value if negative else value
+
+
+def int_text(n):
+    """Decimal text of an int of any size."""
+    if n.bit_length() <= 13000:  # below 4300 digits
+        return str(n)
+    if n < 0:
+        return "-" + int_text(-n)
+    m = int(n.bit_length() * 0.30103) // 2  # about half the digits
+    high, low = divmod(n, 10**m)
+    return int_text(high) + int_text(low).rjust(m, "0")
 
 
 def fracs(v):
-    return tuple(Fraction(s) for s in v)
+    return tuple(frac(s) for s in v)
+
+
+def parse(x, field):
+    """``x`` (an exact number or a string) as the core reads it, as a
+    Fraction; ParseError naming ``field`` for text the core refuses."""
+    from . import _fixel
+
+    return frac(_fixel.parse_rational(text(x, field), field))
 
 
 # The C++ core's int: a count beyond it would reach pybind11 as an

@@ -7,9 +7,9 @@ from fractions import Fraction
 from typing import Optional, Tuple
 
 from . import _fixel
-from ._exact import frac, text, whole
+from ._exact import frac, parse, text, whole
 from ._worker import seconds_limit, stoppable
-from .errors import InputError, UnsupportedError
+from .errors import InputError
 
 
 @dataclass(frozen=True)
@@ -26,7 +26,7 @@ class Magnitudes:
         return self.hi is None
 
     def contains(self, x):
-        x = Fraction(text(x, "x"))
+        x = parse(x, "x")
         above = x > self.lo or (self.lo_closed and x == self.lo)
         below = self.hi is None or x < self.hi or (self.hi_closed and x == self.hi)
         return above and below
@@ -84,6 +84,7 @@ class RegionStats:
     depth: int
     partial_length: Fraction
     seconds: float  # wall time, display only
+    roots: int = 0  # exact region (exact=True): real roots isolated in the pieces' interiors
 
 
 @dataclass(eq=False)
@@ -99,6 +100,7 @@ class Region:
     pusher_mu: Fraction
     _impl: object = field(repr=False)
     resolution_length: Optional[Fraction] = None  # with region(resolution_length=L): L (m); resolution is then None
+    guaranteed: object = field(default=None, repr=False)  # the GuaranteedSet classified against, if any
 
     def counts(self):
         out = {"in": 0, "out": 0, "partial": 0}
@@ -130,8 +132,9 @@ def _region_of(scene, S, impl, cone, resolution, pusher_mu):
     ]  # fmt: skip
     s = impl.stats
     stats = RegionStats(
-        s["cone_tests"], s["lp_tests"], s["point_tests"], s["depth"], frac(s["partial_length"]), s["seconds"]
-    )
+        s["cone_tests"], s["lp_tests"], s["point_tests"], s["depth"], frac(s["partial_length"]), s["seconds"],
+        s["roots"],
+    )  # fmt: skip
     mu = pusher_mu if pusher_mu is not None else frac(scene._impl.pusher_mu)
     return Region(scene, S, intervals, stats, cone, resolution, mu, impl)
 
@@ -181,14 +184,17 @@ def _run(work, progress, description, max_seconds=None, interval=0.1):
         callback("done", time.perf_counter() - start)
 
 
-def _guaranteed_impl(guaranteed, scene, S):
+def _guaranteed_of(guaranteed, scene, S):
+    """The GuaranteedSet asked for (None, False, True or one given), or None."""
+    from . import GuaranteedSet, guaranteed_set
+
     if guaranteed is None or guaranteed is False:
         return None
     if guaranteed is True:
-        from . import guaranteed_set
-
-        return guaranteed_set(scene, S)._impl
-    return guaranteed._impl
+        return guaranteed_set(scene, S)
+    if not isinstance(guaranteed, GuaranteedSet):
+        raise TypeError(f"guaranteed: {guaranteed!r} is neither True, False, None nor a fixel.GuaranteedSet")
+    return guaranteed
 
 
 def region(
@@ -216,15 +222,18 @@ def region(
     ``max_seconds``: stop the run after that many seconds with StoppedError
     (``--max-seconds``). Ctrl-C stops it too and raises KeyboardInterrupt.
     """
-    from . import SeatingSet, _expect, _scene, seating_set
+    from . import _scene
 
     scene = _scene(scene)
     if push not in ("step", "sustained"):
         raise InputError.make("push", repr(push), "is not a push model (step or sustained)")
     if cone not in ("tight", "paper"):
         raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
-    res = text(resolution, "resolution")
-    res_len = None if resolution_length is None else text(resolution_length, "resolution_length")
+    # Read by the core first, so that bad text is its ParseError naming the argument.
+    res = _fixel.parse_rational(text(resolution, "resolution"), "resolution")
+    res_len = None
+    if resolution_length is not None:
+        res_len = _fixel.parse_rational(text(resolution_length, "resolution_length"), "resolution_length")
     if res_len is not None and exact:
         raise InputError.make("resolution_length", res_len, "cannot be combined with exact=True")
     shown = None if exact or res_len is not None else frac(res)
@@ -235,21 +244,29 @@ def region(
     if digits != 0 and not exact:
         raise InputError.make("digits", str(digits), "needs exact=True (it refines the exact region's ends)")
     if push == "sustained":
-        from . import sustained_set
+        from . import ApproachSet, SustainedSet, _same_scene, approach_set, sustained_set
 
-        if guaranteed not in (None, False):
+        if guaranteed is not None and guaranteed is not False:
             raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
-        from . import ApproachSet, approach_set
-
+        if seating is not None:
+            if not isinstance(seating, SustainedSet):
+                raise TypeError(
+                    f"seating: with push='sustained' it is the sustained-push set, a fixel.SustainedSet "
+                    f"(fixel.sustained_set(scene)), not {type(seating).__name__}"
+                )
+            _same_scene(seating.scene, scene, "seating")
         if isinstance(approach, ApproachSet):
+            _same_scene(approach.scene, scene, "approach")
+            if seating is not None and approach.J is not seating:
+                raise InputError.make("seating", repr(seating), "is not the SustainedSet the ApproachSet refines")
             A = approach
         elif approach is True:
-            A = approach_set(scene)
+            A = approach_set(scene, seating)
         elif approach is False or approach is None:
             A = None
         else:
             raise InputError.make("approach", repr(approach), "is not True, False or an ApproachSet")
-        J = A.J if A is not None else sustained_set(scene)
+        J = A.J if A is not None else (seating if seating is not None else sustained_set(scene))
         a_impl = None if A is None else A._impl
         impl = _run(
             lambda c: _fixel.compute_region_sustained(
@@ -262,13 +279,15 @@ def region(
     if approach not in (False, None):
         raise InputError.make("approach", repr(approach), "needs push='sustained' (J' refines J)")
     S = _seating_for(seating, guaranteed, scene)
-    g = _guaranteed_impl(guaranteed, scene, S)
+    G = _guaranteed_of(guaranteed, scene, S)
+    g = None if G is None else G._impl
     impl = _run(
         lambda c: _fixel.compute_region(scene._impl, S._impl, res, cone, mu, g, exact, digits, res_len, c),
         progress, "fixel.region", max_seconds,
     )  # fmt: skip
     r = _region_of(scene, S, impl, cone, shown, None if mu is None else frac(mu))
     r.resolution_length = None if res_len is None else frac(res_len)
+    r.guaranteed = G
     return r
 
 
@@ -276,11 +295,14 @@ def _seating_for(seating, guaranteed, scene):
     """The S a one-step question is asked of: ``seating``, else the one a
     given GuaranteedSet was built from (G is checked against S), else S of
     the scene."""
-    from . import GuaranteedSet, SeatingSet, _expect, seating_set
+    from . import GuaranteedSet, SeatingSet, _expect, _same_scene, seating_set
 
     if seating is not None:
-        return _expect(seating, SeatingSet, "seating")
+        _expect(seating, SeatingSet, "seating")
+        _same_scene(seating.scene, scene, "seating")
+        return seating
     if isinstance(guaranteed, GuaranteedSet):
+        _same_scene(guaranteed.seating.scene, scene, "guaranteed")
         return guaranteed.seating
     return seating_set(scene)
 
@@ -288,12 +310,15 @@ def _seating_for(seating, guaranteed, scene):
 def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None, max_seconds=None):
     """The point-sampling baseline (``fixel sample``): ``points`` per curve.
     ``max_seconds`` and Ctrl-C stop it as in region."""
-    from . import SeatingSet, _expect, _scene, seating_set
+    from . import _scene
 
     scene = _scene(scene)
     points = whole(points, "points")
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
     S = _seating_for(seating, guaranteed, scene)
-    g = _guaranteed_impl(guaranteed, scene, S)
+    G = _guaranteed_of(guaranteed, scene, S)
+    g = None if G is None else G._impl
     impl = stoppable(lambda c: _fixel.sample_region(scene._impl, S._impl, points, mu, g, c), max_seconds)
-    return _region_of(scene, S, impl, "sample", None, None if mu is None else frac(mu))
+    r = _region_of(scene, S, impl, "sample", None, None if mu is None else frac(mu))
+    r.guaranteed = G
+    return r

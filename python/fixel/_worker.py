@@ -1,6 +1,7 @@
 """The C++ core in a worker thread, so that the caller's thread stays free
 to report progress and to take Ctrl-C (fixel.region, fixel.design)."""
 
+import numbers
 import os
 import threading
 from concurrent.futures import ThreadPoolExecutor, wait
@@ -43,12 +44,17 @@ def in_worker(work, tick, interval=0.1, on_interrupt=None):
 
 def seconds_limit(max_seconds):
     """``max_seconds`` as a float (None stays None); TypeError for a non-number.
-    A number that is not positive and finite is the core's InputError."""
+    Any real number is taken (int, float, Fraction, numpy scalars); one that
+    is not positive and finite is the core's InputError, and one beyond 10⁹
+    s sets no limit (docs/python.md)."""
     if max_seconds is None:
         return None
-    if isinstance(max_seconds, bool) or not isinstance(max_seconds, (int, float)):
-        raise TypeError(f"max_seconds: {max_seconds!r} is not a number")
-    return float(max_seconds)
+    if isinstance(max_seconds, bool) or not isinstance(max_seconds, numbers.Real):
+        raise TypeError(f"max_seconds: {max_seconds!r} ({type(max_seconds).__name__}) is not a number of seconds")
+    try:
+        return float(max_seconds)
+    except OverflowError:  # an int or Fraction beyond doubles
+        return float("inf") if max_seconds > 0 else float("-inf")
 
 
 def stoppable(call, max_seconds=None, tick=None, interval=0.1):

@@ -5,12 +5,11 @@ Nothing in this module calls ``plt.show()`` or creates a figure.
 """
 
 import math
-from fractions import Fraction
 
 import numpy as np
 
 from . import _fixel
-from ._exact import text
+from ._exact import frac, text
 from .errors import InputError
 
 #: Status colours, as in `fixel region --svg`.
@@ -54,7 +53,7 @@ def region(ax, scene, region, samples_per_unit=48, fixels=True, linewidth=3):
 
 
 def _fractions(values):
-    return [Fraction(v) for v in values]
+    return [frac(v) for v in values]
 
 
 def _lonlat(w):

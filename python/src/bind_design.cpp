@@ -21,11 +21,14 @@ using ScenePtr = std::shared_ptr<Scene>;
 using CandidateList = std::vector<std::pair<int, std::string>>;
 
 std::vector<DesignCandidate> candidates_of(const Scene& part, const CandidateList& list) {
+  if (list.size() > 10000)
+    throw InputError("candidates", std::to_string(list.size()) + " entries", "is more than 10000");
   std::vector<DesignCandidate> out;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string field = "candidates[" + std::to_string(i) + "]";
     out.push_back(candidate_at(part, list[i].first, parse_rational(list[i].second, field + ".u"), field));
   }
+  check_candidate_list(out);
   return out;
 }
 

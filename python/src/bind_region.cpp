@@ -58,6 +58,7 @@ py::dict stats_dict(const RegionStats& s) {
   d["point_tests"] = s.point_tests;
   d["depth"] = s.depth;
   d["partial_length"] = to_string(s.partial_length);
+  d["roots"] = s.roots;
   d["seconds"] = s.seconds;
   return d;
 }
@@ -115,11 +116,12 @@ void bind_region(py::module_& m) {
   m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r) {
     return region_json(checked(scene, "scene"), checked(r, "region"));
   });
-  m.def("write_region_svg",
-        [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r) {
-          py::gil_scoped_release release;
-          write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"));
-        });
+  m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r,
+                               const py::object& G) {
+    const GuaranteedSet* g = guaranteed_of(G, S);
+    py::gil_scoped_release release;
+    write_region_svg(path, checked(scene, "scene"), checked(S, "seating"), checked(r, "region"), g);
+  });
   m.def("write_guaranteed_svg",
         [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const py::object& G,
            const std::string& theta, const std::optional<std::vector<std::string>>& impulse) {

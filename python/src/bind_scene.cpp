@@ -113,6 +113,9 @@ void bind_scene(py::module_& m) {
       },
       py::arg("path"));
 
+  // The core's reading of one number (fixel.exact): its exact text "p/q".
+  m.def("parse_rational",
+        [](const std::string& text, const std::string& field) { return to_string(parse_rational(text, field)); });
   // (u_begin, u_end) of curve k, exact.
   m.def("curve_range", [](const Scene& s, int k) {
     const Curve& c = curve_at(s, k);

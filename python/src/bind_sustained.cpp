@@ -107,6 +107,11 @@ void bind_sustained(py::module_& m) {
     const auto r = physics::push(s, w, options);
     return physics::push_json(s, w, r);
   });
+  m.def("write_sustained_region_svg",
+        [](const std::string& path, const ScenePtr& scene, const SustainedPtr& J, const std::shared_ptr<Region>& r) {
+          py::gil_scoped_release release;
+          write_sustained_region_svg(path, checked(scene, "scene"), checked(J, "sustained"), checked(r, "region"));
+        });
   m.def("compute_region_sustained",
         [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution, const std::string& cone,
            const std::optional<std::string>& pusher_mu, bool exact, int digits,

@@ -44,12 +44,7 @@ namespace {
 
 std::unique_ptr<Control> make_control(const std::optional<double>& max_seconds) {
   auto c = std::make_unique<Control>();
-  if (max_seconds) {
-    if (!(*max_seconds > 0) || !std::isfinite(*max_seconds))
-      throw InputError("max_seconds", std::to_string(*max_seconds), "must be a positive number of seconds");
-    c->run.deadline = RunControl::Clock::now() + std::chrono::duration_cast<RunControl::Clock::duration>(
-                                                     std::chrono::duration<double>(*max_seconds));
-  }
+  if (max_seconds) c->run.set_time_limit(*max_seconds, "max_seconds");
   c->run.interval = std::chrono::milliseconds(100);
   Control* p = c.get();
   c->run.on_progress = [p](const char* task, long done, long total, const char* unit) {

@@ -5,6 +5,7 @@ import multiprocessing
 import threading
 import time
 
+import numpy as np
 import pytest
 
 import fixel
@@ -64,10 +65,28 @@ def test_bad_max_seconds_is_named(polygon):
         with pytest.raises(TypeError, match="max_seconds"):
             call(polygon, max_seconds="1")
     with pytest.raises(fixel.InputError) as e:
-        fixel.simulate(polygon, [0, -1, 0], max_seconds=float("inf"))
+        fixel.simulate(polygon, [0, -1, 0], max_seconds=float("nan"))
     assert e.value.field == "max_seconds"
     with pytest.raises(TypeError, match="max_seconds"):
         fixel.sample(polygon, 8, max_seconds=True)
+
+
+def test_a_limit_of_a_billion_seconds_or_more_is_no_limit(polygon):
+    # steady_clock's nanoseconds overflow past 292 years: 1e10 s once set a
+    # deadline in the past, and the run stopped before it began.
+    plain = fixel.region(polygon).counts()
+    for limit in (1e9, 1e10, 1e300, float("inf"), 10**400):
+        assert fixel.region(polygon, max_seconds=limit).counts() == plain
+    assert fixel.simulate(polygon, [0, -1, 0], steps=200, max_seconds=float("inf")).seated is not None
+
+
+def test_any_real_number_is_a_time_limit(polygon):
+    from fractions import Fraction
+
+    plain = fixel.simulate(polygon, [0, -1, 0], steps=120)
+    for limit in (np.int64(60), np.float32(60), Fraction(60), 60, 60.0):
+        run = fixel.simulate(polygon, [0, -1, 0], steps=120, max_seconds=limit)
+        assert [s.q for s in run.steps] == [s.q for s in plain.steps]
 
 
 def test_a_push_longer_than_the_engine_step_limit_is_refused_naming_time(polygon):
