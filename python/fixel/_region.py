@@ -23,9 +23,11 @@ class Magnitudes:
 
     @property
     def half_line(self):
+        """Whether every magnitude from lo on seats the part (hi is +∞)."""
         return self.hi is None
 
     def contains(self, x):
+        """Whether the magnitude x (exact) is in the range, ends as closed or open."""
         x = parse(x, "x")
         above = x > self.lo or (self.lo_closed and x == self.lo)
         below = self.hi is None or x < self.hi or (self.hi_closed and x == self.hi)
@@ -54,7 +56,7 @@ class AlgebraicEnd:
         if t is None:
             return None
         poly, (lo, hi), approx = t
-        return cls(tuple(int(c) for c in poly), (frac(lo), frac(hi)), approx)
+        return cls(tuple(int(frac(c)) for c in poly), (frac(lo), frac(hi)), approx)
 
 
 @dataclass(frozen=True)
@@ -103,6 +105,7 @@ class Region:
     guaranteed: object = field(default=None, repr=False)  # the GuaranteedSet classified against, if any
 
     def counts(self):
+        """Number of intervals per status: {"in": .., "out": .., "partial": ..}."""
         out = {"in": 0, "out": 0, "partial": 0}
         for r in self.intervals:
             out[r.status] += 1
