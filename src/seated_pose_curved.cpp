@@ -205,7 +205,11 @@ SeatedPose seated_pose_curved(const Scene& scene) {
     bool moved = false;
     for (int i = 0; i < nc; ++i) {
       if (z[4 + i] >= -margin && z[4 + i] <= 1 + margin) continue;
-      if (++switches > 40) throw SceneError("fixels", "", "have no seated pose near the scene pose");
+      if (++switches > 40)
+        throw SceneError("fixels", "",
+                         "have no seated pose near the scene pose: the search moved the contact points across "
+                         "40 boundary pieces without settling (fixel " +
+                             std::to_string(i) + " last)");
       const int next = (cs[i].piece + (z[4 + i] > 1 ? 1 : npieces - 1)) % npieces;
       const double old = z[4 + i];
       load_piece(b, next, cs[i]);

@@ -150,6 +150,7 @@ grep -q "push model: sustained" "$tmp/sus.svg" || { echo "FAIL: sustained svg le
 expect 0 'sustained_jam_0_1.off' -- "$fixel" dump "$P" --off "$tmp/sus" --sustained
 expect 2 'body.boundary: is missing' -- "$fixel" seat "$src/data/scenes/example2.json" --sustained
 expect 2 'have no seated pose near the scene pose' -- "$fixel" seat "$src/data/scenes/blob.json" --sustained
+expect 2 'across 40 boundary pieces without settling' -- "$fixel" seat "$src/data/scenes/blob32.json" --sustained
 expect 2 '--wrench: "1,2" has 2 components' -- "$fixel" seat "$P" --sustained --wrench 1,2
 expect 2 '--wrench: 1,2,3 needs --sustained' -- "$fixel" seat "$P" --wrench 1,2,3
 expect 2 '--pusher-mu: 1/5,1/10 has lo > hi' -- "$fixel" region "$P" --push sustained --pusher-mu 1/5,1/10

@@ -47,23 +47,28 @@ class Scene:
         self._impl = impl
 
     @classmethod
-    def load(cls, path):
-        """Reads a scene file; InputError if unreadable, ParseError/SceneError if invalid."""
+    def load(cls, path, max_seconds=None):
+        """Reads a scene file; InputError if unreadable, ParseError/SceneError if
+        invalid. A huge outline's checks take a while: ``max_seconds`` and
+        Ctrl-C stop them as in region (``fixel info --max-seconds``)."""
         if not isinstance(path, (str, os.PathLike)):
             raise TypeError(f"path: {path!r} is not a file path")
-        return cls(_fixel.load_scene(os.fspath(path)))
+        path = os.fspath(path)
+        return cls(stoppable(lambda c: _fixel.load_scene(path, c), max_seconds))
 
     @classmethod
-    def from_dict(cls, d, source="scene"):
+    def from_dict(cls, d, source="scene", max_seconds=None):
         """Validates a scene given as a dict in the scene-file format. Numbers
-        may be strings, ints or Fractions; floats are refused (not exact)."""
+        may be strings, ints or Fractions; floats are refused (not exact).
+        ``max_seconds`` and Ctrl-C as in load."""
         if not isinstance(source, str):
             raise TypeError(f"source: {source!r} is not a string (the name error messages give the scene)")
         if not isinstance(d, dict):
             raise TypeError(f"{source}: a scene is a dict in the scene-file format, not {type(d).__name__}")
         # Serialised and parsed by the C++ parser, so validation and messages
         # are exactly those of the CLI.
-        return cls(_fixel.parse_scene(json.dumps(_jsonable(d, "")), source))
+        text = json.dumps(_jsonable(d, ""))
+        return cls(stoppable(lambda c: _fixel.parse_scene(text, source, c), max_seconds))
 
     def to_dict(self):
         """The scene in the scene-file format, every number an exact string."""

@@ -100,18 +100,18 @@ void bind_scene(py::module_& m) {
 
   m.def(
       "parse_scene",
-      [](const std::string& text, const std::string& source) {
+      [](const std::string& text, const std::string& source, Control* control) {
         py::gil_scoped_release release;
-        return std::make_shared<Scene>(parse_scene(text, source));
+        return std::make_shared<Scene>(parse_scene(text, source, run_control(control)));
       },
-      py::arg("text"), py::arg("source") = "scene");
+      py::arg("text"), py::arg("source") = "scene", py::arg("control") = nullptr);
   m.def(
       "load_scene",
-      [](const std::string& path) {
+      [](const std::string& path, Control* control) {
         py::gil_scoped_release release;
-        return std::make_shared<Scene>(load_scene(path));
+        return std::make_shared<Scene>(load_scene(path, run_control(control)));
       },
-      py::arg("path"));
+      py::arg("path"), py::arg("control") = nullptr);
 
   // The core's reading of one number (fixel.exact): its exact text "p/q".
   m.def("parse_rational",

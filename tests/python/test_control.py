@@ -1,9 +1,11 @@
 """Stopping a run from Python: max_seconds, Ctrl-C, and the reused worker threads."""
 
 import _thread
+import json
 import multiprocessing
 import threading
 import time
+from fractions import Fraction as F
 
 import numpy as np
 import pytest
@@ -87,6 +89,30 @@ def test_any_real_number_is_a_time_limit(polygon):
     for limit in (np.int64(60), np.float32(60), Fraction(60), 60, 60.0):
         run = fixel.simulate(polygon, [0, -1, 0], steps=120, max_seconds=limit)
         assert [s.q for s in run.steps] == [s.q for s in plain.steps]
+
+
+def _ellipse_dict(edges):
+    # A polyline ellipse with `edges` edges (exact points on a rational
+    # parametrisation), fixel-free: the load's outline checks poll per edge.
+    points = []
+    for k in range(edges):
+        t = F(2 * k - edges, edges)  # t in [-1, 1): (1 - t²)/(1 + t²), 2t/(1 + t²) on the circle
+        x, y = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+        points.append([str(2 * x), str(y)])
+    points.append(points[0])
+    return {"name": "ellipse", "time_step": "1", "body": {"dof": 3, "mass": "1",
+            "boundary": [{"type": "polyline", "points": points}]}, "fixels": []}  # fmt: skip
+
+
+def test_loading_a_huge_outline_stops_at_its_time_limit_and_loads_without_one(tmp_path):
+    d = _ellipse_dict(4000)
+    with pytest.raises(fixel.StoppedError, match="^load: time limit reached after"):
+        fixel.Scene.from_dict(d, max_seconds=PAST)
+    path = tmp_path / "ellipse.json"
+    path.write_text(json.dumps(d))
+    with pytest.raises(fixel.StoppedError, match="^load: time limit reached after"):
+        fixel.Scene.load(path, max_seconds=PAST)
+    assert fixel.Scene.load(path, max_seconds=60).num_curves == fixel.Scene.from_dict(d).num_curves == 1
 
 
 def test_a_push_longer_than_the_engine_step_limit_is_refused_naming_time(polygon):
