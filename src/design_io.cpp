@@ -1,5 +1,6 @@
 // Fixture design input and output: the candidate file, `fixel design --json`,
 // the text report and the SVG of the best layouts (docs/design.md).
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -209,12 +210,17 @@ void write_design_svg(const std::string& path, const Scene& part, const DesignRe
   const double scale = size / extent;
   const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   const int cols = std::max(n, 1);
+  std::vector<std::vector<Rational>> piece_starts(b.curves.size());  // per curve, increasing
+  for (const auto& piece : b.pieces) piece_starts.at(piece.curve).push_back(piece.u0);
+  for (auto& starts : piece_starts) std::sort(starts.begin(), starts.end());
   std::ostringstream s;
-  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << cols * (size + margin) + margin << "' height='"
-    << size + 2 * margin + 30 << "' font-family='sans-serif' font-size='12'>\n";
+  const double width = cols * (size + margin) + margin, height = size + 2 * margin + 30;
+  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height << "' viewBox='0 0 "
+    << width << " " << height << "' font-family='sans-serif' font-size='12'>\n";
   s << "<rect width='100%' height='100%' fill='white'/>\n";
   s << "<text x='" << margin << "' y='20'>" << part.name << ": best layouts by the " << push_name(o)
-    << " score (green: IN, grey: OUT, orange: PARTIAL)</text>\n";
+    << " score (green: IN, grey: OUT, orange: PARTIAL; red: fixels, each line on the side it touches from; "
+       "circle: centre of mass)</text>\n";
   if (n == 0) s << "<text x='" << margin << "' y='60'>no layout: " << r.no_layout << "</text>\n";
   for (int k = 0; k < n; ++k) {
     const DesignLayout& l = r.layouts[k];
@@ -228,12 +234,20 @@ void write_design_svg(const std::string& path, const Scene& part, const DesignRe
           iv.status == RegionStatus::kIn ? "#2a2" : (iv.status == RegionStatus::kOut ? "#999" : "#e90");
       s << "<polyline fill='none' stroke='" << colour << "' stroke-width='" << (iv.status == RegionStatus::kIn ? 4 : 2)
         << "' points='";
-      const int m = 12;
-      for (int j = 0; j <= m; ++j) {
-        const Rational u = iv.u0 + (iv.u1 - iv.u0) * Rational(j, m);
-        const Vec2 p = c.point(u);
-        s << X(to_double(p.x)) << "," << Y(to_double(p.y)) << " ";
-      }
+      // Samples between the piece ends inside the interval, so that a
+      // corner is drawn as a corner (not cut by a chord).
+      const std::vector<Rational>& starts = piece_starts.at(iv.curve);
+      std::vector<Rational> ends{iv.u0};
+      const auto first = std::upper_bound(starts.begin(), starts.end(), iv.u0);
+      const auto last = std::lower_bound(starts.begin(), starts.end(), iv.u1);
+      if (first < last) ends.insert(ends.end(), first, last);  // none for a corner's zero-length interval
+      ends.push_back(iv.u1);
+      const int m = ends.size() > 2 ? 4 : 12;
+      for (std::size_t e = 0; e + 1 < ends.size(); ++e)
+        for (int j = e == 0 ? 0 : 1; j <= m; ++j) {
+          const Vec2 p = c.point(ends[e] + (ends[e + 1] - ends[e]) * Rational(j, m));
+          s << X(to_double(p.x)) << "," << Y(to_double(p.y)) << " ";
+        }
       s << "'/>\n";
     }
     for (int i : l.fixels) {

@@ -321,12 +321,14 @@ std::string verification_text(const std::vector<VerificationCheck>& checks) {
 std::string verification_json(const std::vector<VerificationCheck>& checks) {
   json doc;
   doc["checks"] = json::array();
-  bool all = true;
+  long passed = 0;
   for (const auto& c : checks) {
     doc["checks"].push_back({{"name", c.name}, {"passed", c.passed}, {"detail", c.detail}});
-    all = all && c.passed;
+    passed += c.passed ? 1 : 0;
   }
-  doc["passed"] = all;
+  doc["passed"] = passed == static_cast<long>(checks.size());
+  doc["passed_count"] = passed;  // the text's "N passed, M failed"
+  doc["failed_count"] = static_cast<long>(checks.size()) - passed;
   internal::add_approx(doc);
   return doc.dump(2) + "\n";
 }

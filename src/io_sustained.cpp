@@ -252,11 +252,26 @@ Halfspace display_row(const std::array<QuadraticIrrational, 3>& a) {
   return {v, Rational(0)};
 }
 
+// The same for a row known only by certified enclosures (q* enclosed):
+// each entry's midpoint.
+Halfspace display_row(const std::array<std::array<double, 2>, 3>& a) {
+  VectorQ v(3);
+  for (int k = 0; k < 3; ++k) v[k] = Rational((a[k][0] + a[k][1]) / 2);
+  return {v, Rational(0)};
+}
+
 std::vector<std::string> write_cone_off(const std::string& dir, const std::string& name, const AlgebraicCone& cone,
                                         json meta) {
+  // Without exact rows (q* only enclosed) the enclosures' midpoints: the
+  // box alone would be drawn as the cone.
   std::vector<Halfspace> rows;
-  for (const auto& a : cone.closed) rows.push_back(display_row(a));
-  for (const auto& a : cone.strict) rows.push_back(display_row(a));
+  if (cone.exact) {
+    for (const auto& a : cone.closed) rows.push_back(display_row(a));
+    for (const auto& a : cone.strict) rows.push_back(display_row(a));
+  } else {
+    for (const auto& a : cone.closed_enclosure) rows.push_back(display_row(a));
+    for (const auto& a : cone.strict_enclosure) rows.push_back(display_row(a));
+  }
   Box box;
   box.lo = VectorQ::Constant(3, Rational(-1));
   box.hi = VectorQ::Constant(3, Rational(1));
@@ -264,7 +279,10 @@ std::vector<std::string> write_cone_off(const std::string& dir, const std::strin
   const std::string path = (std::filesystem::path(dir) / name).string();
   meta["box"] = {{"lo", {"-1", "-1", "-1"}}, {"hi", {"1", "1", "1"}}};
   meta["coordinates"] =
-      "rows rounded to double before clipping, vertices rounded to double: a picture (exact: seat --sustained --json)";
+      cone.exact ? "rows rounded to double before clipping, vertices rounded to double: a picture (exact: seat "
+                   "--sustained --json)"
+                 : "q* is only enclosed: rows are the midpoints of their certified enclosures, vertices rounded to "
+                   "double: a picture (the enclosures: seat --sustained --json)";
   return internal::write_off_with_sidecar(path, rows, 3, meta, "dump_sustained_off(directory)");
 }
 

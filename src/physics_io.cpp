@@ -100,7 +100,7 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
     for (const auto& v : poly.outline) grow(place(s.pose, v));
   for (const auto& f : fixels) grow(f);
   const double W = 640, margin = 20, span = std::max({x1 - x0, y1 - y0, 1e-12});
-  const double k = (W - 2 * margin) / span, H = (y1 - y0) * k + 2 * margin + 60;
+  const double k = (W - 2 * margin) / span, H = (y1 - y0) * k + 2 * margin + 76;  // + three caption lines
   auto X = [&](double x) { return margin + (x - x0) * k; };
   auto Y = [&](double y) { return margin + (y1 - y) * k; };
   auto outline = [&](const Pose& p, const std::string& style) {
@@ -115,7 +115,8 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
   };
   std::ofstream out(path);
   if (!out) throw InputError("svg(path)", path, "cannot be written");
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\">\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 " << W
+      << " " << H << "\" font-family=\"sans-serif\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out << outline(Pose{}, "fill:#dde8f5;stroke:#6a8fbf;stroke-width:1");
   const std::size_t every = std::max<std::size_t>(1, r.trajectory.size() / 25);
@@ -126,20 +127,28 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
   out << "<polyline style=\"fill:none;stroke:#333;stroke-dasharray:3,2\" points=\"";
   for (const auto& s : r.trajectory) out << X(cx + s.pose.x) << "," << Y(cy + s.pose.y) << " ";
   out << "\"/>\n";
+  // Touches as rings of radius 7, leaves of radius 10: both stay visible at one fixel.
   for (const auto& e : r.events) {
     const auto& f = fixels[e.fixel];
-    out << "<circle cx=\"" << X(f[0]) << "\" cy=\"" << Y(f[1])
-        << "\" r=\"7\" style=\"fill:none;stroke:" << (e.begin ? "#e69500" : "#8e24aa")
-        << ";stroke-opacity:0.4\"><title>t=" << e.t << " fixel " << e.fixel << (e.begin ? " touches" : " leaves")
+    out << "<circle cx=\"" << X(f[0]) << "\" cy=\"" << Y(f[1]) << "\" r=\"" << (e.begin ? 7 : 10)
+        << "\" style=\"fill:none;stroke:" << (e.begin ? "#e69500" : "#8e24aa")
+        << ";stroke-opacity:0.6\"><title>t=" << e.t << " fixel " << e.fixel << (e.begin ? " touches" : " leaves")
         << "</title></circle>\n";
   }
   for (std::size_t i = 0; i < fixels.size(); ++i)
     out << "<circle cx=\"" << X(fixels[i][0]) << "\" cy=\"" << Y(fixels[i][1]) << "\" r=\"3\" fill=\"black\"/>"
         << "<text x=\"" << X(fixels[i][0]) + 5 << "\" y=\"" << Y(fixels[i][1]) - 5 << "\" font-size=\"11\">" << i
         << "</text>\n";
-  out << "<text x=\"" << margin << "\" y=\"" << H - 30 << "\" font-size=\"12\">" << scene.name << ": "
-      << to_string(r.outcome) << " after " << r.time_end << " s; " << r.events.size()
-      << " contact events (orange: touch, purple: leave); grey: every few steps</text>\n";
+  auto caption = [&](double y) {
+    return "<text x=\"" + std::to_string(margin) + "\" y=\"" + std::to_string(y) + "\" font-size=\"12\">";
+  };
+  out << caption(H - 50) << scene.name << ": " << to_string(r.outcome);
+  if (r.time_to_seat) out << " at t = " << *r.time_to_seat << " s (at rest from then on)";
+  out << "; run stopped at " << r.time_end << " s</text>\n";
+  out << caption(H - 34) << r.events.size()
+      << " contact events at the fixels (black): orange ring: touch, purple ring: leave</text>\n";
+  out << caption(H - 18) << "blue: the part at the start; " << (r.outcome == Outcome::kSeated ? "green" : "red")
+      << ": at the end; grey: every few steps; dashed: the centre of mass's path</text>\n";
   out << "</svg>\n";
   if (!out) throw InputError("svg(path)", path, "cannot be written");
 }

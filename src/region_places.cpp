@@ -165,6 +165,8 @@ void locate_intervals(const Scene& scene, Region& region) {
     const Rational mid = (r.u0 + r.u1) / 2;
     const BezierPiece* p = index.at(r.curve, mid);
     if (p) {
+      const Vec2 at_mid = p->point(p->local(mid));
+      place.middle_A = std::array<double, 2>{to_double(at_mid.x), to_double(at_mid.y)};
       const Vec2 t = p->derivative(p->local(mid));
       // A point on a junction of pieces: defined only if both sides agree.
       // p is the first piece containing mid; only the following ones that

@@ -8,15 +8,26 @@
 
 namespace fixel {
 
+Rational default_slice_theta(const SeatingSet& S) {
+  if (S.dof != 3) throw InputError("S.dof", std::to_string(S.dof), "is a point mass's: the S/G picture needs dof 3");
+  Rational theta = S.apex[2];
+  for (const auto& r : S.rays) theta += r[2];
+  return theta;
+}
+
 void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet* G,
                           const Rational& theta, const std::optional<VectorQ>& impulse) {
   if (S.dof != 3) throw InputError("S.dof", std::to_string(S.dof), "is a point mass's: the S/G picture needs dof 3");
-  // The window: the apex and the tips apex + 2 r of every ray, in (px, py).
+  // The window: the apex, the tips apex + 2 r of every ray, and where each
+  // ray's line meets the slice (apex + t r with t > 0), in (px, py).
   Rational x0 = S.apex[0], x1 = S.apex[0], y0 = S.apex[1], y1 = S.apex[1];
+  auto grow = [&](const VectorQ& p) {
+    x0 = std::min(x0, Rational(p[0])), x1 = std::max(x1, Rational(p[0]));
+    y0 = std::min(y0, Rational(p[1])), y1 = std::max(y1, Rational(p[1]));
+  };
   for (const auto& r : S.rays) {
-    const VectorQ tip = S.apex + 2 * r;
-    x0 = std::min(x0, Rational(tip[0])), x1 = std::max(x1, Rational(tip[0]));
-    y0 = std::min(y0, Rational(tip[1])), y1 = std::max(y1, Rational(tip[1]));
+    grow(S.apex + 2 * r);
+    if (r[2] != 0 && (theta - S.apex[2]) / r[2] > 0) grow(S.apex + (theta - S.apex[2]) / r[2] * r);
   }
   if (impulse) {
     x0 = std::min(x0, Rational((*impulse)[0])), x1 = std::max(x1, Rational((*impulse)[0]));

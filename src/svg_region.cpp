@@ -46,18 +46,20 @@ void draw_legend(std::ostream& svg, const Scene& scene, const Region& region, co
   std::map<RegionStatus, int> counts;
   for (const auto& r : region.intervals) ++counts[r.status];
   svg << "<text x='" << kMargin << "' y='24' font-size='16' font-weight='bold'>fixel pushing region: " << scene.name
-      << "</text>\n<text x='" << kMargin << "' y='44'>cone " << method
-      << (region.exact ? std::string(", exact ends (root isolation)")
-                       : ", resolution " + (region.resolution ? to_string(*region.resolution) : std::string("none")))
-      << ", pusher mu " << to_string(region.pusher_mu) << ", intervals: " << counts[RegionStatus::kIn] << " in, "
-      << counts[RegionStatus::kPartial] << " partial, " << counts[RegionStatus::kOut] << " out; "
-      << region.stats.cone_tests << " cone tests</text>\n";
+      << " (target " << region.target << ")</text>\n<text x='" << kMargin << "' y='44'>";
+  if (region.exact)  // no cone method, no subdivision: the ends are roots
+    svg << "exact region: ends by root isolation (" << region.stats.roots << " roots)";
+  else
+    svg << "cone " << method << ", resolution "
+        << (region.resolution ? to_string(*region.resolution) : std::string("none"));
+  svg << ", pusher mu " << to_string(region.pusher_mu) << ", intervals: " << counts[RegionStatus::kIn] << " in, "
+      << counts[RegionStatus::kPartial] << " partial, " << counts[RegionStatus::kOut] << " out";
+  if (!region.exact) svg << "; " << region.stats.cone_tests << " cone tests";
+  svg << "</text>\n";
   if (pic.push_caption) svg << "<text x='" << kMargin << "' y='62'>" << pic.push_caption << "</text>\n";
   const double ly = kHeight + 60;
   const std::pair<RegionStatus, const char*> keys[] = {
-      {RegionStatus::kIn, pic.in_label},
-      {RegionStatus::kPartial, "partial (undecided at the resolution)"},
-      {RegionStatus::kOut, "out"}};
+      {RegionStatus::kIn, pic.in_label}, {RegionStatus::kPartial, pic.partial_label}, {RegionStatus::kOut, "out"}};
   double lx = kMargin;
   for (const auto& [status, label] : keys) {
     svg << "<rect x='" << lx << "' y='" << ly - 11 << "' width='24' height='8' fill='" << colour(status) << "'/>"
@@ -72,9 +74,10 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
                  const Picture& pic) {
   std::ostringstream svg;
   svg.precision(6);
-  const double width = 2 * kPanel + 3 * kMargin + 20;
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << kHeight + 80
-      << "' font-family='sans-serif' font-size='13'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  const double width = 2 * kPanel + 3 * kMargin + 60, height = kHeight + 80;  // room for the longest caption
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height << "' viewBox='0 0 "
+      << width << " " << height << "' font-family='sans-serif' font-size='13'>\n"
+      << "<rect width='100%' height='100%' fill='white'/>\n";
 
   draw_legend(svg, scene, region, method, pic);
   draw_part_panel(svg, scene, region, pic);
@@ -133,8 +136,12 @@ void write_sustained_region_svg(const std::string& path, const Scene& scene, con
   for (const auto& jam : J.jam_cones)
     jams.push_back(jam.cone.exact ? rows(jam.cone.closed) : mids(jam.cone.closed_enclosure));
   Picture pic;
-  pic.in_label = "in: sustained push: seats and stays (J)";
-  pic.shade_caption = "blue: directions in J; orange: into the seat, but two fixels can hold it";
+  const bool approach = region.target == "J'";
+  pic.in_label = approach ? "in: sustained push, approach-aware: seats, stays, no pair holds it on the way (J')"
+                          : "in: sustained push: seats and stays (J)";
+  if (approach) pic.partial_label = "partial (J' not decided by its stand-ins, or at the resolution)";
+  pic.shade_caption = approach ? "blue: directions in J (J' is within J, not shaded); orange: two fixels can hold it"
+                               : "blue: directions in J; orange: into the seat, but two fixels can hold it";
   pic.push_caption = "push model: sustained (a held wrench, judged at the seated pose q*; dashed: the part at q*)";
   pic.ghost = J.pose.approx;
   pic.shade = [=](double fx, double fy, double m) {

@@ -106,13 +106,14 @@ void draw_curve_labels(std::ostream& svg, const Frame& F, const Boundary& b) {
   }
 }
 
-// An arrow onto the middle of every IN stretch, along the push direction.
+// An arrow onto the middle of every IN stretch (the boundary point at its
+// middle parameter, where the push direction is taken), along that direction.
 void draw_push_arrows(std::ostream& svg, const Frame& F, const Region& region, double length) {
   for (std::size_t k = 0; k < region.intervals.size() && k < region.places.size(); ++k) {
     const RegionInterval& r = region.intervals[k];
     const IntervalPlace& at = region.places[k];
-    if (r.status != RegionStatus::kIn || !at.push_direction_A || r.u0 == r.u1) continue;
-    const double mx = (d(at.start_A.x) + d(at.end_A.x)) / 2, my = (d(at.start_A.y) + d(at.end_A.y)) / 2;
+    if (r.status != RegionStatus::kIn || !at.push_direction_A || !at.middle_A || r.u0 == r.u1) continue;
+    const double mx = (*at.middle_A)[0], my = (*at.middle_A)[1];
     const double dx = (*at.push_direction_A)[0], dy = (*at.push_direction_A)[1];
     const double tx = F.x(mx), ty = F.y(my), sx = F.x(mx - length * dx), sy = F.y(my - length * dy);
     const double ux = (tx - sx) / std::hypot(tx - sx, ty - sy), uy = (ty - sy) / std::hypot(tx - sx, ty - sy);

@@ -76,7 +76,11 @@ void draw_wrench_panel(std::ostream& svg, const Scene& scene, const Region& regi
         }
         if (last_lon < 1e8) svg << "'/>\n";
       }
-  // Tight cones of the Bézier pieces (frictionless), as outlines.
+  // Tight cones of the Bézier pieces (frictionless), as outlines. One that
+  // straddles the ±180° seam is drawn twice, unwrapped and shifted by 360°,
+  // each copy clipped to the panel.
+  svg << "<clipPath id='wrench-panel'><rect x='" << px(-180) << "' y='" << py(90) << "' width='" << kPanel
+      << "' height='" << py(-90) - py(90) << "'/></clipPath>\n";
   for (const auto& piece : b.pieces) {
     const auto cone = segment_wrench_cone(piece, scene.body.p_AoCm_A, EdgeFamily::kNormal, 0, ConeMethod::kTight);
     if (!cone) continue;
@@ -86,11 +90,18 @@ void draw_wrench_panel(std::ostream& svg, const Scene& scene, const Region& regi
       pts.push_back(lonlat(d(g[0]), d(g[1]), d(g[2])));
     }
     bool wraps = false;
-    for (const auto& q : pts) wraps = wraps || std::abs(q.first - pts[0].first) > 180;
-    if (wraps) continue;  // skip the few that straddle the ±180° seam
-    svg << "<polygon fill='none' stroke='#636363' stroke-width='0.8' points='";
-    for (const auto& [lon, lat] : pts) svg << px(lon) << "," << py(lat) << " ";
-    svg << "'/>\n";
+    for (auto& q : pts)
+      if (std::abs(q.first - pts[0].first) > 180) {
+        q.first += q.first < pts[0].first ? 360 : -360;  // unwrapped next to the first generator
+        wraps = true;
+      }
+    for (const double shift :
+         wraps ? std::vector<double>{0, pts[0].first > 0 ? -360.0 : 360.0} : std::vector<double>{0}) {
+      svg << "<polygon fill='none' stroke='#636363' stroke-width='0.8'"
+          << (wraps ? " clip-path='url(#wrench-panel)'" : "") << " points='";
+      for (const auto& [lon, lat] : pts) svg << px(lon + shift) << "," << py(lat) << " ";
+      svg << "'/>\n";
+    }
   }
   for (int lon = -180; lon <= 180; lon += 90)
     svg << "<text x='" << px(lon) - 10 << "' y='" << py(-90) + 32 << "' fill='#666'>" << lon << "°</text>\n";

@@ -107,13 +107,17 @@ std::vector<VerificationCheck> run_verification() {
     const SeatingSet S = seating_set(parse_scene(paper::kExample2Scene, "example2"));
     return expect_equal("v_t", S.tangential_velocity, vec(paper::kExample2SlideSpeed));
   }));
-  out.push_back(run("example2.eq27_exact", "K^-1 P p and -K^-1 a at p = (-1,-1,-1) equal the exact values", [] {
-    const Scene scene = parse_scene(paper::kExample2Scene, "example2");
-    const SeatingSystem sys = seating_system(scene, seating_set(scene));
-    const VectorQ p = vec(paper::kExample2Impulse);
-    const std::string d = expect_equal("K^-1 P p", sys.linear_part(p), vec(paper::kExample2LinearExact));
-    return d.empty() ? expect_equal("-K^-1 a", sys.threshold(), vec(paper::kExample2ThresholdExact)) : d;
-  }));
+  out.push_back(
+      run("example2.eq27_exact",
+          "K^-1 P p and -K^-1 a at p = (-1,-1,-1) equal the exact values of an independent derivation "
+          "(data/reference/derive_paper_examples.py)",
+          [] {
+            const Scene scene = parse_scene(paper::kExample2Scene, "example2");
+            const SeatingSystem sys = seating_system(scene, seating_set(scene));
+            const VectorQ p = vec(paper::kExample2Impulse);
+            const std::string d = expect_equal("K^-1 P p", sys.linear_part(p), vec(paper::kExample2LinearExact));
+            return d.empty() ? expect_equal("-K^-1 a", sys.threshold(), vec(paper::kExample2ThresholdExact)) : d;
+          }));
   out.push_back(run("example2.eq27_printed", "the same values rounded to 4 decimals equal the paper's table", [] {
     const Scene scene = parse_scene(paper::kExample2Scene, "example2");
     const SeatingSystem sys = seating_system(scene, seating_set(scene));

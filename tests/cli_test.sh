@@ -161,7 +161,8 @@ expect 0 '"u1": "597/1414"' -- "$fixel" region "$src/data/scenes/example2_rounde
 expect 0 '"poly": [' -- "$fixel" region "$P" --push sustained --exact --json
 expect 0 'u in [0, 0.4269832638...]' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --exact --digits 10
 expect 0 'wrote' -- "$fixel" region "$src/data/scenes/blob.json" --exact --svg "$tmp/exact.svg"
-grep -q "exact ends (root isolation)" "$tmp/exact.svg" || { echo "FAIL: exact svg caption"; fail=1; }
+grep -q "exact region: ends by root isolation" "$tmp/exact.svg" || { echo "FAIL: exact svg caption"; fail=1; }
+grep -q "cone tests" "$tmp/exact.svg" && { echo "FAIL: the exact region's picture quotes cone tests it did not run"; fail=1; }
 if "$fixel" region "$src/data/scenes/blob32.json" --exact --json | grep -q '"status": "partial"'; then
   echo "FAIL: --exact left a partial stretch on blob32"; fail=1
 fi
@@ -284,6 +285,24 @@ done
 grep -q "stroke-dasharray='7,3'" "$tmp/rf.svg" || { echo "FAIL: frictional pusher edges not drawn"; fail=1; }
 "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --svg "$tmp/rg.svg" > /dev/null
 grep -q "ray meets G" "$tmp/rg.svg" || { echo "FAIL: --guaranteed picture not shaded by G"; fail=1; }
+# The J' picture says J' (it once said J throughout); the push picture gives the seating time, not the run's end.
+"$fixel" region "$src/data/scenes/polygon.json" --push sustained --approach --svg "$tmp/ra.svg" > /dev/null
+grep -qF "no pair holds it on the way (J')" "$tmp/ra.svg" || { echo "FAIL: the J' picture is labelled J"; fail=1; }
+grep -qF "(target J')" "$tmp/ra.svg" || { echo "FAIL: the J' picture's title lacks its target"; fail=1; }
+"$fixel" push "$src/data/scenes/polygon.json" --wrench -1,-1,0 --svg "$tmp/pp.svg" > "$tmp/pp.txt"
+seat_t=$(grep -o 'seated at t = [0-9.]* s' "$tmp/pp.txt")
+grep -qF "$seat_t (at rest from then on)" "$tmp/pp.svg" || { echo "FAIL: push svg caption lacks '$seat_t'"; fail=1; }
+# seat --svg without --impulse slices through S's interior (the apex's own slice is the apex alone on Example 2).
+"$fixel" seat "$src/data/scenes/example2.json" --svg "$tmp/s2.svg" > /dev/null
+cells=$(grep -o 'can seat ([0-9]* cells)' "$tmp/s2.svg" | grep -o '[0-9]*')
+[ "${cells:-0}" -gt 100 ] || { echo "FAIL: seat --svg of example2 draws ${cells:-0} cells of S"; fail=1; }
+# dump --sustained with q* only enclosed: the cones from the enclosures' midpoints, not the whole box; no pieces, said.
+expect 0 "no sustained_piece_*.off: J's pieces are undecided here" -- "$fixel" dump "$src/data/scenes/example2_rounded.json" --off "$tmp/dr" --sustained
+[ "$(sed -n 2p "$tmp/dr/sustained_cone.off")" != "8 6 0" ] || { echo "FAIL: J's cone drawn as the box"; fail=1; }
+grep -q "midpoints of their certified enclosures" "$tmp/dr/sustained_cone.json" || { echo "FAIL: sidecar says nothing of the enclosures"; fail=1; }
+# design --svg draws corner intervals (it once failed on a zero-length one); verify --json counts.
+expect 0 'wrote' -- "$fixel" design "$src/data/scenes/polygon.json" --spacing 1/2 --top 3 --svg "$tmp/ds.svg" --quiet
+expect 0 '"passed_count": 15' -- "$fixel" verify --json
 if command -v rsvg-convert > /dev/null; then
   rsvg-convert -w 1100 "$tmp/rr.svg" -o "$tmp/rr.png" || { echo "FAIL: svg does not rasterise"; fail=1; }
   head -c 8 "$tmp/rr.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "FAIL: not a PNG"; fail=1; }

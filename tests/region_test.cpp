@@ -116,6 +116,27 @@ GTEST_TEST(Region, IsSoundOnRandomBlobsByExactSampling) {
   EXPECT_GE(scenes_with_out, 8);
 }
 
+// Where the picture's push arrow points: the boundary point at the middle
+// parameter, on the curve, not the midpoint of the chord between the ends
+// (on blob's curved pieces the two differ; arrows once floated inside it).
+GTEST_TEST(Region, EachIntervalsMiddleIsOnTheCurveAtItsMiddleParameter) {
+  const Scene blob = scene_file("blob");
+  const Region region = compute_region(blob, seating_set(blob), RegionOptions{});
+  ASSERT_EQ(region.places.size(), region.intervals.size());
+  int off_chord = 0;
+  for (std::size_t k = 0; k < region.intervals.size(); ++k) {
+    const RegionInterval& r = region.intervals[k];
+    const IntervalPlace& at = region.places[k];
+    ASSERT_TRUE(at.middle_A.has_value());
+    const Vec2 on_curve = blob.body.boundary->curves[r.curve].point((r.u0 + r.u1) / 2);
+    EXPECT_EQ((*at.middle_A)[0], to_double(on_curve.x));
+    EXPECT_EQ((*at.middle_A)[1], to_double(on_curve.y));
+    const Vec2 chord{(at.start_A.x + at.end_A.x) / 2, (at.start_A.y + at.end_A.y) / 2};
+    off_chord += chord.x != on_curve.x || chord.y != on_curve.y;
+  }
+  EXPECT_GT(off_chord, 0);
+}
+
 GTEST_TEST(Region, CertifiedMagnitudesSeatEveryPushDirection) {
   // At sample points of IN intervals with a common magnitude range, the
   // lower end (and a larger value) pushed along the exact normal lands in S.

@@ -38,6 +38,9 @@ struct IntervalPlace {
   /// Unit inward normal at the interval's middle: the frictionless push
   /// direction (display); unset where the normal is undefined (a corner).
   std::optional<std::array<double, 2>> push_direction_A;
+  /// The boundary point at the middle parameter (u0 + u1)/2, where
+  /// push_direction_A is taken (m, display; on the curve, not the chord).
+  std::optional<std::array<double, 2>> middle_A;
 };
 
 struct RegionInterval {

@@ -32,6 +32,11 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
 void write_sustained_region_svg(const std::string& path, const Scene& scene, const SustainedSet& J,
                                 const Region& region);
 
+/// The default slice of write_guaranteed_svg: p_θ of apex + Σ rays (N·m·s),
+/// through S's interior. The apex's own p_θ cuts S at the apex alone when
+/// every ray's p_θ has one sign, as on the paper's Example 2. dof 3.
+Rational default_slice_theta(const SeatingSet& S);
+
 /// Draws the slice p_θ = theta of S and G (dof 3): impulses in G, in S but
 /// not in G, and outside S, each decided exactly on a display grid, with the
 /// apex and an optional impulse marked; with G null, S alone. Throws

@@ -295,12 +295,14 @@ def to_svg(path, result, theta=None, impulse=None):
     """Draws ``result`` to an SVG file: a Region (from fixel.region) like
     ``fixel region --svg``, or a GuaranteedSet (dof 3) like ``fixel seat
     --guaranteed --svg``: the slice p_θ = theta (default: the impulse's, else
-    the apex's) of S and G, with ``impulse`` marked."""
+    that of apex + Σ rays, through S's interior) of S and G, with ``impulse``
+    marked."""
     if isinstance(result, GuaranteedSet):
         S = result.seating
         p = None if impulse is None else vector(impulse, "impulse")
         if theta is None:
-            theta = p[2] if p is not None and len(p) == 3 else (S.apex[2] if S.dof == 3 else 0)
+            # The impulse's slice, else the one through apex + Σ rays (default_slice_theta).
+            theta = p[2] if p is not None and len(p) == 3 else S.apex[2] + sum(r[2] for r in S.rays)
         _fixel.write_guaranteed_svg(str(path), S.scene._impl, S._impl, result._impl, text(theta, "theta"), p)
         return
     r = _expect(result, Region, "region")

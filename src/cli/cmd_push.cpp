@@ -66,7 +66,8 @@ Command add_push(CLI::App& app) {
 
 Command add_verify(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
-  auto* cmd = app.add_subcommand("verify", "Run the built-in verification suite (the paper's examples)");
+  auto* cmd = app.add_subcommand(
+      "verify", "Run the built-in verification suite (the paper's Examples 1 and 2, and sustained-push checks)");
   cmd->add_flag("--json", *json, "Print one JSON document on stdout");
   return {cmd, [json] {
             const auto checks = run_verification();

@@ -54,12 +54,13 @@ int run_seat(const SeatArgs& a) {
   if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   // Every input check before any output (the picture is a p_theta slice).
   if (!a.svg_path.empty() && scene.body.dof != 3)
-    throw InputError("--svg", a.svg_path, "the S/G picture needs dof 3 (a slice at constant p_theta)");
+    throw InputError("--svg", a.svg_path,
+                     "cannot be drawn for a point mass: the S/G picture needs dof 3 (a slice at constant p_theta)");
   check_writable(a.svg_path, "--svg");
   const SeatReport report = seat_report(scene, S, impulse, g, a.stable);
   std::cout << (a.json ? seat_json(scene, S, report, g) : seat_text(scene, S, report, g));
   if (!a.svg_path.empty()) {
-    write_guaranteed_svg(a.svg_path, scene, S, g, impulse ? (*impulse)[2] : S.apex[2], impulse);
+    write_guaranteed_svg(a.svg_path, scene, S, g, impulse ? (*impulse)[2] : default_slice_theta(S), impulse);
     if (!a.json) std::cout << "wrote " << a.svg_path << "\n";
   }
   return 0;
@@ -77,6 +78,9 @@ int run_dump(const DumpArgs& a) {
   if (a.sustained) {
     const SustainedSet J = sustained_set(scene);
     for (const auto& path : dump_sustained_off(scene, J, a.off_dir)) std::cout << "wrote " << path << "\n";
+    if (!J.pieces_decided)
+      std::cout << "no sustained_piece_*.off: J's pieces are undecided here (q* only enclosed; seat --sustained says "
+                   "why)\n";
   }
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;

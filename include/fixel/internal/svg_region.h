@@ -30,6 +30,7 @@ struct Picture {
   std::function<int(double, double, double)> shade;
   std::optional<std::array<double, 3>> ghost;  // seated pose (x, y, θ) to draw as a ghost outline
   const char* push_caption = nullptr;
+  const char* partial_label = "partial (undecided at the resolution)";
 };
 
 // The ends to draw: an exact (algebraic) end refined to width 10^-9 of the
