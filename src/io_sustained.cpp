@@ -49,8 +49,17 @@ json cone_json(const AlgebraicCone& c) {
     rays.push_back(exact3(r));
     rays_approx.push_back(approx3(r));
   }
-  for (const auto& a : c.closed) hs.push_back({{"a", exact3(a)}, {"c", "0"}, {"strict", false}});
-  for (const auto& a : c.strict) hs.push_back({{"a", exact3(a)}, {"c", "0"}, {"strict", true}});
+  // A row with an entry in Q(√d) gets its doubles here (add_approx reads
+  // rational strings only; a rational row gets them there, as before).
+  auto row = [](const std::array<QuadraticIrrational, 3>& a, bool strict) {
+    json h = {{"a", exact3(a)}};
+    if (a[0].b != 0 || a[1].b != 0 || a[2].b != 0) h["a_approx"] = approx3(a);
+    h["c"] = "0";
+    h["strict"] = strict;
+    return h;
+  };
+  for (const auto& a : c.closed) hs.push_back(row(a, false));
+  for (const auto& a : c.strict) hs.push_back(row(a, true));
   return {{"rays", rays}, {"rays_approx", rays_approx}, {"halfspaces", hs}};
 }
 

@@ -146,3 +146,31 @@ def test_guaranteed_region_agrees(command):
     for a, b in zip(r.intervals, doc["intervals"]):
         assert (a.curve, a.u0, a.u1, a.status) == (b["curve"], F(b["u0"]), F(b["u1"]), b["status"])
         assert as_tuples(a.magnitude_set) == magnitude_list(b)
+
+
+def _q_sqrt_d(text):
+    """The value of "a", "a+b*sqrt(d)", "a-b*sqrt(d)" or "b*sqrt(d)" (display)."""
+    import math
+    import re
+
+    m = re.fullmatch(r"(-?[0-9/]+)?(?:([+-]?)([0-9/]+)\*sqrt\((\d+)\))?", text)
+    assert m, text
+    a = F(m.group(1)) if m.group(1) else F(0)
+    if not m.group(3):
+        return float(a)
+    b = F(m.group(3)) * (-1 if m.group(2) == "-" else 1)
+    return float(a) + float(b) * math.sqrt(int(m.group(4)))
+
+
+def test_every_sustained_row_has_doubles_beside_its_exact_entries():
+    # Rows with entries in Q(sqrt d) once had no a_approx (rational ones did).
+    doc = cli_json("seat", SCENES[[s.stem for s in SCENES].index("polygon")], "--sustained")["sustained"]
+    cones = [doc["cone"], *doc["jam_cones"], *doc["pieces"]]
+    irrational = 0
+    for cone in cones:
+        for row in cone["halfspaces"]:
+            assert len(row["a_approx"]) == 3
+            for exact, shown in zip(row["a"], row["a_approx"]):
+                irrational += "sqrt" in exact
+                assert shown == pytest.approx(_q_sqrt_d(exact), rel=1e-12, abs=1e-15)  # display, not a decision
+    assert irrational > 0
