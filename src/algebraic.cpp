@@ -7,7 +7,31 @@
 
 namespace fixel {
 
-using internal::split_at;
+using internal::sign_at;
+
+namespace {
+
+// A caller's x is checked where it enters (an irrational: degree >= 2,
+// lo < hi, a sign change between them), and every bisection point first:
+// a rational root there means x.poly is reducible, the caller's error (x
+// made by real_roots never has one), so an InputError, not InternalError.
+void check_isolating(const AlgebraicReal& x) {
+  if (x.is_rational()) return;
+  if (x.poly.size() < 3 || !(x.lo < x.hi) || sign_at(x.poly, x.lo) * sign_at(x.poly, x.hi) >= 0)
+    throw InputError("x", "[" + to_string(x.lo) + ", " + to_string(x.hi) + "]",
+                     "is not an isolating interval of an irrational root of x.poly (degree >= 2, a sign change "
+                     "between lo and hi, as real_roots gives)");
+}
+
+void split_at(AlgebraicReal& x, const Rational& m) {
+  const int s_m = sign_at(x.poly, m);
+  if (s_m == 0)
+    throw InputError("x.poly", "root " + to_string(m),
+                     "has a rational root: it must be irreducible (as real_roots gives)");
+  (s_m == sign_at(x.poly, x.lo) ? x.lo : x.hi) = m;
+}
+
+}  // namespace
 
 AlgebraicReal AlgebraicReal::rational(const Rational& q) {
   AlgebraicReal x;
@@ -18,6 +42,7 @@ AlgebraicReal AlgebraicReal::rational(const Rational& q) {
 double AlgebraicReal::approx() const { return to_double(midpoint()); }
 
 int compare(const AlgebraicReal& x, const Rational& q) {
+  check_isolating(x);
   if (x.is_rational()) return x.lo < q ? -1 : (x.lo > q ? 1 : 0);
   if (q <= x.lo) return 1;
   if (q >= x.hi) return -1;
@@ -28,6 +53,7 @@ int compare(const AlgebraicReal& x, const Rational& q) {
 
 AlgebraicReal refined(const AlgebraicReal& x, const Rational& width) {
   if (width <= 0) throw InputError("width", to_string(width), "must be > 0");
+  check_isolating(x);
   AlgebraicReal y = x;
   if (y.is_rational()) return y;
   while (y.hi - y.lo > width) split_at(y, (y.lo + y.hi) / 2);
@@ -52,6 +78,7 @@ std::vector<Integer> primitive_integer(const Polynomial& p) {
 
 AlgebraicReal affine_image(const AlgebraicReal& x, const Rational& a, const Rational& b) {
   if (b <= 0) throw InputError("b", to_string(b), "must be > 0");
+  check_isolating(x);
   if (x.is_rational()) return AlgebraicReal::rational(a + b * x.lo);
   // y = a + b x ⇔ x = (y − a)/b: p(x) = Σ c_i ((y − a)/b)^i.
   Polynomial result, power{Rational(1)};
@@ -79,6 +106,7 @@ AlgebraicReal affine_image(const AlgebraicReal& x, const Rational& a, const Rati
 
 std::string certified_decimal(const AlgebraicReal& x_in, int max_digits) {
   if (max_digits < 0) throw InputError("digits", std::to_string(max_digits), "must be >= 0");
+  check_isolating(x_in);
   AlgebraicReal x = x_in;
   // An irrational x is not 0: shrink its interval to one side of 0.
   while (!x.is_rational() && x.lo < 0 && x.hi > 0) split_at(x, Rational(0));

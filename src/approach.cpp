@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/approach_data.h"
@@ -121,6 +122,18 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
   const SeatedPose& q = J.pose;
   A.theta_star = q.approx[2];
   if (!J.data) throw InputError("J", "", "has no data (default-constructed SustainedSet)");
+  // J of another scene (its shape, at least): J' reads the scene's outline at J's contacts.
+  if (scene.body.dof != 3 || !scene.body.boundary)
+    throw SceneError(scene.body.dof != 3 ? "body.dof" : "body.boundary", scene.body.dof != 3 ? "2" : "",
+                     "J' needs a rigid body with an outline (the scene J was built from)");
+  if (J.mu.size() != scene.fixels.size())
+    throw InputError("J", std::to_string(J.mu.size()) + " fixels",
+                     "is not this scene's sustained-push set (" + std::to_string(scene.fixels.size()) +
+                         " fixels): build it with sustained_set(scene)");
+  for (const int curve : J.pose.contact_curve)
+    if (curve < 0 || curve >= static_cast<int>(scene.body.boundary->curves.size()))
+      throw InputError("J", "a contact on curve " + std::to_string(curve),
+                       "is not on this scene's outline: build J with sustained_set(scene)");
   if (!q.exact) {
     A.undecided_reason =
         "q* is only enclosed (a contact lies on a curved piece); J' needs every contact on a polyline edge";

@@ -73,6 +73,7 @@ bool GuaranteedSet::contains(const VectorQ& p, const SeatingSet& S) const {
 GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl* control) {
   const int nc = scene.num_contacts();
   if (nc != scene.body.dof) throw InputError("fixels", std::to_string(nc), "must number dof for the guaranteed set");
+  check_seating_set_of(scene, S);
   const Polyhedron s_poly = as_polyhedron(S);
   GuaranteedSet G;
   long total = 1;
@@ -143,6 +144,7 @@ std::vector<Halfspace> stability_cone(const Scene& scene) {
 }
 
 Polyhedron seat_and_stay(const Scene& scene, const SeatingSet& S) {
+  check_seating_set_of(scene, S);
   Polyhedron P = as_polyhedron(S);
   for (const auto& h : stability_cone(scene)) P.closed.push_back(h);
   return P;

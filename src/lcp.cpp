@@ -6,6 +6,7 @@
 namespace fixel {
 
 MatrixQ normal_wrench_matrix(const Scene& scene) {
+  check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
   const int dof = scene.body.dof, nc = scene.num_contacts();
   MatrixQ Wn(dof, nc);
   for (int i = 0; i < nc; ++i) Wn.col(i) = contact_wrench(scene.lever_arm(i), scene.fixels[i].n_A, dof);
@@ -19,6 +20,7 @@ std::string pair_text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_s
 }  // namespace
 
 void require_determined_fixture(const Scene& scene) {
+  check_scene_values(scene);
   const int dof = scene.body.dof, nc = scene.num_contacts();
   if (nc != dof)
     throw SceneError(
@@ -98,6 +100,14 @@ TimeSteppingLcp build_lcp(const Scene& scene) {
 void set_lcp_state(TimeSteppingLcp& lcp, const Scene& scene) {
   const int nc = scene.num_contacts();
   const ContactMatrices& W = lcp.W;
+  // What the state is read from, checked cheaply (this runs at every step).
+  if (nc != W.U.rows())
+    throw SceneError("fixels", std::to_string(nc) + " fixels",
+                     "but the LCP was built for " + std::to_string(W.U.rows()) + " (the same fixels are needed)");
+  if (scene.body.velocity.size() != W.Wn.rows())
+    throw SceneError("body.velocity", std::to_string(scene.body.velocity.size()) + " entries",
+                     "but the LCP was built for dof " + std::to_string(W.Wn.rows()));
+  if (!(scene.time_step > 0)) throw SceneError("time_step", to_string(scene.time_step), "must be > 0");
   VectorQ psi(nc);
   for (int i = 0; i < nc; ++i) psi[i] = scene.fixels[i].gap;
   lcp.a = VectorQ::Zero(4 * nc);
@@ -105,7 +115,12 @@ void set_lcp_state(TimeSteppingLcp& lcp, const Scene& scene) {
   lcp.a.segment(nc, 2 * nc) = W.Wf.transpose() * scene.body.velocity;
 }
 
-VectorQ TimeSteppingLcp::b(const VectorQ& p_ext) const { return P * p_ext + a; }
+VectorQ TimeSteppingLcp::b(const VectorQ& p_ext) const {
+  if (p_ext.size() != P.cols())
+    throw InputError("p_ext", std::to_string(p_ext.size()) + " components",
+                     "where " + std::to_string(P.cols()) + " are needed (dof)");
+  return P * p_ext + a;
+}
 
 namespace {
 std::vector<std::string> names(int nc, const char* normal, const char* friction, const char* slack) {

@@ -86,11 +86,40 @@ void drop_constant_rows(Polyhedron& P) {
   P.strict.clear();
 }
 
+namespace {
+
+// Every row's length is P.dim (≥ 0): a polyhedron built in code with dim
+// left at its default, or rows of mixed lengths, is an InputError here,
+// not a read past the end of a vector (field names the argument).
+void check_rows(const Polyhedron& P, const char* field) {
+  if (P.dim < 0) throw InputError(std::string(field) + ".dim", std::to_string(P.dim), "must be >= 0");
+  const auto check = [&](const std::vector<Halfspace>& rows, const char* kind) {
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      if (rows[k].a.size() != P.dim)
+        throw InputError(std::string(field) + "." + kind + "[" + std::to_string(k) + "]",
+                         std::to_string(rows[k].a.size()) + " components",
+                         "but dim is " + std::to_string(P.dim) + " (set Polyhedron::dim to the rows' length)");
+  };
+  check(P.closed, "closed");
+  check(P.strict, "strict");
+}
+
+void check_same_dim(const Polyhedron& Q, const Polyhedron& P) {
+  check_rows(Q, "Q");
+  check_rows(P, "P");
+  if (Q.dim != P.dim)
+    throw InputError("P.dim", std::to_string(P.dim), "but Q.dim is " + std::to_string(Q.dim) + ": one space is needed");
+}
+
+}  // namespace
+
 bool Polyhedron::is_trivially_empty() const {
   return closed.size() == 1 && strict.empty() && closed[0].a.isZero() && closed[0].c > 0;
 }
 
 bool Polyhedron::contains(const VectorQ& p) const {
+  if (p.size() != dim)
+    throw InputError("p", std::to_string(p.size()) + " components", "where " + std::to_string(dim) + " are needed");
   for (const auto& h : closed)
     if (internal::affine_sign_filtered(h.a, h.c, p) < 0) return false;
   for (const auto& h : strict)
@@ -99,6 +128,7 @@ bool Polyhedron::contains(const VectorQ& p) const {
 }
 
 Polyhedron Polyhedron::intersect(const Polyhedron& other) const {
+  check_same_dim(*this, other);
   Polyhedron out = *this;
   for (const auto& h : other.closed) add_unique(out.closed, h);
   for (const auto& h : other.strict) add_unique(out.strict, h);
@@ -106,6 +136,7 @@ Polyhedron Polyhedron::intersect(const Polyhedron& other) const {
 }
 
 bool is_empty(const Polyhedron& P) {
+  check_rows(P, "P");
   // Trivial rows (a = 0) decide themselves.
   for (const auto& h : P.closed)
     if (h.a.isZero() && h.c > 0) return true;
@@ -176,6 +207,7 @@ int affine_dimension(const Polyhedron& P) {
 }
 
 std::vector<Polyhedron> subtract(const Polyhedron& Q, const Polyhedron& P) {
+  check_same_dim(Q, P);
   // Rows of P in a fixed order: closed then strict.
   struct Row {
     Halfspace h;
@@ -206,6 +238,15 @@ std::vector<Polyhedron> subtract(const Polyhedron& Q, const Polyhedron& P) {
 
 Polyhedron project_out_x(const LiftedSystem& s) {
   const int nx = s.nx, np = s.np, n = nx + np;
+  if (nx < 0 || np < 0) throw InputError(nx < 0 ? "nx" : "np", std::to_string(nx < 0 ? nx : np), "must be >= 0");
+  const auto sized = [&](const char* field, long got, long want) {
+    if (got != want) throw InputError(field, std::to_string(got), "but " + std::to_string(want) + " are needed");
+  };
+  if (s.A_eq.rows() > 0) sized("A_eq columns", s.A_eq.cols(), n);
+  if (s.A_in.rows() > 0) sized("A_in columns", s.A_in.cols(), n);
+  sized("b_eq entries", s.b_eq.size(), s.A_eq.rows());
+  sized("b_in entries", s.b_in.size(), s.A_in.rows());
+  sized("strict_in entries", static_cast<long>(s.strict_in.size()), s.A_in.rows());
   struct Row {
     VectorQ a;
     Rational b;
@@ -287,11 +328,11 @@ Polyhedron project_out_x(const LiftedSystem& s) {
 }
 
 Magnitudes ray_magnitudes(const Polyhedron& P, const VectorQ& b0, const VectorQ& g) {
-  const auto dimension = !P.closed.empty() ? P.closed[0].a.size() : !P.strict.empty() ? P.strict[0].a.size() : -1;
+  check_rows(P, "P");
   for (const auto& [v, name] : {std::pair<const VectorQ&, const char*>{b0, "b0"}, {g, "g"}})
-    if (dimension >= 0 && v.size() != dimension)
+    if (v.size() != P.dim)
       throw InputError(name, std::to_string(v.size()) + " components",
-                       "where the polyhedron is in " + std::to_string(dimension) + " dimensions");
+                       "where the polyhedron is in " + std::to_string(P.dim) + " dimensions");
   Magnitudes m;
   m.empty = false;
   m.lo = 0;

@@ -53,7 +53,18 @@ SeatingSet seating_set(const Scene& scene) {
   return S;
 }
 
+void check_seating_set_of(const Scene& scene, const SeatingSet& S, const std::string& field) {
+  const int dof = scene.body.dof, nc = scene.num_contacts();
+  bool rows_fit = true;
+  for (const auto& h : S.halfspaces) rows_fit = rows_fit && h.a.size() == dof;
+  if (S.dof != dof || S.apex.size() != dof || static_cast<int>(S.sliding.size()) != nc || !rows_fit)
+    throw InputError(field, "dof " + std::to_string(S.dof) + ", " + std::to_string(S.sliding.size()) + " fixels",
+                     "is not this scene's seating set (dof " + std::to_string(dof) + ", " + std::to_string(nc) +
+                         " fixels): build it with seating_set(scene)");
+}
+
 SeatingSystem seating_system(const Scene& scene, const SeatingSet& S) {
+  check_seating_set_of(scene, S);
   const int nc = scene.num_contacts(), n = 4 * nc;
   for (int i = 0; i < nc; ++i)
     if (S.sliding[i] == 0)
@@ -91,8 +102,22 @@ SeatingSystem seating_system(const Scene& scene, const SeatingSet& S) {
   return sys;
 }
 
-VectorQ SeatingSystem::y(const VectorQ& p_ext) const { return K_inv * (P * p_ext + a); }
-VectorQ SeatingSystem::linear_part(const VectorQ& p_ext) const { return K_inv * (P * p_ext); }
+namespace {
+void check_impulse_length(const MatrixQ& P, const VectorQ& p_ext) {
+  if (p_ext.size() != P.cols())
+    throw InputError("p_ext", std::to_string(p_ext.size()) + " components",
+                     "where " + std::to_string(P.cols()) + " are needed (dof)");
+}
+}  // namespace
+
+VectorQ SeatingSystem::y(const VectorQ& p_ext) const {
+  check_impulse_length(P, p_ext);
+  return K_inv * (P * p_ext + a);
+}
+VectorQ SeatingSystem::linear_part(const VectorQ& p_ext) const {
+  check_impulse_length(P, p_ext);
+  return K_inv * (P * p_ext);
+}
 VectorQ SeatingSystem::threshold() const { return -(K_inv * a); }
 
 Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g) {

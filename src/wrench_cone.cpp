@@ -300,11 +300,13 @@ std::string to_string(EdgeFamily family) {
 }
 
 Vec2 push_direction(const Vec2& tangent, EdgeFamily family, const Rational& mu) {
+  if (mu < 0) throw InputError("mu", to_string(mu), "must be >= 0 (a friction coefficient)");
   const Vec2 n = rot90(tangent);
   return internal::push_direction_from(n, rot90(n), family, mu);
 }
 
 bool WrenchCone::contains(const VectorQ& w) const {
+  if (w.size() != 3) throw InputError("w", std::to_string(w.size()) + " components", "where 3 are needed (fx, fy, m)");
   for (const auto& a : facets)
     if (a.dot(w) < 0) return false;
   return true;
@@ -332,6 +334,9 @@ SegmentBounds segment_bounds(const BezierPiece& segment, bool with_hull) {
 
 std::optional<WrenchCone> segment_wrench_cone(const SegmentBounds& b, const Vec2& p_AoCm_A, EdgeFamily family,
                                               const Rational& mu, ConeMethod method, bool with_facets) {
+  // A negative μ would swap the friction edges: every sub-segment's cone
+  // would look unpointed, and a caller splitting on nullopt would never stop.
+  if (mu < 0) throw InputError("mu", to_string(mu), "must be >= 0 (a friction coefficient)");
   if (!b.pointed) return std::nullopt;
   // Push directions are a fixed orientation-preserving linear image of the
   // tangent, so the extreme legs map to the extreme directions.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <thread>
 
 #include "fixel/error.h"
@@ -118,6 +119,39 @@ GTEST_TEST(Algebraic, RootsIsolatedInAThreadThatEndsAreTheMainThreadsAndLeaveNot
   EXPECT_EQ(compare(there[1], Rational(348, 1000)), -1);
   EXPECT_EQ(common, (Polynomial{-1, 1}));
   EXPECT_TRUE(root_there);
+}
+
+// An AlgebraicReal made by the caller: a reducible polynomial's rational
+// root met by a bisection was an InternalError ("a bug in fixel"), and an
+// interval without a root was refined as if it had one.
+GTEST_TEST(Algebraic, AnIntervalThatIsolatesNoIrrationalRootIsTheCallersInputError) {
+  AlgebraicReal reducible;  // x² − 1 on [0, 2]: its root 1 is rational
+  reducible.poly = ints({-1, 0, 1});
+  reducible.lo = 0;
+  reducible.hi = 2;
+  EXPECT_THROW(compare(reducible, Rational(1)), InputError);
+  EXPECT_THROW(refined(reducible, Rational(1, 10)), InputError);
+  AlgebraicReal rootless;  // x² + 1 on [0, 2]: no sign change
+  rootless.poly = ints({1, 0, 1});
+  rootless.lo = 0;
+  rootless.hi = 2;
+  for (const auto& ask : std::vector<std::function<void()>>{
+           [&] { compare(rootless, Rational(1)); }, [&] { refined(rootless, Rational(1, 10)); },
+           [&] { certified_decimal(rootless, 3); }, [&] { affine_image(rootless, Rational(0), Rational(1)); }}) {
+    try {
+      ask();
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "x");
+    }
+  }
+  // A true one still answers: √2 in [1, 2] lies between 1.41 and 1.42.
+  AlgebraicReal sqrt2;
+  sqrt2.poly = ints({-2, 0, 1});
+  sqrt2.lo = 1;
+  sqrt2.hi = 2;
+  EXPECT_EQ(compare(sqrt2, Rational(141, 100)), 1);
+  EXPECT_EQ(compare(sqrt2, Rational(142, 100)), -1);
 }
 
 }  // namespace

@@ -143,6 +143,18 @@ Rational inside(const ApproachSet& A, int k, int n) {
   return end * Rational(k, n);
 }
 
+// J of another scene: example2 has no outline for J' to read (it
+// segfaulted); a J with other fixels is refused by its count.
+TEST(Approach, AJOfAnotherSceneIsAnErrorNotACrash) {
+  const Scene polygon = test::scene_file("polygon");
+  const SustainedSet J = sustained_set(polygon);
+  EXPECT_THROW(approach_set(test::scene_file("example2"), J), SceneError);
+  Scene fewer = polygon;
+  fewer.fixels.pop_back();
+  EXPECT_THROW(approach_set(fewer, J), InputError);
+  EXPECT_NO_THROW(approach_set(polygon, J));
+}
+
 TEST(Approach, SomeTestPartsTurnFarEnoughToMatter) {
   ASSERT_EQ(parts().size(), 12u);
   int large = 0;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fixel/error.h"
+
 #include "fixel/internal/paper_reference.h"
 #include "fixel/scene_json.h"
 #include "test_util.h"
@@ -77,6 +79,43 @@ GTEST_TEST(Lcp, NamesFollowTheVariableOrder) {
   EXPECT_EQ(z[4], "p_f[0]-");
   EXPECT_EQ(z[11], "s[2]");
   EXPECT_EQ(w[9], "sigma[0]");
+}
+
+// The LCP's helpers take a later state or an impulse from the caller: each
+// is checked (a short vector was read past its end; h = 0 threw a Boost
+// error no catch of fixel::Error saw).
+GTEST_TEST(Lcp, AStateOrImpulseThatDoesNotFitTheLcpIsAnErrorNamingIt) {
+  const Scene scene = test::scene_file("example2");
+  TimeSteppingLcp lcp = build_lcp(scene);
+  try {
+    lcp.b(VectorQ::Zero(2));
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "p_ext");
+  }
+  struct Case {
+    const char* field;
+    void (*spoil)(Scene&);
+  };
+  const Case cases[] = {
+      {"body.velocity", [](Scene& s) { s.body.velocity = VectorQ(); }},
+      {"time_step", [](Scene& s) { s.time_step = 0; }},
+      {"fixels", [](Scene& s) { s.fixels.pop_back(); }},
+  };
+  for (const Case& c : cases) {
+    Scene later = scene;
+    c.spoil(later);
+    try {
+      set_lcp_state(lcp, later);
+      ADD_FAILURE() << c.field;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.field(), c.field);
+    }
+  }
+  Scene one_dof = scene;
+  one_dof.body.dof = 1;
+  EXPECT_THROW(normal_wrench_matrix(one_dof), SceneError);  // it segfaulted
+  EXPECT_THROW(require_determined_fixture(one_dof), SceneError);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <algorithm>
 #include <random>
 
@@ -215,6 +217,55 @@ GTEST_TEST(Polyhedron, AffineDimensionAgreesWithTheRowByRowDefinitionOnRandomPol
     ++by_dimension[dimension + 1];
   }
   for (int k = 0; k < 5; ++k) EXPECT_GT(by_dimension[k], 0) << "no polyhedron of dimension " << k - 1;
+}
+
+// Rows whose length is not P.dim (dim defaults to 3): is_empty and
+// affine_dimension read past 2-vectors, subtract and intersect mixed spaces
+// and answered wrongly. Each is an InputError naming the row or dim.
+GTEST_TEST(Polyhedron, RowsThatDoNotMatchDimAreAnInputErrorNamingTheRow) {
+  Polyhedron flat;  // dim left at 3, rows of the plane
+  flat.closed = {{v2(1, 0), 0}};
+  for (const auto& ask :
+       std::vector<std::function<void()>>{[&] { is_empty(flat); }, [&] { affine_dimension(flat); },
+                                          [&] { ray_magnitudes(flat, VectorQ::Zero(3), VectorQ::Ones(3)); }}) {
+    try {
+      ask();
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "P.closed[0]");
+    }
+  }
+  Polyhedron space;  // {x >= 0} in R^3
+  space.closed = {{VectorQ::Unit(3, 0), 0}};
+  const Polyhedron square = unit_square();
+  EXPECT_THROW(subtract(square, space), InputError);
+  EXPECT_THROW(square.intersect(space), InputError);
+  EXPECT_THROW(space.contains(VectorQ::Zero(2)), InputError);
+  // The same questions in one space are answered (the unit square minus
+  // {x >= 0} is empty: every point of it has x >= 0).
+  Polyhedron half = square;
+  half.closed = {{v2(1, 0), 0}};
+  EXPECT_TRUE(subtract(square, half).empty());
+  EXPECT_EQ(affine_dimension(square), 2);
+}
+
+GTEST_TEST(Polyhedron, ALiftedSystemOfInconsistentSizesIsAnInputError) {
+  LiftedSystem s;
+  s.nx = 1;
+  s.np = 2;
+  s.A_in = MatrixQ::Zero(2, 3);
+  s.b_in = VectorQ::Zero(2);
+  s.strict_in = {false, false};
+  EXPECT_NO_THROW(project_out_x(s));
+  LiftedSystem few_flags = s;
+  few_flags.strict_in = {false};
+  EXPECT_THROW(project_out_x(few_flags), InputError);
+  LiftedSystem wide_x = s;
+  wide_x.nx = 50;
+  EXPECT_THROW(project_out_x(wide_x), InputError);
+  LiftedSystem negative = s;
+  negative.nx = -1;
+  EXPECT_THROW(project_out_x(negative), InputError);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fixel/guaranteed.h"
+
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/paper_reference.h"
@@ -248,6 +250,30 @@ TEST_F(RandomScenes, PointMassScenesHaveTwoRayCones) {
       EXPECT_EQ(S.contains(p), (generator_coordinates(S, p).array() >= Rational(0)).all());
     }
   }
+}
+
+// A seating set of another shape beside a scene: an InputError naming S
+// (guaranteed_set and seating_system read past its vectors).
+GTEST_TEST(SeatingSet, ASetOfAnotherShapeBesideASceneIsAnInputErrorNamingS) {
+  const Scene example2 = test::scene_file("example2"), example1 = test::scene_file("example1");
+  const SeatingSet of_example1 = seating_set(example1);
+  const std::function<void()> calls[] = {
+      [&] { guaranteed_set(example2, of_example1); },
+      [&] { seating_system(example2, of_example1); },
+      [&] { seating_system(example2, SeatingSet{}); },
+      [&] { seat_and_stay(example2, of_example1); },
+  };
+  for (const auto& call : calls) {
+    try {
+      call();
+      ADD_FAILURE();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "S");
+    }
+  }
+  const SeatingSystem system = seating_system(example2, seating_set(example2));
+  EXPECT_THROW(system.y(test::v2(1, 2)), InputError);
+  EXPECT_THROW(system.linear_part(test::v2(1, 2)), InputError);
 }
 
 }  // namespace

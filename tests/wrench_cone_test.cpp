@@ -175,6 +175,25 @@ GTEST_TEST(WrenchCone, StraightCubicHasAZeroWidthDirectionCone) {
   EXPECT_TRUE(segment_wrench_cone(line, {1, 1}, EdgeFamily::kNormal, 0, ConeMethod::kPaper));
 }
 
+// A negative μ swapped the friction edges: the cone came back "not
+// pointed, split the segment" for every sub-segment, forever; a short
+// wrench was read past its end.
+GTEST_TEST(WrenchCone, ANegativeFrictionAndAShortWrenchAreInputErrors) {
+  const BezierPiece line{0, Rational(0), Rational(1), {{0, 0}, {1, 0}}};
+  for (const EdgeFamily family : {EdgeFamily::kWholeCone, EdgeFamily::kMinus, EdgeFamily::kPlus}) {
+    EXPECT_THROW(segment_wrench_cone(line, {0, 1}, family, Rational(-1, 2), ConeMethod::kTight), InputError);
+    EXPECT_THROW(push_direction({1, 0}, family, Rational(-1, 2)), InputError);
+  }
+  const auto cone = segment_wrench_cone(line, {0, 1}, EdgeFamily::kNormal, 0, ConeMethod::kTight);
+  ASSERT_TRUE(cone);
+  try {
+    cone->contains(test::v2(1, 1));
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "w");
+  }
+}
+
 GTEST_TEST(WrenchCone, AllZeroLegsIsADegenerateError) {
   const BezierPiece point{0, Rational(0), Rational(1), {{1, 1}, {1, 1}, {1, 1}}};
   EXPECT_THROW(segment_bounds(point), SceneError);

@@ -55,12 +55,14 @@ struct ApproachSet {
   QuadraticIrrational t_star{0, 0, 0};
   double theta_star = 0;
   /// Every contact of every pair family lies on its edge (ends included)
-  /// for θ between 0 and θ*. When false, J′ is empty: the part could turn
-  /// off an edge on its way; `edge_reason` names the fixel and the pair.
+  /// for θ between 0 and θ*. When false (and `decided`), J′ is empty: the
+  /// part could turn off an edge on its way; `edge_reason` names the fixel
+  /// and the pair. Meaningless when !decided.
   bool on_edges = false;
   std::string edge_reason;
   /// J′ has no wrench that J has not: true when J is empty or !on_edges
-  /// (J′ may still be empty when this is false).
+  /// (J′ may still be empty when this is false). Meaningless when !decided
+  /// (then J′ is unknown, not empty): read `decided` first.
   bool empty = true;
   /// Internal data of the exact tests.
   std::shared_ptr<const internal::ApproachData> data;

@@ -43,6 +43,11 @@ struct SeatingSet {
 /// when b0 or g does not have S.dof components.
 Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ& g);
 
+/// Throws InputError naming `field` unless S has the scene's shape: dof,
+/// one sliding flag per fixel, and rows and apex of length dof. (A set of
+/// another scene of the same shape is not detected: pass S of this scene.)
+void check_seating_set_of(const Scene& scene, const SeatingSet& S, const std::string& field = "S");
+
 /// Computes S for a validated scene (n_c == dof, W_n nonsingular), for
 /// sliding and sticking (v_t,i == 0) contacts alike.
 SeatingSet seating_set(const Scene& scene);
