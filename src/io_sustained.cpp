@@ -112,7 +112,9 @@ nlohmann::ordered_json internal::approach_json(const ApproachSet& A, const std::
       json h = {{"fixels", json::array({v->hold->fixels[0], v->hold->fixels[1]})}, {"theta", v->hold->theta}};
       h["t"] = v->hold->at_seat
                    ? json("t_star")
-                   : json(v->hold->t->is_rational() ? to_string(v->hold->t->lo) : certified_decimal(*v->hold->t, 12));
+                   : json(v->hold->t->is_rational()
+                              ? to_string(v->hold->t->lo)
+                              : certified_decimal(refined(*v->hold->t, parse_rational("1e-13")), 12));  // 12 digits
       out["hold"] = h;
     }
   }

@@ -40,7 +40,9 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
   long in_g = 0, lost = 0;
   std::ostringstream svg;
   svg.precision(4);
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << size + 2 * left + 260 << "' height='" << size + top + 80
+  const double width = size + 2 * left + 260, height = size + top + 80;
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height << "' viewBox='0 0 "
+      << width << " " << height
       << "' font-family='sans-serif' font-size='13'>\n<rect width='100%' height='100%' fill='white'/>\n";
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
@@ -82,8 +84,9 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
         << left + 20 << "' y='" << ly << "'>in G: one-step: guaranteed (" << in_g << " cells)</text>\n<rect x='"
         << left + 330 << "' y='" << ly - 10 << "' width='14' height='10' fill='#d73027'/><text x='" << left + 350
         << "' y='" << ly << "'>in S, not in G (" << lost << " cells)</text>\n<text x='" << left << "' y='" << ly + 22
-        << "'>white: outside S. Each cell's centre is decided exactly; " << G->pieces.size() << " pieces, "
-        << G->non_seating.size() << " non-seating sets meet S.</text>\n</svg>\n";
+        << "'>white: outside S. Each cell's centre is decided exactly; " << G->pieces.size()
+        << (G->pieces.size() == 1 ? " piece, " : " pieces, ") << G->non_seating.size()
+        << " non-seating sets meet S.</text>\n</svg>\n";
   }
   std::ofstream out(path);
   if (!out) throw InputError("svg(path)", path, "cannot be written");

@@ -65,8 +65,10 @@ void bind_sustained(py::module_& m) {
           py::dict d;
           d["fixels"] = py::make_tuple(hold.fixels[0], hold.fixels[1]);
           d["theta"] = hold.theta;
-          d["t"] = hold.at_seat ? std::string("t_star")
-                                : (hold.t->is_rational() ? to_string(hold.t->lo) : certified_decimal(*hold.t, 12));
+          d["t"] = hold.at_seat
+                       ? std::string("t_star")
+                       : (hold.t->is_rational() ? to_string(hold.t->lo)
+                                                : certified_decimal(refined(*hold.t, parse_rational("1e-13")), 12));
           d["slide"] = hold.slide ? py::object(py::float_(*hold.slide)) : py::none();
           h = d;
         }
