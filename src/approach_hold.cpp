@@ -193,10 +193,18 @@ std::string holds(const ApproachSet& A, const FieldWrench& v, ApproachHold* hold
 using internal::Q2;
 
 namespace internal {
+
+void require_decided(const ApproachSet& A) {
+  if (A.decided) return;
+  // approach_set gives every undecided set its reason; none means no data.
+  if (A.undecided_reason.empty()) throw InputError("J'", "", "has no data (default-constructed ApproachSet)");
+  throw UnsupportedError("J'", "", "cannot be decided: " + A.undecided_reason);
+}
+
 namespace {
 
 std::string world_reason(const ApproachSet& A, const VectorQ& w_W, ApproachHold* hold, bool witness) {
-  if (!A.decided) throw UnsupportedError("J'", "", "cannot be decided: " + A.undecided_reason);
+  require_decided(A);
   std::string reason = A.J.why_not(w_W);
   if (!reason.empty()) return reason;
   if (!A.on_edges) return "J' is empty: " + A.edge_reason;
@@ -204,7 +212,7 @@ std::string world_reason(const ApproachSet& A, const VectorQ& w_W, ApproachHold*
 }
 
 std::string part_frame_reason(const ApproachSet& A, const VectorQ& w_B, ApproachHold* hold, bool witness) {
-  if (!A.decided) throw UnsupportedError("J'", "", "cannot be decided: " + A.undecided_reason);
+  require_decided(A);
   std::string reason = why_not_in_frame_B(A.J, w_B);
   if (!reason.empty()) return reason;
   if (!A.on_edges) return "J' is empty: " + A.edge_reason;

@@ -67,7 +67,7 @@ void add_jam(std::vector<Data<Q2>::Jam>& jams, const std::array<int, 2>& fixels,
 std::unique_ptr<RegionTarget> approach_target(const ApproachSet& A) {
   using internal::Q2;
   using internal::V;
-  if (!A.decided) throw UnsupportedError("J'", "", "cannot be decided: " + A.undecided_reason);
+  internal::require_decided(A);
   if (!A.data || !A.J.data) throw InputError("J'", "", "has no data (default-constructed ApproachSet)");
   const auto* seat = std::get_if<internal::Data<Q2>>(&A.J.data->data);
   if (!seat) throw UnsupportedError("J'", "", "needs an exact seated pose");

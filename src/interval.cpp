@@ -1,5 +1,6 @@
 #include "fixel/interval.h"
 
+#include "fixel/error.h"
 #include "fixel/internal/readable.h"
 
 namespace fixel {
@@ -9,6 +10,7 @@ bool Magnitudes::ends_cross(const Rational& lo, bool lo_closed, const std::optio
 }
 
 Magnitudes Magnitudes::make(const Rational& lo, bool lo_closed, const std::optional<Rational>& hi, bool hi_closed) {
+  if (lo < 0) throw InputError("lo", to_string(lo), "must be >= 0 (an interval of magnitudes)");
   Magnitudes m;
   m.lo = lo;
   m.lo_closed = lo_closed;

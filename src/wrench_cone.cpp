@@ -160,7 +160,7 @@ WrenchCone tight(const SegmentBounds& b, const Vec2& p_AoCm_A, const Vec2& ds, c
 // in_cone (geometry.h) with each cross-product sign filtered.
 bool in_cone_filtered(const Vec2& d, const Vec2& a, const Vec2& b) {
   using internal::orientation_filtered;
-  if (orientation_filtered(a, b) == 0) return orientation_filtered(a, d) == 0 && dot(a, d) > 0;
+  if (orientation_filtered(a, b) == 0) return orientation_filtered(a, d) == 0 && dot(a, d) >= 0;
   return orientation_filtered(a, d) >= 0 && orientation_filtered(d, b) >= 0;
 }
 

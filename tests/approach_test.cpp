@@ -573,6 +573,14 @@ TEST(Approach, BadInputIsATypedErrorNamingTheField) {
     EXPECT_NE(std::string(e.what()).find("wrench"), std::string::npos);
   }
   EXPECT_THROW(approach_set(p.scene, SustainedSet{}), InputError);
+  // A default-constructed J' says it has no data, as a default J does.
+  try {
+    ApproachSet{}.contains(test::vec({Rational(1), Rational(0), Rational(0)}));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("default-constructed ApproachSet"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(approach_target(ApproachSet{}), InputError);
   ApproachSet undecided;
   undecided.undecided_reason = "test";
   EXPECT_THROW(undecided.contains(test::vec({Rational(1), Rational(0), Rational(0)})), UnsupportedError);

@@ -34,5 +34,20 @@ GTEST_TEST(Geometry, AContactWrenchOfADofOtherThanTwoOrThreeIsAnInputError) {
   }
 }
 
+// The cone is closed, so the zero vector is in it whether or not its legs
+// are parallel (it was out when they were).
+GTEST_TEST(Geometry, TheZeroVectorIsInEveryClosedPlanarCone) {
+  const Vec2 zero{0, 0};
+  EXPECT_TRUE(in_cone(zero, {1, 0}, {0, 1}));
+  EXPECT_TRUE(in_cone(zero, {1, 0}, {2, 0}));
+  // A ray: along it in, against it or off it out.
+  EXPECT_TRUE(in_cone({3, 0}, {1, 0}, {2, 0}));
+  EXPECT_FALSE(in_cone({-3, 0}, {1, 0}, {2, 0}));
+  EXPECT_FALSE(in_cone({1, 1}, {1, 0}, {2, 0}));
+  // A quarter plane: its edges in, outside out.
+  EXPECT_TRUE(in_cone({0, 5}, {1, 0}, {0, 1}));
+  EXPECT_FALSE(in_cone({-1, 1}, {1, 0}, {0, 1}));
+}
+
 }  // namespace
 }  // namespace fixel

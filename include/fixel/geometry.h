@@ -25,9 +25,10 @@ inline bool is_zero(const Vec2& v) { return v.x == 0 && v.y == 0; }
 /// Sign of a ⊗ b: +1 when b is counter-clockwise of a, −1 clockwise, 0 parallel.
 inline int orientation(const Vec2& a, const Vec2& b) { return sign(cross(a, b)); }
 /// d lies in the closed planar cone spanned by a then b counter-clockwise
-/// (angle < π; a single ray when a and b are parallel and alike).
+/// (angle < π; a single ray when a and b are parallel and alike). The cone
+/// is closed: d = 0 is in it.
 inline bool in_cone(const Vec2& d, const Vec2& a, const Vec2& b) {
-  if (cross(a, b) == 0) return cross(a, d) == 0 && dot(a, d) > 0;
+  if (cross(a, b) == 0) return cross(a, d) == 0 && dot(a, d) >= 0;
   return cross(a, d) >= 0 && cross(d, b) >= 0;
 }
 

@@ -21,6 +21,7 @@ struct Magnitudes {
   bool hi_closed = false;
 
   /// The interval with these ends; `empty` is set when no number is inside.
+  /// Throws InputError when lo < 0.
   static Magnitudes make(const Rational& lo, bool lo_closed, const std::optional<Rational>& hi, bool hi_closed);
   /// True when the ends leave no number inside (hi < lo, or hi == lo with an open end).
   static bool ends_cross(const Rational& lo, bool lo_closed, const std::optional<Rational>& hi, bool hi_closed);

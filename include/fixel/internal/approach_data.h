@@ -12,7 +12,15 @@
 #include "fixel/internal/polyline_edge.h"
 #include "fixel/seated_pose.h"
 
+namespace fixel {
+struct ApproachSet;
+}  // namespace fixel
+
 namespace fixel::internal {
+
+// Throws unless A is decided: InputError for a default-constructed set,
+// UnsupportedError (with A's reason) for one that could not be decided.
+void require_decided(const ApproachSet& A);
 
 using PolyVec3 = std::array<Polynomial, 3>;
 
