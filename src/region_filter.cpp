@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fixel/internal/cone_extremes.h"
 #include "fixel/internal/paper_cone_filter.h"
 #include "fixel/internal/wrench_cone_detail.h"
 
@@ -18,33 +19,8 @@ namespace fixel::internal {
 // The extremes of enclosed directions (internal/enclosed_plane.h).
 bool enclosed::extremes(const FVecs& v, std::size_t& first, std::size_t& last) {
   auto orient = [&](std::size_t i, std::size_t j) { return i == j ? 0 : sign_of(fcross(v[i], v[j])); };
-  int s = -1, e = -1;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    bool all_ccw = true, all_cw = true;
-    for (std::size_t j = 0; j < v.size() && (all_ccw || all_cw); ++j) {
-      const int o = orient(i, j);
-      all_ccw = all_ccw && o >= 0;
-      all_cw = all_cw && o <= 0;
-    }
-    if (all_ccw && s < 0) s = static_cast<int>(i);
-    if (all_cw && e < 0) e = static_cast<int>(i);
-  }
-  if (s < 0 || e < 0) return false;
-  const FVec2 &f = v[s], &l = v[e];
-  const int c = orient(s, e);
-  if (c < 0 || (c == 0 && sign_of(fdot(f, l)) < 0)) return false;
-  for (std::size_t j = 0; j < v.size(); ++j) {
-    const int a = orient(s, j);
-    bool inside;
-    if (c == 0)
-      inside = a == 0 && sign_of(fdot(f, v[j])) > 0;
-    else
-      inside = a >= 0 && orient(j, e) >= 0;
-    if (!inside && !(c == 0 && a == 0 && sign_of(fdot(f, v[j])) > 0)) return false;
-  }
-  first = static_cast<std::size_t>(s);
-  last = static_cast<std::size_t>(e);
-  return true;
+  return cone_extremes(
+      v.size(), orient, [&](std::size_t i, std::size_t j) { return sign_of(fdot(v[i], v[j])); }, first, last);
 }
 
 namespace {

@@ -8,6 +8,7 @@
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
+#include "fixel/internal/cone_extremes.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/wrench_cone_detail.h"
 
@@ -39,34 +40,12 @@ bool direction_extremes(const std::vector<Vec2>& v, Vec2& first, Vec2& last) {
     return i == j || (v[i].x == v[j].x && v[i].y == v[j].y) ? 0
                                                             : internal::orientation_filtered(v[i], f[i], v[j], f[j]);
   };
-  int s = -1, e = -1;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    bool all_ccw = true, all_cw = true;
-    for (std::size_t j = 0; j < v.size() && (all_ccw || all_cw); ++j) {
-      const int o = orient(i, j);
-      all_ccw = all_ccw && o >= 0;
-      all_cw = all_cw && o <= 0;
-    }
-    if (all_ccw && s < 0) s = static_cast<int>(i);
-    if (all_cw && e < 0) e = static_cast<int>(i);
-  }
-  if (s < 0 || e < 0) return false;
+  std::size_t s = 0, e = 0;
+  if (!internal::cone_extremes(
+          v.size(), orient, [&](std::size_t i, std::size_t j) { return sign(dot(v[i], v[j])); }, s, e))
+    return false;
   first = v[s];
   last = v[e];
-  const int c = orient(s, e);
-  if (c < 0 || (c == 0 && dot(first, last) < 0)) return false;  // spans π or more
-  // Anti-parallel legs inside (span exactly π) are caught by the test above
-  // only through the extremes; check every pair against the extremes too
-  // (in_cone(w, first, last), or w along first when they are parallel).
-  for (std::size_t j = 0; j < v.size(); ++j) {
-    const int a = orient(s, j);
-    bool inside;
-    if (c == 0)
-      inside = a == 0 && dot(first, v[j]) > 0;
-    else
-      inside = a >= 0 && orient(j, e) >= 0;
-    if (!inside && !(c == 0 && a == 0 && dot(first, v[j]) > 0)) return false;
-  }
   return true;
 }
 
