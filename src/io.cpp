@@ -290,8 +290,11 @@ std::string outcomes_json(const Scene& scene, const VectorQ& p_ext, const std::v
 
 std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::vector<Outcome>& outcomes) {
   std::ostringstream out;
+  bool family = false;
+  for (const auto& o : outcomes) family = family || !o.isolated;
   out << "Outcomes of one step of scene \"" << scene.name << "\" under p = " << text(p_ext) << " N*s ("
-      << outcomes.size() << " distinct, by exact enumeration of contact modes)\n";
+      << outcomes.size() << " distinct, by exact enumeration of contact modes"
+      << (family ? "; those marked lie on a family of infinitely many outcomes" : "") << ")\n";
   out << "  units: velocity in m/s, m/s, rad/s; gaps in m; impulses in N*s\n";
   int seating = 0;
   for (std::size_t k = 0; k < outcomes.size(); ++k) {

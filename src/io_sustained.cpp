@@ -214,7 +214,7 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
         << ",\n         cos theta = " << (*q.exact)[2].text() << ", sin theta = " << (*q.exact)[3].text() << "\n";
   if (std::abs(q.approx[2]) >= kValidatedRotation)
     out << "warning: |theta*| >= " << kValidatedRotation
-        << " rad: J is evaluated at q* only; Box2D has shown jams on the way to such seats "
+        << " rad: J is evaluated at q* only; in Box2D, pushes in J failed more often on the way to such seats "
            "(docs/physics.md). Use the approach-aware J' below, or validate with `fixel region --push sustained "
            "--validate N`.\n";
   out << "friction used (upper ends):";

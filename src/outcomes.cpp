@@ -53,6 +53,31 @@ Outcome make_outcome(const Scene& scene, const ContactMatrices& W, const std::ve
   return o;
 }
 
+// Whether a singular mode's solution set {A_eq x = b_eq, A_in x ≥ b_in},
+// known to hold x0, holds another point too: a family. Each direction of
+// A_eq's null space is tried both ways (exact LPs); the set is x0 alone
+// iff no direction moves along it.
+bool holds_a_family(int n, const std::vector<internal::LinearConstraint>& rows, const MatrixQ& A_eq,
+                    const VectorQ& x0) {
+  const MatrixQ kernel = internal::exact_lu(A_eq).kernel();
+  for (int j = 0; j < kernel.cols(); ++j) {
+    for (const int side : {1, -1}) {
+      const VectorQ c = Rational(side) * kernel.col(j);
+      if (c.isZero()) continue;  // a trivial kernel is one zero column
+      const internal::LpResult lp = internal::solve_lp(n, rows, c);
+      if (lp.status == internal::LpStatus::kUnbounded || lp.value != c.dot(x0)) return true;
+    }
+  }
+  return false;
+}
+
+// x = (ν, p_n, p_t) satisfies the mode's system exactly.
+bool in_mode_set(const ModeSystem& sys, const Outcome& o) {
+  VectorQ x(o.velocity.size() + o.p_n.size() + o.p_t.size());
+  x << o.velocity, o.p_n, o.p_t;
+  return sys.A_eq * x == sys.b_eq && ((sys.A_in * x - sys.b_in).array() >= Rational(0)).all();
+}
+
 }  // namespace
 
 std::vector<ContactMode> contact_modes(long code, int num_contacts) {
@@ -135,6 +160,7 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
   const int nc = scene.num_contacts(), n = scene.body.dof + 2 * nc;
   const ContactMatrices W = contact_matrices(scene);
   std::vector<Outcome> out;
+  std::vector<ModeSystem> families;  // the singular modes holding two or more points
   long total = 1;
   for (int i = 0; i < nc; ++i) total *= 4;
   for (long code = 0; code < total; ++code) {
@@ -158,7 +184,10 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
       const internal::LpResult lp = internal::solve_lp(n, rows);
       if (lp.status == internal::LpStatus::kInfeasible) continue;
       x = lp.x;
-      isolated = false;
+      // Singular equations may still leave one point, pinned by the
+      // inequalities; only a set of two or more is a family.
+      isolated = !holds_a_family(n, rows, sys.A_eq, x);
+      if (!isolated) families.push_back(sys);
       // A family may hold seating and non-seating outcomes: for each open
       // contact, maximise its gap W_n,iᵀν⁺ (exact LP) and report a point
       // where it is positive, so that no non-seating outcome is missed.
@@ -178,7 +207,7 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
           y = internal::solve_lp(n, bounded).x;
         }
         if (y.size() == 0) continue;
-        Outcome o = make_outcome(scene, W, modes, y, false);
+        Outcome o = make_outcome(scene, W, modes, y, isolated);
         if (o.seated) continue;
         bool seen = false;
         for (const auto& prev : out) seen = seen || same_outcome(prev, o);
@@ -190,6 +219,10 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
     for (const auto& prev : out) seen = seen || same_outcome(prev, o);
     if (!seen) out.push_back(std::move(o));
   }
+  // An outcome lying in a family's set, whichever mode listed it (a family
+  // meets regular modes' outcomes at its ends), is not isolated.
+  for (auto& o : out)
+    for (const auto& family : families) o.isolated = o.isolated && !in_mode_set(family, o);
   return out;
 }
 

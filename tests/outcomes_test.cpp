@@ -68,6 +68,31 @@ GTEST_TEST(Outcomes, NonuniquenessSceneHasASeatingAndANonSeatingOutcome) {
   EXPECT_EQ(non_seating, 2);  // (open, slide+, open) and (slide+, slide+, open)
 }
 
+// A sticking contact with the others closed leaves a family of outcomes
+// (docs/theory.md §5): Example 2 with gaps (1/10, 0, 0) under p = (−1, −1, −1).
+// The listed outcomes are the family's ends; their midpoint solves the step
+// LCP too (checked by is_solution), so none of them is isolated. Both were
+// marked isolated: the family's own point was dropped as a duplicate of one.
+GTEST_TEST(Outcomes, OutcomesOnAFamilyAreNotMarkedIsolated) {
+  Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/example2.json");
+  ASSERT_EQ(scene.fixels[0].gap, Rational(1, 10));
+  scene.fixels[1].gap = 0;
+  scene.fixels[2].gap = 0;
+  const VectorQ p = vec({-1, -1, -1});
+  const auto outcomes = enumerate_outcomes(scene, p);
+  ASSERT_EQ(outcomes.size(), 2u);
+  EXPECT_NE(outcomes[0].p_n, outcomes[1].p_n);
+  for (const auto& o : outcomes) {
+    expect_outcome_solves_lcp(scene, p, o);
+    EXPECT_FALSE(o.isolated);
+  }
+  Outcome mid = outcomes[0];
+  mid.velocity = (outcomes[0].velocity + outcomes[1].velocity) / Rational(2);
+  mid.p_n = (outcomes[0].p_n + outcomes[1].p_n) / Rational(2);
+  mid.p_t = (outcomes[0].p_t + outcomes[1].p_t) / Rational(2);
+  expect_outcome_solves_lcp(scene, p, mid);
+}
+
 GTEST_TEST(Outcomes, RejectsAnImpulseOfTheWrongLength) {
   const Scene scene = parse_scene(internal::paper::kExample2Scene);
   EXPECT_THROW(enumerate_outcomes(scene, vec({1, 2})), InputError);
