@@ -20,14 +20,14 @@ void check_isolating(const AlgebraicReal& x) {
   if (x.poly.size() < 3 || !(x.lo < x.hi) || sign_at(x.poly, x.lo) * sign_at(x.poly, x.hi) >= 0)
     throw InputError("x", "[" + to_string(x.lo) + ", " + to_string(x.hi) + "]",
                      "is not an isolating interval of an irrational root of x.poly (degree >= 2, a sign change "
-                     "between lo and hi, as real_roots gives)");
+                     "between lo and hi, and no other root there)");
 }
 
 void split_at(AlgebraicReal& x, const Rational& m) {
   const int s_m = sign_at(x.poly, m);
   if (s_m == 0)
     throw InputError("x.poly", "root " + to_string(m),
-                     "has a rational root: it must be irreducible (as real_roots gives)");
+                     "has a rational root: it must be irreducible (as the exact region's ends are)");
   (s_m == sign_at(x.poly, x.lo) ? x.lo : x.hi) = m;
 }
 

@@ -139,6 +139,7 @@ void check_candidate_list(const std::vector<DesignCandidate>& candidates, const 
 
 std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::optional<Rational>& spacing) {
   const Boundary& b = boundary_of(part);
+  check_scene_values(part);
   if (spacing && *spacing <= 0) throw InputError("boundary_candidates(spacing)", to_string(*spacing), "must be > 0");
   // Arc length by chords of 128 points per piece (placement only).
   struct Sample {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "fixel/error.h"
 
@@ -242,6 +243,11 @@ std::optional<Vec2> exact_unit(const Vec2& v) {
 }
 
 Vec2 nearby_exact_unit(double radians) {
+  if (!std::isfinite(radians)) {
+    std::ostringstream shown;
+    shown << radians;
+    throw InputError("radians", shown.str(), "must be finite");
+  }
   // Reduce to |θ| ≤ π/2, where t = tan(θ/2) ∈ [−1, 1]; flip back at the end.
   double theta = std::remainder(radians, 2 * M_PI);
   bool flip = false;

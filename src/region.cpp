@@ -306,6 +306,7 @@ void check_region_scene(const Scene& scene) {
   if (scene.body.dof != 3)
     throw SceneError("body.dof", std::to_string(scene.body.dof),
                      "a point mass has no boundary to push on: the pushing region needs a rigid body (dof 3)");
+  check_scene_values(scene);
 }
 
 void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {

@@ -61,6 +61,31 @@ std::string exact_text(const Vec2& v) { return "(" + to_string(v.x) + ", " + to_
 
 }  // namespace
 
+namespace {
+
+// A Boundary assembled by hand rather than by make_boundary: what every
+// use of it indexes (pieces, their curves, the mass) must be there. The
+// geometry itself is make_boundary's to check.
+void check_boundary_shape(const Boundary& boundary) {
+  const std::string how = ": build it with make_boundary";
+  if (boundary.curves.empty()) throw SceneError("body.boundary", "0 curves", "has no curves" + how);
+  if (boundary.pieces.empty()) throw SceneError("body.boundary", "0 pieces", "has no Bezier pieces" + how);
+  std::vector<bool> covered(boundary.curves.size(), false);
+  for (const auto& piece : boundary.pieces) {
+    if (piece.curve < 0 || piece.curve >= static_cast<int>(boundary.curves.size()) || piece.control.size() < 2)
+      throw SceneError("body.boundary", "a piece of curve " + std::to_string(piece.curve),
+                       "does not match the curves" + how);
+    covered[static_cast<std::size_t>(piece.curve)] = true;
+  }
+  for (std::size_t k = 0; k < covered.size(); ++k)
+    if (!covered[k])
+      throw SceneError("body.boundary[" + std::to_string(k) + "]", "no pieces", "has no Bezier pieces" + how);
+  if (!(boundary.mass.area > 0))
+    throw SceneError("body.boundary", "area " + to_string(boundary.mass.area), "must be positive" + how);
+}
+
+}  // namespace
+
 void check_fixels_on_boundary(const Scene& scene) {
   if (!scene.body.boundary) return;
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
@@ -113,6 +138,7 @@ void check_scene_values(const Scene& scene) {
   }
   check_friction(scene.pusher_mu, scene.pusher_mu_hi, "pusher.mu");
   check_length(scene.background_impulse, b.dof, "background_impulse");
+  if (b.boundary) check_boundary_shape(*b.boundary);
 }
 
 }  // namespace fixel

@@ -125,6 +125,7 @@ SeatedPose seated_pose(const Scene& scene) {
     throw SceneError("body.boundary", "", "is missing: the seated pose needs the part's outline");
   if (scene.body.dof != 3)
     throw SceneError("body.dof", "2", "is a point mass, which has no seated pose to rotate into");
+  check_scene_values(scene);
   const int nc = scene.num_contacts();
   bool all_closed = true;
   for (const auto& f : scene.fixels) all_closed = all_closed && f.gap == 0;

@@ -55,6 +55,8 @@ std::string expect_equal(const std::string& what, const VectorQ& got, const Vect
 }  // namespace
 
 Rational round_decimal(const Rational& x, int decimals) {
+  if (decimals < 0 || decimals > kMaxRoundDecimals)
+    throw InputError("decimals", std::to_string(decimals), "must be 0 to " + std::to_string(kMaxRoundDecimals));
   const Integer scale = boost::multiprecision::pow(Integer(10), static_cast<unsigned>(decimals));
   const Rational scaled = boost::multiprecision::abs(x) * Rational(scale);
   const Integer q = boost::multiprecision::numerator(scaled), d = boost::multiprecision::denominator(scaled);

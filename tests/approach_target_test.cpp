@@ -212,7 +212,7 @@ TEST(ApproachTarget, TheExactRegionIsRefusedWithAReason) {
   RegionOptions options;
   options.exact = true;
   EXPECT_THROW(compute_region(p.scene, *approach_target(p.A), options), UnsupportedError);
-  EXPECT_THROW(approach_target(ApproachSet{}), UnsupportedError);
+  EXPECT_THROW(approach_target(ApproachSet{}), InputError);  // no data, not undecided
 }
 
 }  // namespace

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "fixel/error.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -105,6 +108,11 @@ GTEST_TEST(OnBoundary, TheSuggestedUnitNormalIsExactlyUnitAndWithinANanoradian) 
     EXPECT_EQ(n.x * n.x + n.y * n.y, 1) << angle;
     EXPECT_LT(std::abs(std::remainder(std::atan2(to_double(n.y), to_double(n.x)) - angle, 2 * M_PI)), 1e-9) << angle;
   }
+}
+
+// NaN went through an undefined cast to a 2,000-digit "unit vector".
+GTEST_TEST(OnBoundary, ANonFiniteAngleHasNoSuggestedNormal) {
+  for (double angle : {std::nan(""), HUGE_VAL, -HUGE_VAL}) EXPECT_THROW(nearby_exact_unit(angle), InputError) << angle;
 }
 
 }  // namespace

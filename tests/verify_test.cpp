@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fixel/error.h"
+
 namespace fixel {
 namespace {
 
@@ -17,6 +19,14 @@ GTEST_TEST(RoundDecimal, RoundsHalfAwayFromZeroExactly) {
   EXPECT_EQ(round_decimal(parse_rational("0.00005"), 4), parse_rational("0.0001"));
   EXPECT_EQ(round_decimal(parse_rational("0.000049999999999999999"), 4), Rational(0));
   EXPECT_EQ(round_decimal(parse_rational("-0.00005"), 4), parse_rational("-0.0001"));
+}
+
+// -1 became 10^4294967295 through an unsigned cast, and ran for ever.
+GTEST_TEST(RoundDecimal, PlacesOutsideZeroToTheLimitAreAnInputError) {
+  EXPECT_THROW(round_decimal(Rational(1, 3), -1), InputError);
+  EXPECT_THROW(round_decimal(Rational(1, 3), kMaxRoundDecimals + 1), InputError);
+  EXPECT_EQ(round_decimal(Rational(1, 3), 0), Rational(0));
+  EXPECT_EQ(round_decimal(Rational(2, 3), 0), Rational(1));
 }
 
 }  // namespace

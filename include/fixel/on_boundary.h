@@ -53,7 +53,8 @@ std::optional<Vec2> exact_unit(const Vec2& v);
 /// A rational unit vector within about 1e-9 rad of the direction of angle
 /// `radians` (from the +x axis): a rational point of the unit circle from a
 /// continued-fraction approximation of the half-angle tangent. For
-/// suggestions in messages; exactly of unit length.
+/// suggestions in messages; exactly of unit length. Throws InputError when
+/// `radians` is not finite.
 Vec2 nearby_exact_unit(double radians);
 
 }  // namespace fixel

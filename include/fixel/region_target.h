@@ -70,7 +70,7 @@ class RegionTarget {
   /// Throws if the target cannot answer for a pusher with friction `mu`.
   virtual void check_pusher(const Rational& mu) const { (void)mu; }
 
-  /// The target's answers on interval enclosures (internal/region_filter.h),
+  /// The target's answers on interval enclosures (fixel's own targets; internal),
   /// or null: the region code then asks only the exact questions above.
   virtual internal::IntervalTarget* interval_target() { return nullptr; }
 
