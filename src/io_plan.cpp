@@ -123,6 +123,7 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   } else if (plan.approach) {
     out << "  sustained push, approach-aware J': not judged: " << plan.J_approach_note << "\n";
   }
+  if (plan.approach) out << "  " << seat_rotation_note(plan.approach->J.pose);
   return out.str();
 }
 

@@ -152,9 +152,9 @@ std::string region_text(const Scene& scene, const Region& region) {
   out << "  IN means \"" << meaning << "\""
       << (region.target == "S"   ? ": some outcome of the one-step model seats"
           : region.target == "G" ? ": every outcome of the one-step model seats"
-          : region.target == "J" ? ": the held push drives the part into its seat"
-                                 : ": the held push drives the part into its seat, and no pair of fixels can hold it "
-                                   "at any two-contact pose on the way")
+          : region.target == "J" ? ": the held push drives the part into its seat (in the model linearised there)"
+                                 : ": the held push drives the part into its seat (in the model linearised there), and "
+                                   "no pair of fixels can hold it at any two-contact pose on the way")
       << "; what it is worth in a physics engine: docs/physics.md\n";
   out << "  each line: curve and parameter span, status, where it is on the part (m, frame A), outline length, the "
          "frictionless push direction\n";

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -18,8 +19,28 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-// |θ*| below which Box2D seated every J wrench tried (docs/physics.md).
+// |θ*| from which the seat report warns: past it, J's failures in Box2D
+// grow (docs/physics.md, "J′ in the engine"). Not a guarantee below it.
 constexpr double kValidatedRotation = 0.2;
+
+}  // namespace
+
+std::string seat_rotation_note(const SeatedPose& q) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(5);
+  if (std::abs(q.approx[2]) >= kValidatedRotation)
+    out << "warning: |theta*| = " << std::abs(q.approx[2]) << " rad >= " << kValidatedRotation
+        << " rad: J is decided at q* only; in Box2D, pushes in J failed more often on the way to such seats "
+           "(docs/physics.md). Use the approach-aware J' (--approach), and validate with `fixel region --push "
+           "sustained --validate N`.\n";
+  else
+    out << "note: |theta*| = " << std::abs(q.approx[2])
+        << " rad; J (and J') are decided in the model linearised at q*: far from the seat the part can still escape "
+           "(docs/physics.md, \"Where J and J' fail\"); validate with --validate N.\n";
+  return out.str();
+}
+
+namespace {
 
 json exact3(const std::array<QuadraticIrrational, 3>& v) {
   return json::array({v[0].text(), v[1].text(), v[2].text()});
@@ -212,11 +233,7 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
   if (q.exact && !q.at_scene_pose)
     out << "  exact: x = " << (*q.exact)[0].text() << ", y = " << (*q.exact)[1].text()
         << ",\n         cos theta = " << (*q.exact)[2].text() << ", sin theta = " << (*q.exact)[3].text() << "\n";
-  if (std::abs(q.approx[2]) >= kValidatedRotation)
-    out << "warning: |theta*| >= " << kValidatedRotation
-        << " rad: J is evaluated at q* only; in Box2D, pushes in J failed more often on the way to such seats "
-           "(docs/physics.md). Use the approach-aware J' below, or validate with `fixel region --push sustained "
-           "--validate N`.\n";
+  out << seat_rotation_note(q);
   out << "friction used (upper ends):";
   for (const auto& m : J.mu) out << " " << to_string(m);
   out << "\n";

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "fixel/curve.h"
@@ -226,10 +227,60 @@ PushResult push(const Scene& scene, const VectorQ& w, const PushOptions& options
   return push(scene, to_wrench(w, scene.body.dof), options);
 }
 
+namespace {
+
+// The push's own time scale (display, never a decision): the time a
+// constant force takes to move the part by its size from rest, a constant
+// moment to turn it by a radian, an impulse's velocity to carry it its
+// size; the least of those that apply.
+double push_time_scale(const Scene& scene, const Wrench& w, const PushOptions& options, double size) {
+  const double m = to_double(scene.body.mass);
+  double t = INFINITY;
+  const double force = std::hypot(w.fx, w.fy);
+  if (force > 0) t = std::min(t, std::sqrt(m * size / force));
+  if (scene.body.dof == 3 && w.m != 0) t = std::min(t, std::sqrt(to_double(scene.body.inertia) / std::abs(w.m)));
+  if (options.impulse) {
+    const auto& p = *options.impulse;
+    const double dv = std::hypot(p[0], p[1]) / m;
+    if (dv > 0) t = std::min(t, size / dv);
+  }
+  return std::isfinite(t) ? t : 0;
+}
+
+// The thresholds are tied to h and dt (docs/physics.md, "Outcomes"); a push
+// far faster or slower than them is measured badly, and says so.
+void add_time_scale_warnings(PushResult& r, double h) {
+  if (r.time_scale <= 0) return;
+  std::ostringstream w;
+  w << std::setprecision(3);
+  if (r.time_scale < 50 * r.dt) {
+    w << "the push's time scale, about " << r.time_scale << " s, is only " << r.time_scale / r.dt
+      << " engine steps (dt = " << r.dt
+      << " s): the engine may not resolve it (a timeout, or the part pushed through a fixel). "
+         "Give the scene a smaller time_step h (dt = h/1000)";
+    r.warnings.push_back(w.str());
+  } else if (r.time_scale > 10 * h) {
+    w << "the push's time scale, about " << r.time_scale << " s, is over 10 h (h = " << h
+      << " s): \"at rest\" (slower than " << r.rest_speed
+      << " m/s) can hold while the part still moves into its seat, so \"jammed\" may be a slow seat and "
+         "\"timeout\" a seat not yet reached. Give the scene a time_step h near "
+      << r.time_scale << " s";
+    r.warnings.push_back(w.str());
+  }
+}
+
+}  // namespace
+
 PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options) {
   if (options.time <= 0) throw InputError("PushOptions.time", to_string(options.time), "must be > 0");
   if (options.steps_per_h < 1000)
     throw InputError("PushOptions.steps_per_h", std::to_string(options.steps_per_h), "must be >= 1000 (dt <= h/1000)");
+  for (const auto& [iterations, field] : {std::pair{options.velocity_iterations, "PushOptions.velocity_iterations"},
+                                          std::pair{options.position_iterations, "PushOptions.position_iterations"}})
+    if (iterations < 1 || iterations > kMaxSolverIterations)
+      throw InputError(field, std::to_string(iterations), "must be 1 to " + std::to_string(kMaxSolverIterations));
+  if (options.impulse)
+    for (const double p : *options.impulse) engine_float(p, "PushOptions.impulse");
   if (!std::isfinite(w.fx) || !std::isfinite(w.fy) || !std::isfinite(w.m)) {
     std::ostringstream shown;
     shown << "(" << w.fx << ", " << w.fy << ", " << w.m << ")";
@@ -245,9 +296,12 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   if (options.impulse) {
     const auto& p = *options.impulse;
     const double mass = to_double(scene.body.mass);
-    e.part->SetLinearVelocity(e.part->GetLinearVelocity() + b2Vec2(float(e.s * p[0] / mass), float(e.s * p[1] / mass)));
+    const char* field = "PushOptions.impulse";  // checked above; its velocity change must fit a float too
+    e.part->SetLinearVelocity(e.part->GetLinearVelocity() +
+                              b2Vec2(engine_float(e.s * p[0] / mass, field), engine_float(e.s * p[1] / mass, field)));
     if (scene.body.dof == 3)
-      e.part->SetAngularVelocity(e.part->GetAngularVelocity() + float(p[2] / to_double(scene.body.inertia)));
+      e.part->SetAngularVelocity(e.part->GetAngularVelocity() +
+                                 engine_float(p[2] / to_double(scene.body.inertia), field));
   }
 
   const double h = to_double(scene.time_step);
@@ -257,6 +311,8 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   r.part_size = poly.size;
   r.gap_tolerance = kGapFraction * poly.size;
   r.rest_speed = kRestFraction * poly.size / h;
+  r.time_scale = push_time_scale(scene, w, options, poly.size);
+  add_time_scale_warnings(r, h);
   const Rational total_q = options.time * options.steps_per_h;
   if (total_q > kMaxPushSteps)  // also keeps the step count a long
     throw InputError("PushOptions.time", to_string(options.time),

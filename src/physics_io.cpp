@@ -20,8 +20,8 @@ using json = nlohmann::json;
 json pose_json(const Pose& p) { return json::array({p.x, p.y, p.theta}); }
 
 json counts_json(const Validation& v) {
-  return {
-      {"pushes", v.pushes}, {"seated", v.seated}, {"jammed", v.jammed}, {"escaped", v.escaped}, {"timeout", v.timeout}};
+  return {{"pushes", v.pushes},   {"seated", v.seated},   {"jammed", v.jammed},
+          {"escaped", v.escaped}, {"timeout", v.timeout}, {"warned", v.warned}};
 }
 
 std::string counts_text(const Validation& v) {
@@ -55,6 +55,8 @@ std::string push_json(const Scene& scene, const Wrench& w, const PushResult& r) 
   doc["part_size"] = r.part_size;
   doc["gap_tolerance"] = r.gap_tolerance;
   doc["rest_speed"] = r.rest_speed;
+  doc["time_scale"] = r.time_scale;
+  doc["warnings"] = r.warnings;
   json events = json::array();
   for (const auto& e : r.events) events.push_back({{"t", e.t}, {"fixel", e.fixel}, {"begin", e.begin}});
   doc["events"] = events;
@@ -77,7 +79,10 @@ std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r) 
   out << "  (seated below " << r.gap_tolerance << ")\n";
   out << "contacts at the end: " << list(r.contacts_at_rest) << "\n";
   out << "engine: dt " << r.dt << " s, " << r.steps << " steps, length scale " << r.length_scale
-      << " units/m, part size " << r.part_size << " m\n";
+      << " units/m, part size " << r.part_size << " m; the push's time scale " << r.time_scale << " s\n";
+  out << "a measurement in the engine (floats), not an exact decision: seated = every gap below " << r.gap_tolerance
+      << " m while slower than " << r.rest_speed << " m/s for one h (docs/physics.md, \"Outcomes\")\n";
+  for (const auto& warning : r.warnings) out << "warning: " << warning << "\n";
   return out.str();
 }
 
@@ -164,6 +169,7 @@ std::string add_validation_json(const std::string& region_json_text, const Regio
   total["time"] = to_string(v.options.time);
   total["steps_per_h"] = v.options.steps_per_h;
   total["engine"] = "Box2D 2.4";
+  if (!v.first_warning.empty()) total["first_warning"] = v.first_warning;
   doc["validation"] = total;
   return doc.dump(2) + "\n";
 }
@@ -176,6 +182,8 @@ std::string validation_text(const Region& region, const RegionValidation& v) {
           << to_string(region.intervals[i].u1) << "]: " << counts_text(*v.intervals[i]) << "\n";
   out << "validation (Box2D 2.4, " << v.model << ", T = " << to_string(v.options.time) << " h, seed " << v.seed
       << "): " << counts_text(v.total) << "\n";
+  if (v.total.warned > 0)
+    out << "warning: " << v.total.warned << " of " << v.total.pushes << " pushes: " << v.first_warning << "\n";
   return out.str();
 }
 

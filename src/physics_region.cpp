@@ -135,12 +135,15 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
       v.jammed += r.outcome == Outcome::kJammed;
       v.escaped += r.outcome == Outcome::kEscaped;
       v.timeout += r.outcome == Outcome::kTimeout;
+      v.warned += r.warnings.empty() ? 0 : 1;
+      if (!r.warnings.empty() && out.first_warning.empty()) out.first_warning = r.warnings.front();
     }
     out.total.pushes += v.pushes;
     out.total.seated += v.seated;
     out.total.jammed += v.jammed;
     out.total.escaped += v.escaped;
     out.total.timeout += v.timeout;
+    out.total.warned += v.warned;
     out.intervals.push_back(v);
   }
   return out;

@@ -10,8 +10,10 @@
 
 #include "fixel/error.h"
 #include "fixel/progress.h"
+#include "fixel/region.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
+#include "fixel/seating.h"
 
 namespace fixel::physics {
 namespace {
@@ -180,6 +182,77 @@ GTEST_TEST(Physics, BadInputsThrowTypedErrors) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("body.boundary"), std::string::npos) << e.what();
   }
+}
+
+// An impulse of NaN or 1e300 ran (its velocity change an undefined float
+// conversion) and was reported as a timeout; solver iterations <= 0 went to
+// Box2D as they came.
+GTEST_TEST(Physics, ANonFiniteOrHugeImpulseAndNonPositiveSolverIterationsAreInputErrors) {
+  const Scene s = square();
+  for (const double bad : {std::nan(""), 1e300, -HUGE_VAL}) {
+    PushOptions o = short_run();
+    o.impulse = std::array<double, 3>{0, bad, 0};
+    try {
+      push(s, Wrench{-1, -1, 0}, o);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "PushOptions.impulse");
+    }
+  }
+  for (const int bad : {0, -5, kMaxSolverIterations + 1}) {
+    PushOptions o = short_run();
+    o.velocity_iterations = bad;
+    EXPECT_THROW(push(s, Wrench{-1, -1, 0}, o), InputError) << bad;
+    o = short_run();
+    o.position_iterations = bad;
+    EXPECT_THROW(push(s, Wrench{-1, -1, 0}, o), InputError) << bad;
+  }
+}
+
+// A Boundary assembled by hand, not by make_boundary, segfaulted in the
+// polygoniser; every analysis's value check now names it.
+GTEST_TEST(Physics, AHandAssembledBoundaryWithoutPiecesIsASceneError) {
+  Scene s = square();
+  auto empty = std::make_shared<Boundary>();
+  s.body.boundary = empty;
+  EXPECT_THROW(push(s, Wrench{-1, -1, 0}, short_run()), SceneError);
+  EXPECT_THROW(validate_scene(s), SceneError);
+  auto no_pieces = std::make_shared<Boundary>(*square().body.boundary);
+  no_pieces->pieces.clear();
+  s.body.boundary = no_pieces;
+  try {
+    validate_scene(s);
+    ADD_FAILURE() << "a boundary without pieces was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("make_boundary"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(compute_region(s, seating_set(square()), RegionOptions{}), SceneError);
+  auto one_curve_bare = std::make_shared<Boundary>(*square().body.boundary);
+  one_curve_bare->curves.push_back(one_curve_bare->curves.front());  // a second curve with no pieces
+  s.body.boundary = one_curve_bare;
+  EXPECT_THROW(check_scene_values(s), SceneError);
+}
+
+// The thresholds are tied to h and dt: a push far slower than h (a "jammed"
+// that was a slow seat) or far faster than dt (under-resolved) warns. The
+// square: m = 1 kg, bounding-box diagonal 2√2 m, h = 1 s, dt = 1 ms, so a
+// force F has the time scale √(2√2/F) s (by hand).
+GTEST_TEST(Physics, APushFarSlowerThanHOrFasterThanTheEngineStepWarns) {
+  const Scene s = square();
+  const auto run = [&](double force) { return push(s, Wrench{-force, 0, 0}, short_run("1/100")); };
+  const PushResult usual = run(1);
+  EXPECT_NEAR(usual.time_scale, std::sqrt(2 * std::sqrt(2.0)), 1e-9);  // display value, not a decision
+  EXPECT_TRUE(usual.warnings.empty());
+  const PushResult slow = run(1e-3);  // √(2828) ≈ 53 s > 10 h
+  ASSERT_EQ(slow.warnings.size(), 1u);
+  EXPECT_NE(slow.warnings[0].find("over 10 h"), std::string::npos) << slow.warnings[0];
+  const PushResult fast = run(1e5);  // √(2.8e-5) ≈ 5.3 ms: about 5 engine steps
+  ASSERT_EQ(fast.warnings.size(), 1u);
+  EXPECT_NE(fast.warnings[0].find("engine steps"), std::string::npos) << fast.warnings[0];
+  // A moment alone: √(I/|M|) with I = 2/3 kg·m² (the square's, about its centre).
+  const PushResult turn = push(s, Wrench{0, 0, 1}, short_run("1/100"));
+  EXPECT_NEAR(turn.time_scale, std::sqrt(2.0 / 3.0), 1e-9);
+  EXPECT_NE(push_text(s, Wrench{-1e-3, 0, 0}, slow).find("warning: the push's time scale"), std::string::npos);
 }
 
 GTEST_TEST(Physics, APushOfMoreThanTheStepLimitIsRefusedNamingItsTime) {

@@ -87,6 +87,11 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
 std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach = nullptr,
                            const std::optional<ApproachVerdict>& approach_wrench = std::nullopt);
+/// A "warning: ..." line (ending in a newline) for a seat turned by
+/// |θ*| >= 0.2 rad, where Box2D studies saw J fail more often on the way
+/// (docs/physics.md), and otherwise a "note: ..." line saying that J is
+/// decided in the model linearised at q*. Display (θ* as a double).
+std::string seat_rotation_note(const SeatedPose& q);
 /// Writes J's cones into `dir` as OFF files clipped to [−1, 1]³ (display:
 /// rows rounded to double): `sustained_cone.off`, `sustained_jam_<i>_<j>.off`
 /// and `sustained_piece_<k>.off`, each with its JSON sidecar (as dump_off).

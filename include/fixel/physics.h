@@ -53,13 +53,14 @@ std::string to_string(Outcome outcome);
 struct PushOptions {
   Rational time = 20;            ///< T: the wrench is held for T·h (> 0).
   long steps_per_h = 1000;       ///< dt = h / steps_per_h; at least 1000.
-  int velocity_iterations = 20;  ///< Box2D solver iterations per step.
-  int position_iterations = 10;  ///< Box2D position iterations per step.
+  int velocity_iterations = 20;  ///< Box2D solver iterations per step (1 to kMaxSolverIterations).
+  int position_iterations = 10;  ///< Box2D position iterations per step (1 to kMaxSolverIterations).
   int trajectory_samples = 200;  ///< Poses kept for the SVG (about this many).
   int max_events = 2000;         ///< Contact events kept (later ones dropped).
   bool stop_at_outcome = true;   ///< Stop as soon as the outcome is decided.
   /// An impulse p (N·s, N·s, N·m·s; world frame, about the centre of mass)
-  /// delivered at t = 0 on top of the wrench: ν ← ν^ℓ + M⁻¹ p.
+  /// delivered at t = 0 on top of the wrench: ν ← ν^ℓ + M⁻¹ p. Finite, and
+  /// small enough for the engine's floats (else InputError).
   std::optional<std::array<double, 3>> impulse;
   /// Polled every 1024 engine steps (may be null): cancelling it or passing
   /// its deadline throws StoppedError.
@@ -69,6 +70,8 @@ struct PushOptions {
 /// The most engine steps one push may take, time · steps_per_h (the
 /// default push takes 20,000): 1.2 to 8 minutes on the bundled parts.
 constexpr long kMaxPushSteps = 100000000;
+/// The most Box2D solver iterations (velocity or position) per step.
+constexpr int kMaxSolverIterations = 1000;
 
 /// One recorded pose of the trajectory.
 struct TrajectorySample {
@@ -100,7 +103,13 @@ struct PushResult {
   double part_size = 0;               ///< Bounding-box diagonal of the part (m).
   double gap_tolerance = 0;           ///< 1e-4 · part_size (m).
   double rest_speed = 0;              ///< "At rest" speed bound (m/s), see docs/physics.md.
-  long steps = 0;                     ///< Engine steps taken.
+  /// The push's own time scale (s): the least of √(m·size/|F|), √(I/|M|)
+  /// and, for an impulse, size/|Δv|; 0 when nothing pushes.
+  double time_scale = 0;
+  /// Where the engine's thresholds do not suit the push (a time scale of
+  /// under 50 engine steps, or over 10 h): read the outcome with care.
+  std::vector<std::string> warnings;
+  long steps = 0;  ///< Engine steps taken.
   std::vector<TrajectorySample> trajectory;
   std::vector<ContactEvent> events;
 };
@@ -173,6 +182,7 @@ struct Validation {
   int pushes = 0;
   int seated = 0;
   int jammed = 0, escaped = 0, timeout = 0;  ///< The other outcomes.
+  int warned = 0;                            ///< Pushes whose PushResult has warnings.
 };
 struct RegionValidation {
   std::vector<std::optional<Validation>> intervals;  ///< Per interval; set for IN ones.
@@ -180,6 +190,7 @@ struct RegionValidation {
   std::uint64_t seed = 0;
   std::string model = "one-step impulse p/h held for T";  ///< Named in the reports.
   PushOptions options;
+  std::string first_warning;  ///< The first push's warning, if any pushed warned.
 };
 
 /// For every IN interval, `pushes` pushes at deterministic pseudo-random
@@ -189,7 +200,8 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
 
 /// `fixel push --json`: {"outcome", "time_to_seat", "final_pose", "final_gaps",
 /// "contacts_at_rest", "open_fixels", "wrench", "dt", "length_scale",
-/// "part_size", "gap_tolerance", "rest_speed", "time", "steps", "events"}.
+/// "part_size", "gap_tolerance", "rest_speed", "time_scale", "warnings", "time", "steps",
+/// "events"}.
 std::string push_json(const Scene& scene, const Wrench& w, const PushResult& r);
 /// The same as a readable report.
 std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r);

@@ -76,6 +76,7 @@ int run_sustained_region(const Scene& scene, const RegionArgs& a, const physics:
     v = physics::validate_region(scene, r, physics::seated_push_model(scene), a.validate, 1, push_options);
   if (v) v->model = "sustained push: the unit wrench at q* held for T";
   print_region(scene, r, a, v);
+  if (!a.json) std::cout << seat_rotation_note(J.pose);
   if (!a.svg_path.empty()) {
     write_sustained_region_svg(a.svg_path, scene, J, r);
     if (!a.json) std::cout << "wrote " << a.svg_path << "\n";
