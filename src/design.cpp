@@ -83,7 +83,7 @@ std::vector<DesignLayout> run_range(const Scene& part, const std::vector<DesignC
     layout.fixels = f;
     layout.index = first + k;
     tally(evaluate(part, cands, o, total, f, layout, &joins), std::move(layout), best, stats);
-    if (static_cast<int>(best.size()) > 2 * o.top) rank_layouts(best, o.top);
+    if (static_cast<long>(best.size()) > 2L * o.top) rank_layouts(best, o.top);  // long: top may be near INT_MAX
     on_layout();
     if (k + 1 < count) next_triple(f, n);
   }
@@ -174,6 +174,7 @@ void check_design(const Scene& part, const DesignOptions& o) {
   if (part.body.dof != 3)
     throw SceneError("body.dof", "2", "is a point mass: fixture design needs a rigid body (dof 3)");
   boundary_of(part);
+  check_scene_values(part);
   if (o.resolution <= 0) throw InputError("DesignOptions.resolution", to_string(o.resolution), "must be > 0");
   if (o.mu < 0) throw InputError("DesignOptions.mu", to_string(o.mu), "must be >= 0");
   if (o.mu_hi && *o.mu_hi < o.mu)
@@ -222,7 +223,7 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
     layout.fixels = triple_at(n, index);
     layout.index = index;
     tally(evaluate(part, cands, o, total, layout.fixels, layout, &joins), std::move(layout), best, stats);
-    if (static_cast<int>(best.size()) > 2 * o.top) rank_layouts(best, o.top);
+    if (static_cast<long>(best.size()) > 2L * o.top) rank_layouts(best, o.top);  // long: top may be near INT_MAX
     poll(o.control, "design", ++done, static_cast<long>(indices.size()), "layouts");
   }
   rank_layouts(best, o.top);

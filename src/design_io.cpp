@@ -172,6 +172,14 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
     return s.str();
   }
   s << "score = IN parameter length / boundary parameter length, ranked by the " << push_name(o) << " score\n";
+  // What a score is, and is not (docs/design.md, "Reading a design").
+  s << "  exact lower bounds at resolution " << to_string(o.resolution)
+    << ": stretches left PARTIAL there count as not IN; the best of the listed candidates only\n"
+    << "  parameter length: a polyline edge counts 1 and a B-spline its knot span, whatever their arc length\n"
+    << "  sustained: J at the seat (every gap 0), IN = seats and stays under a sustained push in the model "
+       "linearised at the seat; one-step: S with every gap "
+    << to_string(o.gap) << (o.gap == 0 ? " (with gap 0 every seat is already reached: one-step 1 says nothing)" : "")
+    << "\n";
   for (std::size_t k = 0; k < r.layouts.size(); ++k) {
     const DesignLayout& l = r.layouts[k];
     s << "#" << k + 1 << " fixels";

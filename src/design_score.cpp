@@ -257,6 +257,16 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
   for (int i = 0; i < 3; ++i) Wn[i] = wrench_at(part, cands[f[i]].point, cands[f[i]].normal);
   const auto rows = k_rows(Wn);
   if (!rows) return Verdict::kSingular;
+  if (o.push == DesignPush::kStep) {
+    // No form-closure filter here: a one-step IN point does not need it, so
+    // a triple without it can still have a positive one-step score.
+    double err = 0;
+    const Scene step = layout_scene(part, cands, f, o, true, &err);
+    out.normal_angle_error = err;
+    score_step(step, o, total, out, joins);
+    out.score = *out.step_score;
+    return Verdict::kScored;
+  }
   const Scene scene = layout_scene(part, cands, f, o, false);
   // Form closure with a frictionless finger: a candidate whose push is in
   // int K proves it; otherwise the region against int K decides.
@@ -271,17 +281,9 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
     closure = region_reaches(scene, target, region_options(o, Rational(0)), joins);
   }
   if (!closure) return Verdict::kNoFormClosure;
-  if (o.push == DesignPush::kSustained) {
-    score_sustained(scene, o, total, out, false, joins);
-    out.score = *out.sustained_score;
-    return *out.sustained_empty ? Verdict::kJEmpty : Verdict::kScored;
-  }
-  double err = 0;
-  const Scene step = layout_scene(part, cands, f, o, true, &err);
-  out.normal_angle_error = err;
-  score_step(step, o, total, out, joins);
-  out.score = *out.step_score;
-  return Verdict::kScored;
+  score_sustained(scene, o, total, out, false, joins);
+  out.score = *out.sustained_score;
+  return *out.sustained_empty ? Verdict::kJEmpty : Verdict::kScored;
 }
 
 }  // namespace internal

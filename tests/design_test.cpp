@@ -130,6 +130,45 @@ GTEST_TEST(Design, TheSquaresAxisAlignedLayoutsHaveNoFormClosureWithAFinger) {
   EXPECT_EQ(r.no_layout, "every one of the 4 triples was dropped (2 with W_n singular, 2 without form closure)");
 }
 
+// The one-step model needs no form closure: ranked by it, a pentagon's
+// triple without form closure (it was dropped) is scored, with the fraction
+// a region of the scene with those fixels gives: 119/320 at 1/256 (the
+// reviewer's case), so more than 0.
+GTEST_TEST(Design, RankedByTheOneStepPushATripleWithoutFormClosureIsScoredAsItsRegion) {
+  const std::string outline =
+      R"("boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["7","4"],["3","7"],["0","3"],["0","0"]]}])";
+  const Scene part = parse_scene(R"({"name": "pent", "time_step": "1", "body": {"dof": 3, "mass": "1", )" + outline +
+                                 R"(}, "fixels": [], "pusher": {"mu": "0"}})");
+  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "117/1024"},
+      {"curve": 0, "u": "1425/1024"}, {"curve": 0, "u": "1839/512"}]})");
+  DesignOptions o = frictionless();
+  o.mu = Rational(1, 10);
+  o.resolution = Rational(1, 256);
+  o.gap = Rational(1, 20);
+  DesignOptions sustained = o;
+  EXPECT_EQ(design(part, c, sustained).stats.no_form_closure, 1);  // the sustained ranking drops it
+  o.push = DesignPush::kStep;
+  const DesignResult r = design(part, c, o);
+  EXPECT_EQ(r.stats.no_form_closure, 0);
+  ASSERT_EQ(r.layouts.size(), 1u);
+  // The same fixels by hand: on the bottom edge, up; on the edge (4,0)-(7,4),
+  // (-4, 3)/5; on the edge (3,7)-(0,3), (4, -3)/5.
+  const std::string fixels =
+      R"({"point": ["117/256","0"], "normal": ["0","1"], "mu": "1/10", "gap": "1/20"},
+         {"point": ["5299/1024","401/256"], "normal": ["-4/5","3/5"], "mu": "1/10", "gap": "1/20"},
+         {"point": ["627/512","593/128"], "normal": ["4/5","-3/5"], "mu": "1/10", "gap": "1/20"})";
+  const Scene scene = parse_scene(R"({"name": "layout", "time_step": "1", "body": {"dof": 3, "mass": "1", )" + outline +
+                                  R"(}, "fixels": [)" + fixels + R"(], "pusher": {"mu": "0"}})");
+  RegionOptions ro;
+  ro.resolution = o.resolution;
+  Rational in_length = 0;
+  for (const auto& i : compute_region(scene, seating_set(scene), ro).intervals)
+    if (i.status == RegionStatus::kIn) in_length += i.u1 - i.u0;
+  ASSERT_TRUE(r.layouts[0].step_score.has_value());
+  EXPECT_EQ(*r.layouts[0].step_score, in_length / 5);
+  EXPECT_EQ(*r.layouts[0].step_score, Rational(119, 320));
+}
+
 GTEST_TEST(Design, FrictionShrinksTheScoreButKeepsTheMirrorTie) {
   const Scene part = house();
   DesignOptions o = frictionless();
