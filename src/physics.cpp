@@ -36,14 +36,19 @@ constexpr double kFixelRadius = kSlop;
 constexpr double kContactOffset = kFixelRadius + 1.5 * kSlop;
 
 // Engine inputs are floats: a value outside float's range is bad input, not
-// a silent infinity (and converting it would be undefined behaviour).
-float engine_float(double x, const std::string& field) {
-  if (!(std::abs(x) < 1e30)) {
-    std::ostringstream shown;  // 2.8e+300, not std::to_string's 300 digits
+// a silent infinity (and converting it would be undefined behaviour). The
+// engine value is scale · x (engine units); the message shows the user's x.
+float engine_float(double x, const std::string& field, double scale = 1) {
+  const double engine = scale * x;
+  if (!(std::abs(engine) < 1e30)) {
+    std::ostringstream shown, why;  // 2.8e+300, not std::to_string's 300 digits
     shown << x;
-    throw InputError(field, shown.str(), "is outside the engine's float range (|x| < 1e30)");
+    why << "is outside the engine's float range (|x| < 1e30";
+    if (scale != 1) why << " after scaling by " << scale << " to engine units: " << engine;
+    why << ")";
+    throw InputError(field, shown.str(), why.str());
   }
-  return static_cast<float>(x);
+  return static_cast<float>(engine);
 }
 
 // Box2D asserts on degenerate polygons: weld like b2PolygonShape::Set does,
@@ -134,8 +139,8 @@ void build(const Scene& scene, const PartPolygon& poly, Engine& e) {
   bd.allowSleep = false;
   bd.fixedRotation = scene.body.dof == 2;
   const VectorQ& v = scene.body.velocity;
-  bd.linearVelocity.Set(engine_float(e.s * to_double(v[0]), "body.velocity"),
-                        engine_float(e.s * to_double(v[1]), "body.velocity"));
+  bd.linearVelocity.Set(engine_float(to_double(v[0]), "body.velocity", e.s),
+                        engine_float(to_double(v[1]), "body.velocity", e.s));
   if (scene.body.dof == 3) bd.angularVelocity = engine_float(to_double(v[2]), "body.velocity");
   e.part = e.world.CreateBody(&bd);
   int kept = 0;
@@ -164,7 +169,7 @@ void build(const Scene& scene, const PartPolygon& poly, Engine& e) {
   b2MassData md;
   md.mass = engine_float(to_double(scene.body.mass), "body.mass");
   md.center.SetZero();
-  md.I = scene.body.dof == 3 ? engine_float(e.s * e.s * to_double(scene.body.inertia), "body.inertia") : 0.0f;
+  md.I = scene.body.dof == 3 ? engine_float(to_double(scene.body.inertia), "body.inertia", e.s * e.s) : 0.0f;
   e.part->SetMassData(&md);
 
   e.listener.touching.assign(scene.fixels.size(), 0);
@@ -313,6 +318,7 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   r.rest_speed = kRestFraction * poly.size / h;
   r.time_scale = push_time_scale(scene, w, options, poly.size);
   add_time_scale_warnings(r, h);
+  if (nf == 0) r.warnings.push_back("the scene has no fixels: nothing can seat the part (the outcome cannot be seated)");
   const Rational total_q = options.time * options.steps_per_h;
   if (total_q > kMaxPushSteps)  // also keeps the step count a long
     throw InputError("PushOptions.time", to_string(options.time),
@@ -331,8 +337,8 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   const std::vector<P2> f = fixel_points(scene);
   const double m = to_double(scene.body.mass);
   const P2 accel{w.fx / m, w.fy / m};
-  const b2Vec2 force(engine_float(e.s * w.fx, "push(wrench)"), engine_float(e.s * w.fy, "push(wrench)"));
-  const float torque = scene.body.dof == 3 ? engine_float(e.s * e.s * w.m, "push(wrench)") : 0.0f;
+  const b2Vec2 force(engine_float(w.fx, "push(wrench)", e.s), engine_float(w.fy, "push(wrench)", e.s));
+  const float torque = scene.body.dof == 3 ? engine_float(w.m, "push(wrench)", e.s * e.s) : 0.0f;
 
   std::vector<double> gaps(nf);
   auto measure = [&](Pose& pose, bool with_gaps) {

@@ -253,6 +253,23 @@ GTEST_TEST(Physics, APushFarSlowerThanHOrFasterThanTheEngineStepWarns) {
   const PushResult turn = push(s, Wrench{0, 0, 1}, short_run("1/100"));
   EXPECT_NEAR(turn.time_scale, std::sqrt(2.0 / 3.0), 1e-9);
   EXPECT_NE(push_text(s, Wrench{-1e-3, 0, 0}, slow).find("warning: the push's time scale"), std::string::npos);
+  // Nothing to seat against: said, not left to a bare "timeout".
+  Scene bare = s;
+  bare.fixels.clear();
+  const PushResult alone = push(bare, Wrench{-1, 0, 0}, short_run("1/100"));
+  ASSERT_EQ(alone.warnings.size(), 1u);
+  EXPECT_NE(alone.warnings[0].find("no fixels"), std::string::npos) << alone.warnings[0];
+}
+
+// The user's value is shown, with the engine's scaled one beside it.
+GTEST_TEST(Physics, AWrenchTooLargeForTheEngineIsShownAsGiven) {
+  try {
+    push(square(), Wrench{1e29, 0, 0}, short_run());
+    ADD_FAILURE() << "a wrench beyond the engine's floats ran";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.value(), "1e+29");
+    EXPECT_NE(std::string(e.what()).find("engine units"), std::string::npos) << e.what();
+  }
 }
 
 GTEST_TEST(Physics, APushOfMoreThanTheStepLimitIsRefusedNamingItsTime) {
