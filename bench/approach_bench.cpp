@@ -28,6 +28,7 @@
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "random_parts.h"
+#include "study_args.h"
 
 namespace fp = fixel::physics;
 
@@ -50,6 +51,11 @@ int main(int argc, char** argv) {
   int random_parts = 40, samples = 20, gap = 200, mu = 500, region_pushes = 5, plan_points = 5;
   std::uint64_t seed = 7;
   std::string time = "20", dump;
+  fixel::bench::check_study_args(
+      argc, argv,
+      "usage: approach_bench [--random N] [--samples N] [--region-pushes N] [--plan-points N] [--seed S] "
+      "[--gap G] [--mu M] [--time T] [--dump DIR]   (docs/physics.md, \"J' in the engine\")",
+      {"--random", "--samples", "--region-pushes", "--plan-points", "--seed", "--gap", "--mu", "--time", "--dump"});
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--random") random_parts = std::atoi(argv[i + 1]);

@@ -26,6 +26,7 @@
 #include "fixel/scene.h"
 #include "fixel/seating.h"
 #include "random_parts.h"
+#include "study_args.h"
 
 namespace fp = fixel::physics;
 using fixel::Rational;
@@ -79,6 +80,10 @@ int main(int argc, char** argv) {
   int samples = 40, random_parts = 8;
   std::uint64_t seed = 1;
   std::string time = "20";
+  fixel::bench::check_study_args(
+      argc, argv,
+      "usage: physics_bench [--samples N] [--random N] [--seed S] [--time T]   (docs/physics.md, \"Measured\")",
+      {"--samples", "--random", "--seed", "--time"});
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--samples") samples = std::atoi(argv[i + 1]);

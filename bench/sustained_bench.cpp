@@ -20,6 +20,7 @@
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
 #include "random_parts.h"
+#include "study_args.h"
 
 namespace fp = fixel::physics;
 
@@ -45,6 +46,11 @@ int main(int argc, char** argv) {
   int pushes = 10, random_parts = 12;
   std::uint64_t seed = 1;
   std::string time = "20";
+  fixel::bench::check_study_args(
+      argc, argv,
+      "usage: sustained_bench [--pushes N] [--random N] [--seed S] [--time T]   (docs/physics.md, \"The "
+      "sustained-push region\")",
+      {"--pushes", "--random", "--seed", "--time"});
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--pushes") pushes = std::atoi(argv[i + 1]);

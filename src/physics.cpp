@@ -318,7 +318,8 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   r.rest_speed = kRestFraction * poly.size / h;
   r.time_scale = push_time_scale(scene, w, options, poly.size);
   add_time_scale_warnings(r, h);
-  if (nf == 0) r.warnings.push_back("the scene has no fixels: nothing can seat the part (the outcome cannot be seated)");
+  if (nf == 0)
+    r.warnings.push_back("the scene has no fixels: nothing can seat the part (the outcome cannot be seated)");
   const Rational total_q = options.time * options.steps_per_h;
   if (total_q > kMaxPushSteps)  // also keeps the step count a long
     throw InputError("PushOptions.time", to_string(options.time),
