@@ -9,8 +9,10 @@ Dask's retries recompute a lost one, and a JSON-lines ``output`` file lets a
 rerun skip the batches that already finished.
 """
 
+import errno
 import hashlib
 import json
+import math
 import numbers
 import os
 import time
@@ -138,7 +140,15 @@ def _candidates(scene, candidates, spacing):
     if isinstance(candidates, str) and candidates == "boundary":
         return _fixel.design_candidates(scene._impl, None if spacing is None else text(spacing, "spacing"))
     if isinstance(candidates, (str, os.PathLike)):
-        return _fixel.design_load_candidates(scene._impl, os.fspath(candidates))
+        path = os.fspath(candidates)
+        if not os.path.exists(path):  # a typo of "boundary" too: say how the string was read
+            raise InputError.make(
+                "candidates",
+                os.fsdecode(path),
+                f'is not "boundary", so it is read as a candidate file path, which cannot be opened: '
+                f"{os.strerror(errno.ENOENT)}",
+            )
+        return _fixel.design_load_candidates(scene._impl, path)
     if not hasattr(candidates, "__iter__") or isinstance(candidates, (bytes, dict)):
         raise TypeError(
             f"candidates: {candidates!r} is neither 'boundary', a file path nor a list of (curve, u) pairs"
@@ -160,8 +170,6 @@ def _candidates(scene, candidates, spacing):
 
 def design_candidates(part, candidates="boundary", spacing=None):
     """The candidates fixel.design would use, as `Candidate`s (exact)."""
-    from . import Scene
-
     scene = _part(part)
     out = []
     for curve, u in _candidates(scene, candidates, spacing):
@@ -181,15 +189,82 @@ def _part(part):
     return scene
 
 
+def _check_address(address):
+    """ValueError for an address Dask cannot read (no port, an unknown
+    scheme), found without making a Client: one whose start failed is
+    closed again only when collected, and that can stall the interpreter's
+    exit."""
+    try:
+        from distributed.comm import registry
+        from distributed.comm.addressing import parse_address
+    except ImportError:  # another layout of distributed: Client says it
+        return
+    scheme, loc = parse_address(address)
+    try:
+        registry.get_backend(scheme).get_address_host_port(loc)
+    except NotImplementedError:  # not host:port (inproc://...): nothing to check
+        pass
+
+
 def _connect(address, timeout):
     from dask.distributed import Client
 
     try:
+        _check_address(address)
         return Client(address, timeout=timeout)
     except (OSError, TimeoutError) as e:
         raise InputError.make(
-            "client", str(address), f"is unreachable: no Dask scheduler answered within {timeout} s ({e})"
+            "client", str(address), f"is unreachable: no Dask scheduler answered within {timeout:g} s ({e})"
         ) from e
+    except ValueError as e:  # no port, an unknown scheme, ...
+        raise InputError.make("client", str(address), f"is not a Dask scheduler address ({e})") from e
+
+
+def _cluster_arguments(client, batch_size, wave, output, retries, timeout):
+    """The Dask-only arguments, checked before any work (TypeError for a
+    wrong type, InputError naming the argument for a wrong value):
+    (batch_size, wave, output path or None, retries, timeout in seconds)."""
+    if not isinstance(client, str):
+        try:
+            from dask.distributed import Client
+        except ImportError:  # without Dask no object is a Client
+            Client = ()
+        if not isinstance(client, Client):
+            raise TypeError(
+                f"client: {client!r} ({type(client).__name__}) is neither a dask.distributed.Client nor a "
+                "scheduler address (for a cluster object, pass Client(cluster) or cluster.scheduler_address)"
+            )
+    batch_size, wave = whole(batch_size, "batch_size"), whole(wave, "wave")
+    for name, value in (("batch_size", batch_size), ("wave", wave)):
+        if value <= 0:
+            raise InputError.make(name, str(value), "must be a positive int")
+    retries = whole(retries, "retries")
+    if retries < 0:
+        raise InputError.make("retries", str(retries), "must be an int >= 0")
+    if isinstance(timeout, bool) or not isinstance(timeout, numbers.Real):
+        raise TypeError(f"timeout: {timeout!r} ({type(timeout).__name__}) is not a number of seconds")
+    try:
+        seconds = float(timeout)
+    except OverflowError:  # an int or Fraction beyond doubles
+        seconds = math.inf if timeout > 0 else -math.inf
+    if not (0 < seconds < math.inf):
+        raise InputError.make("timeout", str(timeout), "must be a positive, finite number of seconds")
+    if output is not None:
+        if not isinstance(output, (str, os.PathLike)):
+            raise TypeError(f"output: {output!r} ({type(output).__name__}) is not a file path")
+        output = os.fspath(output)
+        if isinstance(output, bytes):
+            output = os.fsdecode(output)
+        if output == "":
+            raise InputError.make("output", "''", "is not a file path")
+        folder = os.path.dirname(os.path.abspath(output))
+        if os.path.isdir(output):
+            raise InputError.make("output", output, "is a directory, not a .jsonl file")
+        if not os.path.isdir(folder):
+            raise InputError.make("output", output, f"cannot be written: its directory {folder} does not exist")
+        if not os.access(output if os.path.exists(output) else folder, os.W_OK):
+            raise InputError.make("output", output, "cannot be written: permission denied")
+    return batch_size, wave, output, retries, seconds
 
 
 def _run_batch(scene_dict, candidates, options, first, count, fail_once=None, indices=None):
@@ -212,10 +287,13 @@ def _run_batch(scene_dict, candidates, options, first, count, fail_once=None, in
     return {"first": first, "count": count, "layouts": [list(l) for l in layouts], "counts": list(counts)}
 
 
-def _run_key(scene_dict, candidates, options):
-    # Neither the threads nor the bound (unused by batches) change a batch's answer.
+def _run_key(scene_dict, candidates, options, batch_size):
+    # Neither the threads nor the bound (unused by batches) change a batch's
+    # answer. The batch size does change the ranges: range batch 5 of 64
+    # triples is not range batch 5 of 16 (the number is all that finds it).
     skip = ("jobs", "bound")
-    blob = json.dumps([scene_dict, candidates, {k: v for k, v in options.items() if k not in skip}], sort_keys=True)
+    settings = {k: v for k, v in options.items() if k not in skip}
+    blob = json.dumps([scene_dict, candidates, settings, {"batch_size": batch_size}], sort_keys=True)
     return hashlib.sha256(blob.encode()).hexdigest()[:16]
 
 
@@ -234,9 +312,23 @@ def _read_finished(output, key):
                 rec = json.loads(line)
             except json.JSONDecodeError:
                 continue  # a line cut short by a crash: that batch runs again
-            if rec.get("run") == key:
-                finished[tuple(rec["triples"]) if "triples" in rec else rec["batch"]] = rec
+            if isinstance(rec, dict) and rec.get("run") == key:
+                finished[tuple(rec["triples"]) if "triples" in rec else rec.get("batch")] = rec
     return finished
+
+
+def _check_resumed(output, rec, number, first, count):
+    """A record of this run's key must be the batch it stands for: the same
+    first triple and count (else the file was written by other settings,
+    or edited, and reusing it would count triples twice or never)."""
+    if rec.get("first") != first or rec.get("count") != count:
+        raise InputError.make(
+            "output",
+            str(output),
+            f"belongs to a run with other settings: its batch {number} holds {rec.get('count')!r} triples "
+            f"from index {rec.get('first')!r}, this run's holds {count} from {first}; "
+            "use another file, or the settings that wrote it",
+        )
 
 
 def design(
@@ -277,9 +369,13 @@ def design(
     the bound, this process computes the bound (on `jobs` threads) and the
     cluster scores rounds of `wave` batches in its order; without it, every
     triple in ranges of consecutive indices. `output` (a .jsonl path)
-    records each finished batch and a rerun with the same file skips those;
-    `progress=True` shows a tqdm bar of finished batches. Returns a
-    `Design`.
+    records each finished batch and a rerun with the same file, part,
+    candidates, options and `batch_size` skips those (records of other
+    settings are not reused); `progress=True` shows a tqdm bar of finished
+    batches. An address is connected to within `timeout` seconds, and that
+    Client is closed when the call returns or raises. The cluster path
+    takes no `max_seconds`, and Ctrl-C does not stop this process's bound
+    computation (it takes effect when that returns). Returns a `Design`.
 
     On the thread pool, `progress=True` shows a tqdm bar per stage (pair
     bounds, triple bounds, layouts), or a callable(task, done, total, unit)
@@ -296,13 +392,14 @@ def design(
         return _design_of(json.loads(_controlled(work, max_seconds, progress)))
     if max_seconds is not None:
         raise InputError.make("max_seconds", repr(max_seconds), "applies to the thread pool, not to a cluster")
-    for name, value in (("batch_size", batch_size), ("wave", wave)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value <= 0:
-            raise InputError.make(name, repr(value), "must be a positive int")
-    batch_size, wave = whole(batch_size, "batch_size"), whole(wave, "wave")
-    if isinstance(client, str):
-        client = _connect(client, timeout)
-    return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _fail_once)
+    batch_size, wave, output, retries, timeout = _cluster_arguments(client, batch_size, wave, output, retries, timeout)
+    if not isinstance(client, str):
+        return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _fail_once)
+    own = _connect(client, timeout)  # opened here, so closed here, also on an error
+    try:
+        return _design_dask(scene, cands, options, own, batch_size, wave, output, progress, retries, _fail_once)
+    finally:
+        own.close()
 
 
 class _Bar:
@@ -381,6 +478,7 @@ class _Batches:
             self.batches += 1
             rec = self.finished.get(number if triples is None else tuple(triples))
             if rec is not None:
+                _check_resumed(self.output, rec, number, first, count)
                 records[number] = rec
                 self.resumed += 1
             else:
@@ -487,7 +585,7 @@ def _design_dask(scene, cands, options, client, batch_size, wave, output, progre
     start = time.perf_counter()
     scene_dict = scene.to_dict()
     total = _fixel.design_triples(len(cands))
-    key = _run_key(scene_dict, cands, options)
+    key = _run_key(scene_dict, cands, options, batch_size)
     batches = _Batches(client, scene_dict, cands, options, key, output, progress, retries, fail_once)
     try:
         search = _fixel.DesignSearch(scene._impl, cands, options)

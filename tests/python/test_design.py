@@ -8,7 +8,7 @@ from fractions import Fraction
 import pytest
 
 import fixel
-from conftest import SCENE_DIR, cli_json, run_cli
+from conftest import SCENE_DIR, cli_json
 
 # The mirror-symmetric "house" of tests/design_test.cpp: the rectangle
 # [-1, 1] x [-1, 0] under the roof (1, 0), (0, 1), (-1, 0).
@@ -179,6 +179,105 @@ def test_a_bounded_rerun_resumes_the_batches_it_would_hand_out_again(client, twe
     assert again.ranking() == every.ranking()
 
 
+def _same_as_the_pool(d, pool):
+    """Layouts (triples, every score) and counts as on the thread pool."""
+    scores = lambda x: [(l.triple, l.score, l.sustained_score, l.step_score) for l in x.layouts]  # noqa: E731
+    assert scores(d) == scores(pool)
+    for key in ("triples", "singular", "no_form_closure", "j_empty", "regions", "bounded"):
+        assert d.stats[key] == pool.stats[key], key
+
+
+def test_a_rerun_with_another_batch_size_does_not_take_the_other_sizes_batches(client, polygon_candidates, tmp_path):
+    # 56 triples: 3 ranges of 20, then 7 of 8. Range 1 of 20 is not range 1 of 8.
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=2, exhaustive=True, **SMALL)
+    out = str(tmp_path / "design.jsonl")
+    run = dict(candidates=polygon_candidates, client=client, output=out, exhaustive=True, **SMALL)
+    first = fixel.design(SCENE_DIR / "polygon.json", batch_size=20, **run)
+    _same_as_the_pool(first, pool)
+    d = fixel.design(SCENE_DIR / "polygon.json", batch_size=8, **run)
+    _same_as_the_pool(d, pool)
+    assert d.stats["batches"] == 7 and d.stats["batches_resumed"] == 0
+    # The file now holds both runs; each size finds its own batches.
+    for batch_size, batches in ((20, 3), (8, 7)):
+        again = fixel.design(SCENE_DIR / "polygon.json", batch_size=batch_size, **run)
+        _same_as_the_pool(again, pool)
+        assert again.stats["batches"] == again.stats["batches_resumed"] == batches
+
+
+def test_a_recorded_batch_that_is_not_the_batch_it_stands_for_is_refused(client, polygon_candidates, tmp_path):
+    out = tmp_path / "design.jsonl"
+    run = dict(candidates=polygon_candidates, client=client, batch_size=20, output=str(out), exhaustive=True, **SMALL)
+    fixel.design(SCENE_DIR / "polygon.json", **run)
+    records = [json.loads(line) for line in out.read_text().splitlines()]
+    for r in records:
+        if r["batch"] == 1:
+            r["first"], r["count"] = 16, 16  # as if written with batch_size=16
+    out.write_text("".join(json.dumps(r) + "\n" for r in records))
+    with pytest.raises(fixel.InputError, match="belongs to a run with other settings") as e:
+        fixel.design(SCENE_DIR / "polygon.json", **run)
+    assert (e.value.field, e.value.value) == ("output", str(out))
+
+
+@pytest.mark.parametrize(
+    "bad, exc, field",
+    [
+        (dict(client=5), TypeError, "client"),
+        (dict(client="nonsense"), fixel.InputError, "client"),
+        (dict(client="foo://127.0.0.1:8786"), fixel.InputError, "client"),
+        (dict(timeout="x"), TypeError, "timeout"),
+        (dict(timeout=True), TypeError, "timeout"),
+        (dict(timeout=0), fixel.InputError, "timeout"),
+        (dict(timeout=float("nan")), fixel.InputError, "timeout"),
+        (dict(retries="x"), TypeError, "retries"),
+        (dict(retries=1.0), TypeError, "retries"),
+        (dict(retries=True), TypeError, "retries"),
+        (dict(retries=-1), fixel.InputError, "retries"),
+        (dict(batch_size=2.0), TypeError, "batch_size"),
+        (dict(batch_size=True), TypeError, "batch_size"),
+        (dict(batch_size=0), fixel.InputError, "batch_size"),
+        (dict(wave=1.5), TypeError, "wave"),
+        (dict(wave=-1), fixel.InputError, "wave"),
+        (dict(output="{tmp}"), fixel.InputError, "output"),
+        (dict(output="{tmp}/missing/run.jsonl"), fixel.InputError, "output"),
+        (dict(output=5), TypeError, "output"),
+    ],
+)
+def test_dask_arguments_are_checked_before_any_batch_runs(client, polygon_candidates, tmp_path, bad, exc, field):
+    marker = tmp_path / "a-batch-ran"
+    args = dict(candidates=polygon_candidates, client=client, retries=0, _fail_once=(0, str(marker)), **SMALL)
+    args.update({k: v.format(tmp=tmp_path) if isinstance(v, str) else v for k, v in bad.items()})
+    t0 = time.monotonic()
+    with pytest.raises(exc) as e:
+        fixel.design(SCENE_DIR / "polygon.json", **args)
+    if exc is TypeError:
+        assert str(e.value).startswith(field + ":")
+    else:
+        assert e.value.field == field
+    assert not marker.exists() and time.monotonic() - t0 < 10
+
+
+def test_a_client_opened_from_an_address_is_closed_also_on_an_error(client, polygon_candidates, tmp_path, monkeypatch):
+    import fixel._design as design_module
+
+    def clients():
+        return len(client.run_on_scheduler(lambda dask_scheduler: list(dask_scheduler.clients)))
+
+    opened, connect = [], design_module._connect
+    monkeypatch.setattr(design_module, "_connect", lambda *a: opened.append(connect(*a)) or opened[-1])
+    before = clients()
+    address = client.scheduler.address
+    run = dict(candidates=polygon_candidates, client=address, timeout=Fraction(10), batch_size=20, **SMALL)
+    pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=1, **SMALL)
+    assert fixel.design(SCENE_DIR / "polygon.json", **run).ranking() == pool.ranking()
+    with pytest.raises(fixel.Error, match="failed after 0 retries"):
+        fixel.design(SCENE_DIR / "polygon.json", retries=0, _fail_once=(0, str(tmp_path / "failed")), **run)
+    assert len(opened) == 2 and all(c.status == "closed" for c in opened)
+    t0 = time.monotonic()
+    while clients() != before and time.monotonic() - t0 < 10:
+        time.sleep(0.1)
+    assert clients() == before
+
+
 def test_an_unreachable_scheduler_is_a_clear_error_within_a_bounded_time():
     t0 = time.monotonic()
     with pytest.raises(fixel.InputError) as e:
@@ -254,3 +353,6 @@ def test_bad_input_names_the_field_and_value():
         fixel.design(HOUSE, mu=0.1)
     with pytest.raises(fixel.SceneError):
         fixel.design(SCENE_DIR / "example2.json")  # no outline
+    with pytest.raises(fixel.InputError, match="is read as a candidate file path") as e:
+        fixel.design(HOUSE, candidates="boundry")  # a typo of "boundary"
+    assert (e.value.field, e.value.value) == ("candidates", "boundry")
