@@ -158,6 +158,9 @@ std::string region_text(const Scene& scene, const Region& region) {
       << "; what it is worth in a physics engine: docs/physics.md\n";
   out << "  each line: curve and parameter span, status, where it is on the part (m, frame A), outline length, the "
          "frictionless push direction\n";
+  if (region.exact)
+    out << "  exact ends: each status holds strictly between its ends; an end's own status is not decided "
+           "(push-plan --at K:U tests a rational one)\n";
   for (std::size_t k = 0; k < region.intervals.size(); ++k) {
     const RegionInterval& r = region.intervals[k];
     out << "  curve " << r.curve << "  u in [" << end_text(r.u0, r.exact_u0, region.digits) << ", "
@@ -194,10 +197,14 @@ std::string region_text(const Scene& scene, const Region& region) {
         << points.at("out") << ", partial " << points.at("partial") << " (point tests say nothing between points)\n";
   } else {
     const auto arc = status_arc_lengths(region);
+    bool irrational_end = false;
+    for (const auto& r : region.intervals) irrational_end = irrational_end || r.exact_u0 || r.exact_u1;
     out << "outline " << internal::decimal(region.outline_length, 4) << " m: IN (" << meaning << ") "
         << percent(arc.at("in"), region.outline_length) << ", out " << percent(arc.at("out"), region.outline_length)
-        << ", partial " << percent(arc.at("partial"), region.outline_length)
-        << " of its arc length (exact parameter lengths: --json \"lengths\")\n";
+        << ", partial " << percent(arc.at("partial"), region.outline_length) << " of its arc length ("
+        << (irrational_end ? "parameter lengths, from the isolating midpoints of irrational ends: --json \"lengths\""
+                           : "exact parameter lengths: --json \"lengths\"")
+        << ")\n";
   }
   out << "cone tests " << region.stats.cone_tests << ", LP tests " << region.stats.lp_tests << ", point tests "
       << region.stats.point_tests << ", depth " << region.stats.depth;

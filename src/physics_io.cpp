@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/readable.h"
 #include "fixel/physics.h"
 
 namespace fixel::physics {
@@ -178,8 +179,9 @@ std::string validation_text(const Region& region, const RegionValidation& v) {
   std::ostringstream out;
   for (std::size_t i = 0; i < v.intervals.size() && i < region.intervals.size(); ++i)
     if (v.intervals[i])
-      out << "  validated curve " << region.intervals[i].curve << " u in [" << to_string(region.intervals[i].u0) << ", "
-          << to_string(region.intervals[i].u1) << "]: " << counts_text(*v.intervals[i]) << "\n";
+      out << "  validated curve " << region.intervals[i].curve << " u in ["
+          << internal::readable(region.intervals[i].u0) << ", " << internal::readable(region.intervals[i].u1)
+          << "]: " << counts_text(*v.intervals[i]) << "\n";
   out << "validation (Box2D 2.4, " << v.model << ", T = " << to_string(v.options.time) << " h, seed " << v.seed
       << "): " << counts_text(v.total) << "\n";
   if (v.total.warned > 0)

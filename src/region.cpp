@@ -241,9 +241,25 @@ Region internal::compute_region_joined(const Scene& scene, RegionTarget& target,
     if (options.digits > 0) {
       Rational width = 1;
       for (int k = 0; k < options.digits; ++k) width /= 10;
-      for (auto& r : region.intervals) {
-        if (r.exact_u0) r.u0 = (r.exact_u0 = refined(*r.exact_u0, width))->midpoint();
-        if (r.exact_u1) r.u1 = (r.exact_u1 = refined(*r.exact_u1, width))->midpoint();
+      // An interval's end is usually the next one's start: refined once.
+      std::optional<AlgebraicReal> last_given, last_refined;
+      auto refine = [&](std::optional<AlgebraicReal>& end, Rational& u) {
+        if (!end) return;
+        const bool same =
+            last_given && last_given->poly == end->poly && last_given->lo == end->lo && last_given->hi == end->hi;
+        if (!same) {
+          last_given = end;
+          last_refined = refined(*end, width);
+        }
+        end = last_refined;
+        u = end->midpoint();
+      };
+      const long n = static_cast<long>(region.intervals.size());
+      for (long k = 0; k < n; ++k) {
+        poll(options.control, "region", k, n, "intervals' ends refined");  // --max-seconds, Ctrl-C
+        auto& r = region.intervals[static_cast<std::size_t>(k)];
+        refine(r.exact_u0, r.u0);
+        refine(r.exact_u1, r.u1);
       }
     }
   }

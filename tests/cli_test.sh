@@ -167,6 +167,14 @@ if "$fixel" region "$src/data/scenes/blob32.json" --exact --json | grep -q '"sta
   echo "FAIL: --exact left a partial stretch on blob32"; fail=1
 fi
 expect 2 '--digits: -1 must be in [0, 1000]' -- "$fixel" region "$P" --exact --digits -1
+# Whole-number options are decimal (formats.md: "010" is ten); CLI11 alone read 010 as octal, 0x10 as hex, "" as 0.
+expect 0 '"digits": 10' -- "$fixel" region "$P" --exact --json --digits 010
+expect 2 '--digits: 0x10 is not a whole decimal number' -- "$fixel" region "$P" --exact --digits 0x10
+expect 2 "--digits: '' is not a whole decimal number" -- "$fixel" region "$P" --exact --digits ''
+# Root isolation uses neither --resolution nor --cone: refused, not ignored.
+expect 2 '--cone: paper cannot be combined with --exact' -- "$fixel" region "$P" --exact --cone paper
+expect 2 '--resolution: 1/3 cannot be combined with --exact' -- "$fixel" region "$P" --exact --resolution 1/3
+expect 0 "an end's own status is not decided" -- "$fixel" region "$P" --exact
 expect 2 '--exact: with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --exact --guaranteed
 expect 2 '--validate: 2 needs the certified magnitudes' -- "$fixel" region "$P" --exact --validate 2
 sed 's/"mu": "1\/10"/"mu": ["1\/20", "1\/10"]/' "$P" > "$tmp/interval.json"

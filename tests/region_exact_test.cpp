@@ -3,10 +3,12 @@
 // B-spline parts, and agreement with subdivision.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <random>
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
+#include "fixel/progress.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
@@ -120,6 +122,29 @@ GTEST_TEST(RegionExact, ACubicPieceHasTheGoldenRatioAsItsEndpoint) {
   EXPECT_LE((2 * e.lo + 1) * (2 * e.lo + 1), 5);
   EXPECT_GE((2 * e.hi + 1) * (2 * e.hi + 1), 5);
   EXPECT_EQ(certified_decimal(e).substr(0, 12), "0.6180339887");
+}
+
+// --max-seconds and Ctrl-C were not checked while the ends were refined to
+// D digits (22 s at D = 1000 on a degree-20 piece, exit 0): the refining
+// polls the run's control like every other stage.
+GTEST_TEST(RegionExact, RefiningTheEndsPollsTheRunControl) {
+  const Scene scene = square(true);
+  HalfspaceTarget target(test::v3(0, 0, 1));
+  RunControl control;
+  control.interval = std::chrono::milliseconds(0);
+  bool refining_seen = false;
+  control.on_progress = [&](const char*, long, long, const char* unit) {
+    if (std::string(unit) == "intervals' ends refined") {
+      refining_seen = true;
+      control.cancel = true;  // the next poll, still refining, stops the run
+    }
+  };
+  RegionOptions opt;
+  opt.exact = true;
+  opt.digits = 12;
+  opt.control = &control;
+  EXPECT_THROW(compute_region(scene, target, opt), StoppedError);
+  EXPECT_TRUE(refining_seen);
 }
 
 GTEST_TEST(RegionExact, RefusesTheGuaranteedSetWithAClearError) {

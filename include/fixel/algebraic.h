@@ -19,6 +19,11 @@ using Polynomial = std::vector<Rational>;
 /// neither end is a root. `poly` (integer coefficients c0, c1, …) is
 /// irreducible over Q, primitive, with a positive leading coefficient, so it
 /// is square-free and the minimal polynomial of x up to that scaling.
+/// fixel's own ends are so. For one made by a caller, the functions below
+/// check only part of it (degree >= 2, lo < hi, a sign change, no rational
+/// root met while bisecting): an interval holding three roots, or a
+/// reducible polynomial without a rational root, is not detected and gives
+/// answers about some root in it. Keeping the invariant is the caller's.
 struct AlgebraicReal {
   std::vector<Integer> poly;
   Rational lo, hi;

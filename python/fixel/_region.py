@@ -201,12 +201,13 @@ def _guaranteed_of(guaranteed, scene, S):
 
 
 def region(
-    scene, resolution="1/1024", cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
+    scene, resolution=None, cone="tight", pusher_mu=None, push="step", guaranteed=None, seating=None,
     progress=None, exact=False, digits=0, resolution_length=None, max_seconds=None, approach=False,
 ):  # fmt: skip
     """The pushing region by exact recursive subdivision (``fixel region``).
 
-    ``resolution``: stop splitting at this curve-parameter width (exact).
+    ``resolution``: stop splitting at this curve-parameter width (exact;
+    None is 1/1024; not with ``exact``, which has none).
     ``resolution_length``: a length L (m) instead (``--resolution-length``):
     each Bézier piece stops at its own parameter width, so that every stretch
     left is at most L long (docs/cli.md); ``resolution`` is then ignored.
@@ -232,8 +233,17 @@ def region(
         raise InputError.make("push", repr(push), "is not a push model (step or sustained)")
     if cone not in ("tight", "paper"):
         raise InputError.make("cone", repr(cone), "is not a cone method (tight or paper)")
+    # Root isolation uses neither: refused, not ignored (as the CLI does).
+    if exact and resolution is not None:
+        raise InputError.make(
+            "resolution", str(resolution), "cannot be combined with exact=True (root isolation has no resolution)"
+        )
+    if exact and cone != "tight":
+        raise InputError.make(
+            "cone", repr(cone), "cannot be combined with exact=True (root isolation builds no segment cones)"
+        )
     # Read by the core first, so that bad text is its ParseError naming the argument.
-    res = _fixel.parse_rational(text(resolution, "resolution"), "resolution")
+    res = _fixel.parse_rational(text("1/1024" if resolution is None else resolution, "resolution"), "resolution")
     res_len = None
     if resolution_length is not None:
         res_len = _fixel.parse_rational(text(resolution_length, "resolution_length"), "resolution_length")

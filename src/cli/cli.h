@@ -65,6 +65,11 @@ int run_batch(const std::vector<std::string>& paths, bool json, const std::funct
 VectorQ with_background(const Scene& scene, const VectorQ& p);
 
 /// Help text of a positional list of scenes.
+// Whole-number options are decimal, as exact numbers are (docs/formats.md:
+// "010" is ten): CLI11 alone reads 010 as octal, 0x10 as hex and "" as 0.
+// Checks the text is [+-]digits and strips leading zeros; else an error.
+CLI::Validator decimal_integer();
+
 constexpr const char* kScenesHelp = "Scene file(s) (JSON, docs/formats.md); - reads standard input";
 
 Command add_info(CLI::App& app);

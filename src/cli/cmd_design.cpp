@@ -117,8 +117,9 @@ Command add_design(CLI::App& app) {
   cmd->add_option("--pusher-mu", a->pusher_mu, "Pusher friction M, or lo,hi judged at hi (default: the scene's)");
   cmd->add_option("--gap", a->gap, "Gap of every fixel for the one-step score (default 0)");
   cmd->add_option("--resolution", a->resolution, "Region resolution in curve parameter (default 1/256)");
-  cmd->add_option("--top", a->top, "Report the K best layouts (default 5)");
-  cmd->add_option("--jobs", a->jobs, "Threads (default 0: one per core); the result does not depend on it");
+  cmd->add_option("--top", a->top, "Report the K best layouts (default 5)")->transform(decimal_integer());
+  cmd->add_option("--jobs", a->jobs, "Threads (default 0: one per core); the result does not depend on it")
+      ->transform(decimal_integer());
   cmd->add_flag("--exhaustive", a->exhaustive,
                 "Score every triple (default: in order of the pair bound, stopping when none left can enter the top K; "
                 "the same layouts)");

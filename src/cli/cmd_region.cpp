@@ -26,6 +26,7 @@ struct RegionArgs {
                           svg_path, push_text = "step", time_text = "20";
   int validate = 0, digits = 0;
   bool json = false, guaranteed = false, exact = false, approach = false;
+  bool resolution_given = false, cone_given = false;  // set when the option is on the command line
   RunOptions run;
 };
 
@@ -45,6 +46,12 @@ RegionOptions region_options(const RegionArgs& a) {
                        "cannot be combined with --exact (root isolation has no resolution)");
   }
   options.cone = a.cone_text == "paper" ? ConeMethod::kPaper : ConeMethod::kTight;
+  // Root isolation uses neither: refused, not ignored (as --digits without --exact is).
+  if (a.exact && a.resolution_given)
+    throw InputError("--resolution", a.resolution_text,
+                     "cannot be combined with --exact (root isolation has no resolution)");
+  if (a.exact && a.cone_given)
+    throw InputError("--cone", a.cone_text, "cannot be combined with --exact (root isolation builds no segment cones)");
   options.control = run_control();
   options.exact = a.exact;
   options.digits = a.digits;
@@ -159,11 +166,13 @@ Command add_region(CLI::App& app) {
       ->required();
   auto* resolution = cmd->add_option("--resolution", a->resolution_text,
                                      "Stop splitting at this curve-parameter width (default 1/1024)");
+  resolution->each([a](const std::string&) { a->resolution_given = true; });
   cmd->add_option("--resolution-length", a->resolution_length_text,
                   "Stop splitting where a stretch is certainly at most L m long (exact; per piece, docs/cli.md)")
       ->excludes(resolution);
   cmd->add_option("--cone", a->cone_text, "Segment cone: tight (default) or paper")
-      ->check(CLI::IsMember({"tight", "paper"}));
+      ->check(CLI::IsMember({"tight", "paper"}))
+      ->each([a](const std::string&) { a->cone_given = true; });
   cmd->add_option("--pusher-mu", a->pusher_mu_text, kPusherMuHelp);
   cmd->add_option("--svg", a->svg_path, "Also draw the region to this SVG file");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout (one line per scene for several)");
@@ -175,6 +184,7 @@ Command add_region(CLI::App& app) {
                 "With --push sustained: classify against the approach-aware J' (no pair holds the part on its way "
                 "to the seat, docs/theory.md 10.7)");
   auto* validate = cmd->add_option("--validate", a->validate, "Run N pushes per IN interval in Box2D (docs/physics.md)")
+                       ->transform(decimal_integer())
                        ->check(CLI::Validator(
                            [](std::string& text) {
                              try {
@@ -191,6 +201,7 @@ Command add_region(CLI::App& app) {
       cmd->add_flag("--exact", a->exact,
                     "Exact ends by root isolation instead of subdivision: no partial stretch (docs/theory.md §12)");
   cmd->add_option("--digits", a->digits, "With --exact: refine irrational ends to width 10^-D (default 0: as isolated)")
+      ->transform(decimal_integer())
       ->needs(exact);
   add_run_options(cmd, a->run);
   return {cmd, [a] {
@@ -208,7 +219,7 @@ Command add_sample(CLI::App& app) {
   auto* cmd = app.add_subcommand("sample", "The point-sampling baseline: N exact point tests per curve");
   cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md); - reads standard input")
       ->required();
-  cmd->add_option("--points", a->points, "Points per curve (default 64)");
+  cmd->add_option("--points", a->points, "Points per curve (default 64)")->transform(decimal_integer());
   cmd->add_option("--pusher-mu", a->pusher_mu_text, kPusherMuHelp);
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   cmd->add_flag("--guaranteed", a->guaranteed, "Test against G instead of S (frictionless pusher only)");

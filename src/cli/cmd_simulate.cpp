@@ -47,7 +47,8 @@ Command add_simulate(CLI::App& app) {
   auto* cmd = app.add_subcommand("simulate", "Time-step the part under an impulse with the exact LCP solver");
   cmd->add_option("scene", a->scene_path, "Scene file (JSON, docs/formats.md); - reads standard input")->required();
   cmd->add_option("--impulse", a->impulse_text, "External impulse of step 1: px,py[,ptheta] (b0 is added)")->required();
-  cmd->add_option("--steps", a->steps, "Number of steps (default 1); later steps get no impulse");
+  cmd->add_option("--steps", a->steps, "Number of steps (default 1); later steps get no impulse")
+      ->transform(decimal_integer());
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   add_run_options(cmd, a->run);
   return {cmd, [a] { return run_simulate(*a); }};

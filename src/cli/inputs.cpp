@@ -27,6 +27,22 @@ Scene read_scene_polled(const std::string& path) {
 
 // Loading polls the run's control block: a huge part shows a "load: ..."
 // progress line on a terminal and obeys --max-seconds and Ctrl-C.
+CLI::Validator decimal_integer() {
+  return CLI::Validator(
+      [](std::string& text) {
+        std::size_t k = text.empty() || (text[0] != '+' && text[0] != '-') ? 0 : 1;
+        const std::size_t digits_from = k;
+        for (; k < text.size(); ++k)
+          if (text[k] < '0' || text[k] > '9') return text + " is not a whole decimal number";
+        if (digits_from == text.size()) return "'" + text + "' is not a whole decimal number";
+        std::size_t first = digits_from;
+        while (first + 1 < text.size() && text[first] == '0') ++first;  // "010" is ten
+        text = text.substr(0, digits_from) + text.substr(first);
+        return std::string();
+      },
+      "INTEGER");
+}
+
 Scene read_scene(const std::string& path) {
   Scene scene = read_scene_polled(path);
   end_progress();

@@ -149,6 +149,17 @@ def test_region_bad_options():
         fixel.region(scene, progress="yes")
 
 
+def test_exact_region_refuses_the_options_it_would_ignore():
+    # Root isolation has no resolution and builds no segment cones: as the CLI.
+    scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    for kw, field in (({"resolution": "1/3"}, "resolution"), ({"cone": "paper"}, "cone")):
+        with pytest.raises(fixel.InputError) as e:
+            fixel.region(scene, exact=True, **kw)
+        assert e.value.field == field
+    assert fixel.region(scene, exact=True).resolution is None
+    assert fixel.region(scene).resolution == F(1, 1024)  # None means 1/1024
+
+
 def test_simulate_and_solutions_bad_input(example2):
     with pytest.raises(fixel.InputError):
         fixel.simulate(example2, P, steps=0)
