@@ -1,5 +1,6 @@
 // Push-plan reports: `fixel push-plan` text and JSON.
 #include <cmath>
+#include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -73,13 +74,24 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
   return doc.dump(2) + "\n";
 }
 
+namespace {
+
+// The direction of a normal of any length, as a unit vector (display).
+std::string unit_text(const Vec2& n) {
+  const double x = to_double(n.x), y = to_double(n.y), length = std::hypot(x, y);
+  std::ostringstream out;
+  out << std::setprecision(6) << "(≈ " << x / length << ", ≈ " << y / length << ")";
+  return out.str();
+}
+
+}  // namespace
+
 std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   std::ostringstream out;
   out << "Push plan for scene \"" << scene.name << "\" at curve " << plan.curve
       << ", u = " << internal::readable(plan.u) << "\n";
   out << "  point (m, frame A) = (" << internal::readable(plan.point_A.x) << ", " << internal::readable(plan.point_A.y)
-      << "), push along the inward normal (" << internal::readable(plan.normal_A.x) << ", "
-      << internal::readable(plan.normal_A.y) << ")"
+      << "), push along the inward normal " << unit_text(plan.normal_A)
       << (plan.corner ? "; a corner: the pushes fan out between its two edges' normals, and each status below is "
                         "for the whole fan"
                       : "")

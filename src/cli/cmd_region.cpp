@@ -109,9 +109,10 @@ int run_region(const RegionArgs& a) {
   std::optional<GuaranteedSet> G;
   if (a.guaranteed && !a.exact) G = guaranteed_set(scene, S, run_control());
   if (a.guaranteed && a.exact)
-    throw UnsupportedError("--exact", "",
-                           "with --guaranteed is not supported: the exact region of G is a separate "
-                           "project (docs/theory.md §12); use subdivision");
+    throw UnsupportedError("--exact", "",  // the library's words (as Python shows them), before G is built
+                           "with --guaranteed is not supported: G is a union of pieces minus non-seating "
+                           "sets with strict rows, and its exact region is a separate project "
+                           "(docs/theory.md §12); use subdivision");
   std::optional<Rational> mu;
   if (!a.pusher_mu_text.empty()) mu = parse_pusher_mu(a.pusher_mu_text);
   RegionOptions options = region_options(a);

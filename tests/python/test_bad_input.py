@@ -149,6 +149,16 @@ def test_region_bad_options():
         fixel.region(scene, progress="yes")
 
 
+def test_the_exact_region_of_g_is_refused_in_the_clis_words():
+    # The CLI checks before building G; its reason was other words than the library's.
+    scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    with pytest.raises(fixel.UnsupportedError) as e:
+        fixel.region(scene, exact=True, guaranteed=True)
+    cli = cli_error("region", SCENE_DIR / "polygon.json", "--exact", "--guaranteed")
+    assert cli.startswith("--exact: ") and str(e.value).startswith("exact: ")
+    assert str(e.value)[len("exact: ") :] == cli[len("--exact: ") :]
+
+
 def test_exact_region_refuses_the_options_it_would_ignore():
     # Root isolation has no resolution and builds no segment cones: as the CLI.
     scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
