@@ -25,8 +25,6 @@ Scene read_scene_polled(const std::string& path) {
 
 }  // namespace
 
-// Loading polls the run's control block: a huge part shows a "load: ..."
-// progress line on a terminal and obeys --max-seconds and Ctrl-C.
 CLI::Validator decimal_integer() {
   return CLI::Validator(
       [](std::string& text) {
@@ -43,6 +41,8 @@ CLI::Validator decimal_integer() {
       "INTEGER");
 }
 
+// Loading polls the run's control block: a huge part shows a "load: ..."
+// progress line on a terminal and obeys --max-seconds and Ctrl-C.
 Scene read_scene(const std::string& path) {
   Scene scene = read_scene_polled(path);
   end_progress();
