@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -17,6 +18,7 @@
 #include "fixel/filter.h"
 #include "fixel/internal/exact_lu.h"
 #include "fixel/internal/lemke_filtered.h"
+#include "fixel/internal/lemke_prepared.h"
 #include "fixel/lcp.h"
 #include "fixel/lemke.h"
 #include "fixel/seating.h"
@@ -44,7 +46,20 @@ struct Problem {
   Eigen::MatrixXd Bd;
   Eigen::VectorXd bd;
   fixel::LemkeMatrix prepared;
+  // The same parts as the filtered run's own, for the pivot path alone.
+  std::shared_ptr<fixel::internal::PreparedLemkeMatrix> path_parts;
 };
+
+std::shared_ptr<fixel::internal::PreparedLemkeMatrix> path_parts(const MatrixQ& B) {
+  auto parts = std::make_shared<fixel::internal::PreparedLemkeMatrix>();
+  parts->B = B;
+  {
+    fixel::internal::Protect guard;
+    parts->intervals.assign(parts->B);
+  }
+  parts->scaled.assign(parts->B);
+  return parts;
+}
 
 // Seating LCPs (size 12) of random 3-fixel scenes, at impulses around S.
 const std::vector<Problem>& problems() {
@@ -62,7 +77,8 @@ const std::vector<Problem>& problems() {
       VectorQ p = S.apex;
       for (int j = 0; j < 3; ++j) p -= fixel::test::random_rational(rng, -1, 3, 7) * S.generators[j];
       const fixel::TimeSteppingLcp lcp = fixel::build_lcp(scene);
-      Problem pr{lcp.B, lcp.b(p), Eigen::MatrixXd(12, 12), Eigen::VectorXd(12), fixel::LemkeMatrix(lcp.B)};
+      Problem pr{
+          lcp.B, lcp.b(p), Eigen::MatrixXd(12, 12), Eigen::VectorXd(12), fixel::LemkeMatrix(lcp.B), path_parts(lcp.B)};
       for (int i = 0; i < 12; ++i) {
         pr.bd[i] = fixel::to_double(pr.b[i]);
         for (int j = 0; j < 12; ++j) pr.Bd(i, j) = fixel::to_double(pr.B(i, j));
@@ -275,6 +291,22 @@ void BM_LemkePivotPathOnly(benchmark::State& state) {
 }
 BENCHMARK(BM_LemkePivotPathOnly)->Repetitions(5)->ReportAggregatesOnly(true);
 
+// The same with B prepared: the pivot path of BM_FilteredLemkePreparedIntoReusedResult.
+void BM_LemkePreparedPivotPathOnly(benchmark::State& state) {
+  const auto& all = problems();
+  fixel::ForceExactScope filtered(false);
+  fixel::LemkeResult result;
+  std::vector<int> basis;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const int n = static_cast<int>(all[k].b.size());
+    benchmark::DoNotOptimize(fixel::internal::filtered_lemke_path(all[k].B, all[k].b, 100 * (n + 1), result, basis,
+                                                                  all[k].path_parts.get()));
+    k = (k + 1) % all.size();
+  }
+}
+BENCHMARK(BM_LemkePreparedPivotPathOnly)->Repetitions(5)->ReportAggregatesOnly(true);
+
 // Filtered against forced exact on all problems: status, pivots, w and z.
 void report_filtered_agreement() {
   int differ = 0;
@@ -320,7 +352,10 @@ void report_filtered_agreement() {
 void report_per_problem_times() {
   constexpr int reps = 100;
   using clock = std::chrono::steady_clock;
-  std::vector<double> filtered, reused, prepared, preparing, doubles, siconos, ratios, reused_ratios, prepared_ratios;
+  std::vector<double> filtered, reused, prepared, path, preparing, doubles, siconos, ratios, reused_ratios,
+      prepared_ratios;
+  std::vector<int> basis;
+  fixel::LemkeResult path_result;  // the path alone leaves w and z empty
   Eigen::VectorXd z;
   fixel::LemkeResult result;  // solve_lcp_lemke into a caller's result, as the stepper does
   for (const auto& pr : problems()) {
@@ -338,6 +373,11 @@ void report_per_problem_times() {
     prepared.push_back(time([&] {
       fixel::solve_lcp_lemke(pr.prepared, pr.b, result);
       benchmark::DoNotOptimize(result);
+    }));
+    path.push_back(time([&] {
+      const int n = static_cast<int>(pr.b.size());
+      benchmark::DoNotOptimize(
+          fixel::internal::filtered_lemke_path(pr.B, pr.b, 100 * (n + 1), path_result, basis, pr.path_parts.get()));
     }));
     preparing.push_back(time([&] { benchmark::DoNotOptimize(fixel::LemkeMatrix(pr.B)); }));
     doubles.push_back(time([&] { benchmark::DoNotOptimize(double_lemke(pr.Bd, pr.bd, z)); }));
@@ -371,6 +411,8 @@ void report_per_problem_times() {
             << " us\n"
             << "  the same with B prepared (LemkeMatrix)  " << median(prepared) << " us " << range(prepared) << "; "
             << mean(prepared) << " us\n"
+            << "  its pivot path alone (no exact values)  " << median(path) << " us " << range(path) << "; "
+            << mean(path) << " us\n"
             << "  preparing B (LemkeMatrix)  " << median(preparing) << " us " << range(preparing) << "; "
             << mean(preparing) << " us\n"
             << "  double Lemke          " << median(doubles) << " us " << range(doubles) << "; " << mean(doubles)

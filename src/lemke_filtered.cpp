@@ -384,8 +384,8 @@ bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeRes
 void set_lemke_leave_every_z0_comparison_unordered(bool on) { g_defer_every_z0_comparison = on; }
 
 bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result,
-                         std::vector<int>& basis) {
-  FilteredRun run(B, b);
+                         std::vector<int>& basis, const PreparedLemkeMatrix* prepared) {
+  FilteredRun run(B, b, false, prepared);
   if (!run.run(max_pivots, result, false)) return false;
   basis = run.basis();
   return true;

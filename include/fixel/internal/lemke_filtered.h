@@ -25,9 +25,10 @@ bool filtered_lemke(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeRes
 // The same run without its final values, for the benchmark that measures
 // what the pivot path alone costs: `result` gets status and pivots (w and
 // z stay empty) and `basis` the final basic variable of each tableau row
-// (0..n−1 w, n..2n−1 z, 2n z0). Same preconditions and false as above.
+// (0..n−1 w, n..2n−1 z, 2n z0). Same preconditions, `prepared` and false
+// as above.
 bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, LemkeResult& result,
-                         std::vector<int>& basis);
+                         std::vector<int>& basis, const PreparedLemkeMatrix* prepared = nullptr);
 
 // How the solved filtered runs got their final values since the last
 // reset: by dixon_solve (internal/lemke_dixon.h), or from the factored
