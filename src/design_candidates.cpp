@@ -2,7 +2,10 @@
 // fixel may touch it, and the scene of one layout of three of them.
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <set>
+#include <sstream>
+#include <string>
 #include <utility>
 
 #include "fixel/curve.h"
@@ -215,6 +218,54 @@ Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands,
   }
   s.pusher_mu = o.pusher_mu;
   s.pusher_mu_hi.reset();
+  if (angle_error) *angle_error = worst;
+  return s;
+}
+
+Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignLayout& layout,
+                   int rank, const DesignOptions& o, double* angle_error) {
+  if (rank < 1) throw InputError("rank", std::to_string(rank), "must be >= 1 (1 is the best layout)");
+  for (int i : layout.fixels)
+    if (i < 0 || i >= static_cast<int>(candidates.size()))
+      throw InputError("layout", std::to_string(i),
+                       "is not a candidate index (there are " + std::to_string(candidates.size()) + ")");
+  const bool step = o.push == DesignPush::kStep;
+  double worst = 0;
+  Scene s = layout_scene(part, candidates, layout.fixels, o, step, &worst);
+  std::vector<int> rounded;
+  for (int k = 0; k < 3; ++k) {
+    Fixel& f = s.fixels[static_cast<std::size_t>(k)];
+    const Vec2& normal = candidates[static_cast<std::size_t>(layout.fixels[k])].normal;
+    if (!step) {
+      double e = 0;
+      f.n_A = internal::unit_near(normal, &e);
+      worst = std::max(worst, e);
+    }
+    // Decided exactly: the unit vector is the candidate's direction or not.
+    f.off_boundary = f.n_A.x * normal.y != f.n_A.y * normal.x;
+    if (f.off_boundary) rounded.push_back(k);
+  }
+  if (rounded.empty()) worst = 0;
+  s.name = (part.name.empty() ? std::string("part") : part.name) + "-layout-" + std::to_string(rank);
+  std::string d = "Layout #" + std::to_string(rank) + " of fixel design on " +
+                  (part.name.empty() ? std::string("the part") : part.name) + " (" + (step ? "one-step" : "sustained") +
+                  " ranking, resolution " + to_string(o.resolution) + "): fixels at";
+  for (int k = 0; k < 3; ++k) {
+    const DesignCandidate& c = candidates[static_cast<std::size_t>(layout.fixels[k])];
+    d += std::string(k == 0 ? " " : ", ") + "curve " + std::to_string(c.curve) + " u = " + to_string(c.u);
+  }
+  d += "; score " + to_string(layout.score) + " of the boundary's parameter length.";
+  if (!rounded.empty()) {
+    std::ostringstream angle;
+    angle << std::setprecision(3) << worst;
+    const bool one = rounded.size() == 1;
+    d += one ? " The normal of fixel" : " The normals of fixels";
+    for (std::size_t k = 0; k < rounded.size(); ++k) d += (k == 0 ? " " : ", ") + std::to_string(rounded[k]);
+    d += std::string(one ? " has" : " have") + " irrational length: rounded to " +
+         (one ? "a rational unit vector" : "rational unit vectors") + " (by at most " + angle.str() + " rad), so " +
+         (one ? "it is" : "they are") + " marked off_boundary and this is a slightly different fixture.";
+  }
+  s.description = d;
   if (angle_error) *angle_error = worst;
   return s;
 }

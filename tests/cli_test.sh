@@ -402,6 +402,16 @@ expect 2 '--top: 0 must be > 0' -- "$fixel" design "$tmp/house.json" --top 0
 expect 2 'candidates[0].u: 6 is off curve 0' -- "$fixel" design "$tmp/house.json" --candidates <(echo '{"candidates": [{"curve": 0, "u": "6"}]}')
 expect 2 'body.boundary: is missing' -- "$fixel" design "$src/data/scenes/example2.json"
 expect 2 'cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --svg "$tmp/no/x.svg"
+# --scene-out: the best layout as a scene that reads back, whose region at the design's resolution has the
+# design's score (3/32 of 5 units on the house, all normals exact); no file without a layout.
+expect 0 'wrote '"$tmp"'/house_best.json (layout #1 as a scene)' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --scene-out "$tmp/house_best.json"
+expect 0 '"name": "house-layout-1"' -- cat "$tmp/house_best.json"
+h_score=$("$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["layouts"][0]["score"])')
+h_in=$("$fixel" region "$tmp/house_best.json" --push sustained --resolution 1/64 --json | python3 -c 'import json,sys; from fractions import Fraction as F; print(F(json.load(sys.stdin)["lengths"]["in"]) / 5)')
+[ -n "$h_score" ] && [ "$h_score" = "$h_in" ] || { echo "FAIL: --scene-out: score $h_score, region IN/5 $h_in"; fail=1; }
+expect 2 '--scene-out: '"$tmp"'/none.json was not written: there is no layout (only 2 candidates' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json" --scene-out "$tmp/none.json"
+[ ! -e "$tmp/none.json" ] || { echo "FAIL: --scene-out wrote a file without a layout"; fail=1; }
+expect 2 '--scene-out: '"$tmp"'/no/x.json cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --scene-out "$tmp/no/x.json"
 expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --exhaustive --spacing 1/4 --max-seconds 0.5 --quiet
 expect 4 'time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --spacing 1/16 --max-seconds 0.2 --quiet
 # Past 1,024 candidates every triple is scored, and said so; 4,121 candidates (11.7e9 triples) must not exhaust memory.

@@ -12,7 +12,9 @@
 #include "fixel/io.h"
 #include "fixel/progress.h"
 #include "fixel/region.h"
+#include "fixel/region_target.h"
 #include "fixel/scene_json.h"
+#include "fixel/sustained.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -167,6 +169,113 @@ GTEST_TEST(Design, RankedByTheOneStepPushATripleWithoutFormClosureIsScoredAsItsR
   ASSERT_TRUE(r.layouts[0].step_score.has_value());
   EXPECT_EQ(*r.layouts[0].step_score, in_length / 5);
   EXPECT_EQ(*r.layouts[0].step_score, Rational(119, 320));
+}
+
+bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
+// The same pentagon layout through design_scene: field for field the scene
+// written by hand above, and its region gives the one-step score again.
+GTEST_TEST(Design, AOneStepLayoutAsASceneIsTheSceneWrittenByHand) {
+  const std::string outline =
+      R"("boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["7","4"],["3","7"],["0","3"],["0","0"]]}])";
+  const Scene part = parse_scene(R"({"name": "pent", "time_step": "1", "body": {"dof": 3, "mass": "1", )" + outline +
+                                 R"(}, "fixels": [], "pusher": {"mu": "0"}})");
+  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "117/1024"},
+      {"curve": 0, "u": "1425/1024"}, {"curve": 0, "u": "1839/512"}]})");
+  DesignOptions o = frictionless();
+  o.mu = Rational(1, 10);
+  o.resolution = Rational(1, 256);
+  o.gap = Rational(1, 20);
+  o.push = DesignPush::kStep;
+  const DesignResult r = design(part, c, o);
+  ASSERT_EQ(r.layouts.size(), 1u);
+  double angle_error = -1;
+  const Scene scene = design_scene(part, r.candidates, r.layouts[0], 1, o, &angle_error);
+  EXPECT_EQ(angle_error, 0);
+  const Scene by_hand = parse_scene(R"({"name": "layout", "time_step": "1", "body": {"dof": 3, "mass": "1", )" +
+                                    outline + R"(}, "fixels": [
+         {"point": ["117/256","0"], "normal": ["0","1"], "mu": "1/10", "gap": "1/20"},
+         {"point": ["5299/1024","401/256"], "normal": ["-4/5","3/5"], "mu": "1/10", "gap": "1/20"},
+         {"point": ["627/512","593/128"], "normal": ["4/5","-3/5"], "mu": "1/10", "gap": "1/20"}],
+         "pusher": {"mu": "0"}})");
+  ASSERT_EQ(scene.fixels.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(same(scene.fixels[i].p_AoF_A, by_hand.fixels[i].p_AoF_A)) << i;
+    EXPECT_TRUE(same(scene.fixels[i].n_A, by_hand.fixels[i].n_A)) << i;
+    EXPECT_EQ(scene.fixels[i].mu, by_hand.fixels[i].mu) << i;
+    EXPECT_EQ(scene.fixels[i].gap, by_hand.fixels[i].gap) << i;
+    EXPECT_FALSE(scene.fixels[i].off_boundary) << i;
+  }
+  EXPECT_EQ(scene.name, "pent-layout-1");
+  EXPECT_NE(scene.description.find("score 119/320"), std::string::npos) << scene.description;
+  // Written and read back as a file would be, then analysed on its own.
+  const Scene read = parse_scene(write_scene(scene));
+  RegionOptions ro;
+  ro.resolution = o.resolution;
+  Rational in_length = 0;
+  for (const auto& i : compute_region(read, seating_set(read), ro).intervals)
+    if (i.status == RegionStatus::kIn) in_length += i.u1 - i.u0;
+  EXPECT_EQ(in_length / 5, Rational(119, 320));
+}
+
+// On the house every candidate normal has rational length (axis-aligned),
+// so the scene is the exact fixture; its sustained region, computed on its
+// own from the written file, is the sustained score.
+GTEST_TEST(Design, ASustainedLayoutAsASceneReproducesItsScoreThroughTheRegion) {
+  const Scene part = house("1/10");
+  DesignOptions o = frictionless();
+  o.mu = Rational(1, 20);
+  o.mu_hi = Rational(1, 10);
+  o.pusher_mu = Rational(1, 50);
+  const DesignResult r = design(part, house_candidates(part), o);
+  ASSERT_FALSE(r.layouts.empty());
+  const Scene scene = parse_scene(write_scene(design_scene(part, r.candidates, r.layouts[0], 1, o)));
+  ASSERT_EQ(scene.fixels.size(), 3u);
+  for (const Fixel& f : scene.fixels) {
+    EXPECT_FALSE(f.off_boundary);
+    EXPECT_EQ(f.gap, 0);
+    EXPECT_EQ(f.mu, Rational(1, 20));
+    EXPECT_EQ(f.mu_hi, std::optional<Rational>(Rational(1, 10)));
+  }
+  EXPECT_EQ(scene.pusher_mu, Rational(1, 50));
+  RegionOptions ro;
+  ro.resolution = o.resolution;
+  Rational in_length = 0;
+  for (const auto& i : compute_region(scene, *sustained_target(sustained_set(scene)), ro).intervals)
+    if (i.status == RegionStatus::kIn) in_length += i.u1 - i.u0;
+  ASSERT_TRUE(r.layouts[0].sustained_score.has_value());
+  EXPECT_EQ(in_length / 5, *r.layouts[0].sustained_score);
+  EXPECT_GT(in_length, 0);
+}
+
+// A normal of irrational length (the roof's (−1, −1) direction) is rounded
+// and the fixel marked off_boundary, so the written scene still reads; a
+// rank below 1 and a candidate index out of range are refused.
+GTEST_TEST(Design, ALayoutWithAnIrrationalNormalIsRoundedAndMarkedOffBoundary) {
+  const Scene part = house();
+  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
+                                                           {"curve": 0, "u": "5/2"}]})");
+  DesignLayout layout;
+  layout.fixels = {0, 1, 2};
+  layout.score = Rational(1, 7);
+  double angle_error = 0;
+  const Scene scene = design_scene(part, c, layout, 3, frictionless(), &angle_error);
+  EXPECT_FALSE(scene.fixels[0].off_boundary);
+  EXPECT_FALSE(scene.fixels[1].off_boundary);
+  EXPECT_TRUE(scene.fixels[2].off_boundary);
+  EXPECT_GT(angle_error, 0);
+  EXPECT_LT(angle_error, 1e-6);
+  EXPECT_EQ(scene.fixels[2].n_A.x * scene.fixels[2].n_A.x + scene.fixels[2].n_A.y * scene.fixels[2].n_A.y, 1);
+  EXPECT_EQ(scene.name, "house-layout-3");
+  EXPECT_NE(scene.description.find("fixel 2 has irrational length"), std::string::npos) << scene.description;
+  EXPECT_NO_THROW(parse_scene(write_scene(scene)));
+  EXPECT_THROW(design_scene(part, c, layout, 0, frictionless()), InputError);
+  layout.fixels = {0, 1, 3};
+  try {
+    design_scene(part, c, layout, 1, frictionless());
+    ADD_FAILURE() << "no throw";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("layout"), std::string::npos) << e.what();
+  }
 }
 
 GTEST_TEST(Design, FrictionShrinksTheScoreButKeepsTheMirrorTie) {

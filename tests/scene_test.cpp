@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <set>
 #include <string>
 
@@ -379,6 +380,108 @@ GTEST_TEST(Scene, LoadingReportsProgressAndStopsWhenAsked) {
     EXPECT_EQ(e.reason(), StopReason::kInterrupted);
     EXPECT_NE(std::string(e.what()).find("load: interrupted after"), std::string::npos) << e.what();
   }
+}
+
+bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
+bool same(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!same(a[i], b[i])) return false;
+  return true;
+}
+
+void expect_same_scene(const Scene& a, const Scene& b, const std::string& what) {
+  EXPECT_EQ(a.name, b.name) << what;
+  EXPECT_EQ(a.description, b.description) << what;
+  EXPECT_EQ(a.time_step, b.time_step) << what;
+  EXPECT_EQ(a.body.dof, b.body.dof) << what;
+  EXPECT_EQ(a.body.mass, b.body.mass) << what;
+  EXPECT_EQ(a.body.inertia, b.body.inertia) << what;
+  EXPECT_EQ(a.body.velocity, b.body.velocity) << what;
+  EXPECT_TRUE(same(a.body.p_AoCm_A, b.body.p_AoCm_A)) << what;
+  ASSERT_EQ(a.body.boundary == nullptr, b.body.boundary == nullptr) << what;
+  if (a.body.boundary) {
+    const auto &ca = a.body.boundary->curves, &cb = b.body.boundary->curves;
+    ASSERT_EQ(ca.size(), cb.size()) << what;
+    for (std::size_t k = 0; k < ca.size(); ++k) {
+      EXPECT_EQ(ca[k].type, cb[k].type) << what << " curve " << k;
+      EXPECT_EQ(ca[k].degree, cb[k].degree) << what << " curve " << k;
+      EXPECT_TRUE(same(ca[k].points, cb[k].points)) << what << " curve " << k;
+      EXPECT_EQ(ca[k].knots, cb[k].knots) << what << " curve " << k;
+    }
+  }
+  ASSERT_EQ(a.fixels.size(), b.fixels.size()) << what;
+  for (std::size_t i = 0; i < a.fixels.size(); ++i) {
+    EXPECT_TRUE(same(a.fixels[i].p_AoF_A, b.fixels[i].p_AoF_A)) << what << " fixel " << i;
+    EXPECT_TRUE(same(a.fixels[i].n_A, b.fixels[i].n_A)) << what << " fixel " << i;
+    EXPECT_EQ(a.fixels[i].mu, b.fixels[i].mu) << what << " fixel " << i;
+    EXPECT_EQ(a.fixels[i].mu_hi, b.fixels[i].mu_hi) << what << " fixel " << i;
+    EXPECT_EQ(a.fixels[i].gap, b.fixels[i].gap) << what << " fixel " << i;
+    EXPECT_EQ(a.fixels[i].off_boundary, b.fixels[i].off_boundary) << what << " fixel " << i;
+  }
+  EXPECT_EQ(a.pusher_mu, b.pusher_mu) << what;
+  EXPECT_EQ(a.pusher_mu_hi, b.pusher_mu_hi) << what;
+  EXPECT_EQ(a.background_impulse, b.background_impulse) << what;
+}
+
+GTEST_TEST(WriteScene, EveryBundledSceneReadsBackTheSameAndWritesTheSameText) {
+  for (const char* name : {"blob", "blob32", "example1", "example2", "example2_rounded", "fig6", "nonunique",
+                           "nonunique_part", "polygon"}) {
+    const Scene scene = test::scene_file(name);
+    const std::string text = write_scene(scene);
+    const Scene again = parse_scene(text, name);
+    expect_same_scene(scene, again, name);
+    EXPECT_EQ(write_scene(again), text) << name;
+  }
+}
+
+// Friction intervals, off_boundary, a velocity and b0 survive the trip (the
+// Python dict view once dropped the intervals' upper ends).
+GTEST_TEST(WriteScene, FrictionIntervalsAndEveryOptionalFieldSurvive) {
+  Scene scene = test::scene_file("polygon");
+  scene.fixels[0].mu_hi = Rational(1, 2);
+  scene.fixels[1].off_boundary = true;
+  scene.pusher_mu = Rational(1, 10);
+  scene.pusher_mu_hi = Rational(1, 5);
+  scene.body.velocity = VectorQ::Zero(3);
+  scene.body.velocity[2] = Rational(-1, 3);
+  scene.background_impulse = VectorQ::Zero(3);
+  scene.background_impulse[0] = Rational(7, 2);
+  scene.description = "d\"quoted\"";
+  const std::string text = write_scene(scene);
+  EXPECT_NE(text.find(R"("mu": [)"), std::string::npos) << text;
+  expect_same_scene(scene, parse_scene(text, "trip"), "trip");
+}
+
+GTEST_TEST(WriteScene, InvalidUtf8InANameSetInCodeIsReplacedNotThrown) {
+  Scene scene = test::scene_file("example2");
+  scene.name = std::string("bad\xff name");
+  std::string text;
+  ASSERT_NO_THROW(text = write_scene(scene));
+  EXPECT_EQ(parse_scene(text).name, "bad\xef\xbf\xbd name");  // U+FFFD
+}
+
+GTEST_TEST(SaveScene, AFailedSaveLeavesTheEarlierFileWholeAndNamesThePath) {
+  const std::string dir = testing::TempDir() + "fixel_save_scene_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/scene.json";
+  const Scene polygon = test::scene_file("polygon");
+  save_scene(polygon, path);
+  expect_same_scene(polygon, load_scene(path), "saved");
+  EXPECT_FALSE(std::filesystem::exists(path + ".fixel-partial"));
+  // The temporary file cannot be made: the earlier file stays as it was.
+  std::filesystem::create_directory(path + ".fixel-partial");
+  try {
+    save_scene(test::scene_file("example2"), path);
+    ADD_FAILURE() << "no throw";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  expect_same_scene(polygon, load_scene(path), "kept");
+  EXPECT_THROW(save_scene(polygon, dir + "/no such folder/scene.json"), InputError);
+  EXPECT_THROW(save_scene(polygon, dir), InputError);  // a folder
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -163,6 +163,22 @@ std::array<int, 3> triple_at(long n, long index);
 Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const std::array<int, 3>& fixels,
                    const DesignOptions& options, bool step, double* angle_error = nullptr);
 
+/// A layout as a scene to save and analyse on its own (`fixel design
+/// --scene-out`): the part with the layout's three candidates (indices
+/// into `candidates`) as fixels, as the ranking push model scored them.
+/// Sustained ranking: gap 0, the options' μ (an interval kept) and pusher
+/// μ, and each candidate's inward unit normal, exact when the normal's
+/// length is rational; otherwise the nearby rational unit vector that the
+/// one-step score uses, and the fixel is marked `off_boundary` (a slightly
+/// different fixture: `angle_error` gets the largest angle, rad, display
+/// only). One-step ranking: the one-step scene of layout_scene (rounded
+/// normals, the options' gap), `off_boundary` where rounded. The name is
+/// the part's with "-layout-" and `rank` (1 = best); the description says
+/// which candidates, the score and any rounding. Throws InputError naming
+/// `rank` (< 1) or `layout` (a candidate index out of range).
+Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignLayout& layout,
+                   int rank, const DesignOptions& options, double* angle_error = nullptr);
+
 /// One batch: triples [first, first + count) in lexicographic order, each
 /// filtered and scored by the ranking push model; returns the batch's best
 /// `options.top` and adds its counts to `stats`. Single-threaded and a pure

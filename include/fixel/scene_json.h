@@ -21,6 +21,19 @@ Scene parse_scene(const std::string& json_text, const std::string& source = "sce
 /// Reads and parses a scene file. Throws InputError if it cannot be read.
 Scene load_scene(const std::string& path, RunControl* control = nullptr);
 
+/// The scene in the scene-file format, as indented JSON text: every field
+/// written, derived ones included (mass, inertia and centre of mass from
+/// the outline, and the defaults), every number an exact string, friction
+/// intervals as ["lo", "hi"]. parse_scene of it gives back the same values
+/// (only the flags saying which were derived from the outline are not
+/// kept). Invalid UTF-8 in a name or description set in code becomes U+FFFD.
+std::string write_scene(const Scene& scene);
+
+/// Writes write_scene(scene) to the file `path`: first to a temporary file
+/// beside it, then renamed over it, so an error leaves any earlier file
+/// whole. Throws InputError naming the path when it cannot be written.
+void save_scene(const Scene& scene, const std::string& path);
+
 /// Parses an impulse given as "px,py[,pθ]" and checks its length against dof.
 VectorQ parse_impulse(const std::string& text, int dof, const std::string& field = "--impulse");
 

@@ -16,7 +16,7 @@ import numpy as np
 
 from . import _fixel
 from ._exact import exact, frac, fracs, text, vector, whole
-from ._design import Candidate, Design, Layout, design, design_candidates
+from ._design import Candidate, Design, Layout, design, design_candidates, design_scene
 from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
 from ._worker import stoppable
 from .errors import Error, InputError, ParseError, SceneError, StoppedError, UnsupportedError
@@ -28,7 +28,7 @@ __all__ = [
     "Scene", "SeatingSet", "GuaranteedSet", "Region", "RegionInterval", "RegionStats", "Magnitudes", "AlgebraicEnd",
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
     "to_off", "to_svg", "SustainedSet", "sustained_set", "ApproachSet", "approach_set", "push", "push_plan",
-    "design", "design_candidates", "Design", "Layout", "Candidate", "exact_only", "filter_stats",
+    "design", "design_candidates", "design_scene", "Design", "Layout", "Candidate", "exact_only", "filter_stats",
 ]  # fmt: skip
 
 
@@ -71,8 +71,20 @@ class Scene:
         return cls(stoppable(lambda c: _fixel.parse_scene(text, source, c), max_seconds))
 
     def to_dict(self):
-        """The scene in the scene-file format, every number an exact string."""
-        return self._impl.to_dict()
+        """The scene in the scene-file format, every number an exact string,
+        friction intervals as ["lo", "hi"], derived values (mass, inertia,
+        centre of mass from the outline) written out: Scene.from_dict of it
+        gives the same scene."""
+        return json.loads(self._impl.to_json())
+
+    def save(self, path):
+        """Writes the scene file (`to_dict`'s content, as `fixel design
+        --scene-out` writes one): to a temporary file beside `path`, then
+        renamed over it, so an error leaves an earlier file whole.
+        InputError naming the path when it cannot be written."""
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(f"path: {path!r} is not a file path")
+        _fixel.save_scene(self._impl, os.fspath(path))
 
     name = property(lambda self: self._impl.name, doc="The scene's name (its file's, or from_dict's source).")
     dof = property(lambda self: self._impl.dof, doc="Degrees of freedom: 3 for a rigid body, 2 for a point mass.")

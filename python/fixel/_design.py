@@ -178,6 +178,41 @@ def design_candidates(part, candidates="boundary", spacing=None):
     return out
 
 
+def design_scene(part, design, rank=1):
+    """Layout `rank` (1 = best) of `design` (fixel.design's answer for
+    `part`) as a fixel.Scene, as `fixel design --scene-out` writes it: the
+    part with the layout's three fixels, as the ranking push model scored
+    them (sustained: gap 0, the design's mu and pusher mu, exact unit
+    normals; a normal of irrational length is rounded to a rational unit
+    vector and its fixel marked off_boundary, which the description says).
+    Analyse it with fixel.region, push or push_plan, or save it with
+    Scene.save. InputError when `design` has no layout `rank`."""
+    if not isinstance(design, Design):
+        raise TypeError(f"design: expected the fixel.Design that fixel.design returned, not {type(design).__name__}")
+    rank = whole(rank, "rank")
+    count = len(design.layouts)
+    if not 1 <= rank <= count:
+        why = f"the design has no layout ({design.no_layout})" if count == 0 else f"must be 1 to {count}"
+        raise InputError.make("rank", str(rank), why)
+    scene = _part(part)
+    doc = design.document
+    lo, hi = _mu_pair(doc["mu"], "mu")
+    options = {
+        "push": doc["push"],
+        "resolution": doc["resolution"],
+        "mu": lo,
+        "mu_hi": hi,
+        "pusher_mu": doc["pusher_mu"],
+        "gap": doc["gap"],
+    }
+    layout = design.layouts[rank - 1]
+    three = [(c.curve, text(c.u, "u")) for c in layout.fixels]
+    from . import Scene
+
+    impl, _ = _fixel.design_scene(scene._impl, three, options, text(layout.score, "score"), rank)
+    return Scene(impl)
+
+
 def _part(part):
     from . import Scene
 

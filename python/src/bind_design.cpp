@@ -200,6 +200,22 @@ void bind_design(py::module_& m) {
           r.no_layout = no_layout_reason(r.stats, r.layouts.size());
           return design_json(s, r, o, shipped_layout(s, o));
         });
+  // A layout as a scene (fixel.design_scene): (Scene, largest rounding angle).
+  m.def("design_scene", [](const ScenePtr& scene, const CandidateList& three, const py::dict& opts,
+                           const std::string& score, int rank) {
+    const Scene& s = checked(scene, "part");
+    if (three.size() != 3)
+      throw InputError("layout", std::to_string(three.size()) + " fixels", "must have three fixels");
+    const auto cands = candidates_of(s, three);
+    const DesignOptions o = options_of(opts);
+    DesignLayout layout;
+    layout.fixels = {0, 1, 2};
+    layout.score = parse_rational(score, "score");
+    double angle_error = 0;
+    py::gil_scoped_release release;
+    auto out = std::make_shared<Scene>(design_scene(s, cands, layout, rank, o, &angle_error));
+    return std::make_pair(out, angle_error);
+  });
   m.def("design_check_options",
         [](const ScenePtr& scene, const py::dict& opts) { check_design(checked(scene, "scene"), options_of(opts)); });
 }

@@ -1,6 +1,7 @@
 /// @file
-/// Scene bindings: parse/load with the library's own validation, an exact
-/// dict view (scene.to_dict) and display-only samples of the outline.
+/// Scene bindings: parse/load with the library's own validation, the scene
+/// file's text (write_scene, for scene.to_dict and save) and display-only
+/// samples of the outline.
 
 #include <cmath>
 #include <memory>
@@ -14,68 +15,6 @@ namespace fixel::python {
 namespace {
 
 using ScenePtr = std::shared_ptr<Scene>;
-
-py::list pair(const Vec2& v) {
-  py::list out;
-  out.append(to_string(v.x));
-  out.append(to_string(v.y));
-  return out;
-}
-
-py::dict curve_dict(const Curve& c) {
-  py::dict d;
-  py::list points;
-  for (const auto& p : c.points) points.append(pair(p));
-  if (c.type == Curve::Type::kPolyline) {
-    d["type"] = "polyline";
-    d["points"] = points;
-  } else {
-    d["type"] = "bspline";
-    d["degree"] = c.degree;
-    py::list knots;
-    for (const auto& k : c.knots) knots.append(to_string(k));
-    d["knots"] = knots;
-    d["control_points"] = points;
-  }
-  return d;
-}
-
-// Every field written explicitly (derived defaults included), in the scene
-// file format, so that parse_scene(to_dict) gives back the same scene.
-py::dict scene_dict(const Scene& s) {
-  py::dict body;
-  body["dof"] = s.body.dof;
-  body["mass"] = to_string(s.body.mass);
-  if (s.body.dof == 3) body["inertia"] = to_string(s.body.inertia);
-  body["velocity"] = texts(s.body.velocity);
-  body["center_of_mass"] = pair(s.body.p_AoCm_A);
-  if (s.body.boundary) {
-    py::list curves;
-    for (const auto& c : s.body.boundary->curves) curves.append(curve_dict(c));
-    body["boundary"] = curves;
-  }
-  py::list fixels;
-  for (const auto& f : s.fixels) {
-    py::dict d;
-    d["point"] = pair(f.p_AoF_A);
-    d["normal"] = pair(f.n_A);
-    d["mu"] = to_string(f.mu);
-    d["gap"] = to_string(f.gap);
-    if (f.off_boundary) d["off_boundary"] = true;
-    fixels.append(d);
-  }
-  py::dict pusher;
-  pusher["mu"] = to_string(s.pusher_mu);
-  py::dict d;
-  d["name"] = s.name;
-  if (!s.description.empty()) d["description"] = s.description;
-  d["time_step"] = to_string(s.time_step);
-  d["body"] = body;
-  d["fixels"] = fixels;
-  d["pusher"] = pusher;
-  d["background_impulse"] = texts(s.background_impulse);
-  return d;
-}
 
 const Curve& curve_at(const Scene& s, int k) {
   if (!s.body.boundary) throw SceneError("body.boundary", "(none)", "is needed here: the scene has no outline");
@@ -96,7 +35,15 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("has_boundary", [](const Scene& s) { return s.body.boundary != nullptr; })
       .def_property_readonly("num_curves",
                              [](const Scene& s) { return s.body.boundary ? s.body.boundary->curves.size() : 0; })
-      .def("to_dict", &scene_dict);
+      // The scene file's text (write_scene): fixel.Scene.to_dict parses it.
+      .def("to_json", [](const Scene& s) { return write_scene(s); });
+  m.def(
+      "save_scene",
+      [](const Scene& s, const std::string& path) {
+        py::gil_scoped_release release;
+        save_scene(s, path);
+      },
+      py::arg("scene"), py::arg("path"));
 
   m.def(
       "parse_scene",

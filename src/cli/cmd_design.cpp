@@ -19,7 +19,7 @@ namespace {
 
 struct DesignArgs {
   std::string scene_path, candidates = "boundary", spacing, push = "sustained", mu, pusher_mu, gap = "0",
-                          resolution = "1/256", svg_path;
+                          resolution = "1/256", svg_path, scene_out;
   int top = 5, jobs = 0;
   bool json = false, exhaustive = false;
   RunOptions run;
@@ -71,6 +71,7 @@ DesignOptions design_options(const Scene& part, const DesignArgs& a) {
 int run_design(const DesignArgs& a) {
   arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
+  check_writable(a.scene_out, "--scene-out");
   const Scene part = read_scene(a.scene_path);  // with the plain progress line
   if (run_control()->on_progress) run_control()->on_progress = show_design_progress;
   const DesignOptions o = design_options(part, a);
@@ -99,6 +100,15 @@ int run_design(const DesignArgs& a) {
     write_design_svg(a.svg_path, part, r, o);
     if (!a.json) std::cout << "wrote " << a.svg_path << "\n";
   }
+  if (!a.scene_out.empty()) {
+    if (r.layouts.empty())
+      throw InputError("--scene-out", a.scene_out, "was not written: there is no layout (" + r.no_layout + ")");
+    double angle_error = 0;
+    save_scene(design_scene(part, r.candidates, r.layouts[0], 1, o, &angle_error), a.scene_out);
+    if (!a.json)
+      std::cout << "wrote " << a.scene_out << " (layout #1 as a scene"
+                << (angle_error > 0 ? "; normals rounded, marked off_boundary: see its description" : "") << ")\n";
+  }
   return 0;
 }
 
@@ -124,6 +134,8 @@ Command add_design(CLI::App& app) {
                 "Score every triple (default: in order of the pair bound, stopping when none left can enter the top K; "
                 "the same layouts)");
   cmd->add_option("--svg", a->svg_path, "Draw the best three layouts and their regions to this SVG file");
+  cmd->add_option("--scene-out", a->scene_out,
+                  "Write the best layout as a scene file (the part with its three fixels), for region, push and seat");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   add_run_options(cmd, a->run);
   return {cmd, [a] { return run_design(*a); }};

@@ -10,7 +10,7 @@ import fixel
 
 import json
 
-from conftest import SCENE_DIR, run_cli
+from conftest import SCENE_DIR, cli_json, run_cli
 
 
 @pytest.fixture(scope="module")
@@ -25,6 +25,46 @@ def test_to_dict_round_trip(name):
     again = fixel.Scene.from_dict(d)
     assert again.to_dict() == d
     assert fixel.seating_set(again).halfspaces == fixel.seating_set(scene).halfspaces
+
+
+def test_friction_intervals_survive_to_dict_pickle_and_save(polygon, tmp_path):
+    import pickle
+
+    d = polygon.to_dict()
+    d["fixels"][0]["mu"] = ["1/10", "1/2"]
+    d["pusher"] = {"mu": ["0", "1/5"]}
+    scene = fixel.Scene.from_dict(d, "intervals")
+    # to_dict once wrote only the lower ends: a pickled scene (a worker's
+    # copy) was then judged at the wrong friction.
+    assert scene.to_dict()["fixels"][0]["mu"] == ["1/10", "1/2"]
+    assert scene.to_dict()["pusher"]["mu"] == ["0", "1/5"]
+    assert pickle.loads(pickle.dumps(scene)).to_dict() == scene.to_dict()
+    scene.save(tmp_path / "intervals.json")
+    assert fixel.Scene.load(tmp_path / "intervals.json").to_dict() == scene.to_dict()
+    # The CLI reads the saved file and judges J at the upper ends, as for the dict.
+    assert cli_json("seat", tmp_path / "intervals.json", "--sustained")["sustained"] == cli_json(
+        "seat", _saved(tmp_path, d), "--sustained"
+    )["sustained"]
+
+
+def _saved(tmp_path, d):
+    path = tmp_path / "from_dict.json"
+    path.write_text(json.dumps(d))
+    return path
+
+
+def test_save_refuses_a_missing_folder_and_keeps_an_earlier_file(polygon, example2, tmp_path):
+    path = tmp_path / "scene.json"
+    polygon.save(path)
+    before = path.read_text()
+    (tmp_path / "scene.json.fixel-partial").mkdir()  # the temporary file cannot be made
+    with pytest.raises(fixel.InputError, match="scene.json"):
+        example2.save(path)
+    assert path.read_text() == before
+    with pytest.raises(fixel.InputError):
+        polygon.save(tmp_path / "no such folder" / "scene.json")
+    with pytest.raises(TypeError, match="path"):
+        polygon.save(3)
 
 
 def test_from_dict_accepts_fractions_and_ints(example2):

@@ -62,6 +62,42 @@ def test_the_house_ranks_its_mirror_pair_first_with_equal_exact_scores():
     assert d.layouts[0].fixels[2].point == (Fraction(-1), Fraction(-1, 2))
 
 
+def test_a_layout_as_a_scene_gives_its_score_through_the_region():
+    d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=("1/20", "1/10"), pusher_mu="1/50", **SMALL)
+    scene = fixel.design_scene(HOUSE, d)
+    fixels = scene.to_dict()["fixels"]
+    assert [f["mu"] for f in fixels] == [["1/20", "1/10"]] * 3
+    assert all(f["gap"] == "0" and "off_boundary" not in f for f in fixels)  # the house's normals are exact
+    assert scene.pusher_mu == Fraction(1, 50)
+    r = fixel.region(scene, push="sustained", resolution=SMALL["resolution"])
+    in_length = sum((i.u1 - i.u0 for i in r.intervals if i.status == "in"), Fraction(0))
+    assert in_length > 0 and in_length / 5 == d.layouts[0].score
+    assert scene.name == "house-layout-1"
+    assert fixel.design_scene(HOUSE, d, rank=2).name == "house-layout-2"
+
+
+def test_design_scene_is_the_scene_the_cli_writes(tmp_path, polygon_candidates):
+    path = tmp_path / "candidates.json"
+    path.write_text(json.dumps({"candidates": [{"curve": c, "u": str(u)} for c, u in polygon_candidates]}))
+    out = tmp_path / "best.json"
+    cli_json("design", SCENE_DIR / "polygon.json", "--candidates", path, "--resolution", "1/32", "--scene-out", out)
+    d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, **SMALL)
+    assert fixel.design_scene(SCENE_DIR / "polygon.json", d).to_dict() == json.loads(out.read_text())
+
+
+def test_design_scene_refuses_a_rank_it_does_not_have():
+    d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=0, **SMALL)
+    with pytest.raises(fixel.InputError, match="rank: 0"):
+        fixel.design_scene(HOUSE, d, rank=0)
+    with pytest.raises(fixel.InputError, match=f"must be 1 to {len(d.layouts)}"):
+        fixel.design_scene(HOUSE, d, rank=len(d.layouts) + 1)
+    with pytest.raises(TypeError, match="design"):
+        fixel.design_scene(HOUSE, d.document)
+    none = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES[:2], mu=0, **SMALL)
+    with pytest.raises(fixel.InputError, match="no layout"):
+        fixel.design_scene(HOUSE, none)
+
+
 def test_the_python_thread_pool_agrees_with_the_cli(tmp_path, polygon_candidates):
     path = tmp_path / "candidates.json"
     path.write_text(json.dumps({"candidates": [{"curve": c, "u": str(u)} for c, u in polygon_candidates]}))
