@@ -91,7 +91,8 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   out << "Push plan for scene \"" << scene.name << "\" at curve " << plan.curve
       << ", u = " << internal::readable(plan.u) << "\n";
   out << "  point (m, frame A) = (" << internal::readable(plan.point_A.x) << ", " << internal::readable(plan.point_A.y)
-      << "), push along the inward normal " << unit_text(plan.normal_A)
+      << "), push along " << (plan.corner ? "the next edge's inward normal " : "the inward normal ")
+      << unit_text(plan.normal_A)
       << (plan.corner ? "; a corner: the pushes fan out between its two edges' normals, and each status below is "
                         "for the whole fan"
                       : "")

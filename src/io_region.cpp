@@ -60,7 +60,7 @@ std::map<std::string, Rational> status_lengths(const Region& region) {
 }
 }  // namespace
 
-std::string region_json(const Scene& scene, const Region& region) {
+std::string region_json(const Scene& scene, const Region& region, const SeatedPose* seat) {
   json doc;
   doc["scene"] = scene.name;
   doc["method"] = method_of(region);
@@ -106,6 +106,11 @@ std::string region_json(const Scene& scene, const Region& region) {
       doc["intervals"].back()["magnitude_intervals"] = set;
     }
   }
+  if (!region.sampled) {
+    doc["corners"] = json::array();
+    for (const RegionCorner& c : region.corners)
+      doc["corners"].push_back({{"curve", c.curve}, {"u", to_string(c.u)}, {"status", to_string(c.status)}});
+  }
   doc["counts"] = counts;
   if (region.sampled) {
     // Sample points have no length: the summary counts them ("counts" above
@@ -129,6 +134,15 @@ std::string region_json(const Scene& scene, const Region& region) {
     doc["stats"]["roots"] = region.stats.roots;
     doc["exact"] = true;
     doc["digits"] = region.digits;
+    bool irrational_end = false;
+    for (const auto& r : region.intervals) irrational_end = irrational_end || r.exact_u0 || r.exact_u1;
+    doc["lengths_exact"] = !irrational_end;  // else "lengths" sums the isolating midpoints
+  }
+  if (seat) {
+    doc["seated_pose"] = json::parse(seated_pose_json(*seat));
+    std::string note = seat_rotation_note(*seat);
+    if (!note.empty() && note.back() == '\n') note.pop_back();
+    doc["seat_note"] = note;
   }
   if (region.push != "step") doc["push"] = region.push;
   internal::add_approx(doc);
@@ -187,6 +201,15 @@ std::string region_text(const Scene& scene, const Region& region) {
         out << ", |p| in " << r.magnitudes.describe_readable() << " N*s";
       else
         out << ", no common magnitude";
+    }
+    out << "\n";
+  }
+  if (!region.corners.empty()) {
+    out << "  at these corners an interval ends whose status is not the corner's own (the corner's holds for its "
+           "whole fan of pushes, the interval's for its own edge's normal):";
+    for (std::size_t k = 0; k < region.corners.size(); ++k) {
+      const RegionCorner& c = region.corners[k];
+      out << (k == 0 ? " " : ", ") << "curve " << c.curve << " u=" << to_string(c.u) << " " << to_string(c.status);
     }
     out << "\n";
   }

@@ -12,6 +12,8 @@
 #include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
+#include "fixel/seat_report.h"
+#include "fixel/seating.h"
 
 namespace fixel {
 
@@ -143,8 +145,18 @@ nlohmann::ordered_json internal::approach_json(const ApproachSet& A, const std::
 }
 
 std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
-                           const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench) {
-  json doc;
+                           const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench,
+                           bool with_seating) {
+  json doc = json::object();
+  if (with_seating) {
+    try {
+      const SeatingSet S = seating_set(scene);
+      doc = json::parse(seat_json(scene, S, seat_report(scene, S, std::nullopt, nullptr, false)));
+    } catch (const Error& e) {
+      doc["scene"] = scene.name;
+      doc["seating_unavailable"] = e.what();
+    }
+  }
   doc["scene"] = scene.name;
   doc["seated_pose"] = json::parse(seated_pose_json(J.pose));
   json sustained;

@@ -16,7 +16,7 @@ using fixel::to_string;  // physics::to_string(Outcome) would hide it
 
 namespace {
 
-using json = nlohmann::json;
+using json = nlohmann::ordered_json;  // keys in the order written, as the region document has them
 
 json pose_json(const Pose& p) { return json::array({p.x, p.y, p.theta}); }
 

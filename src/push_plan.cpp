@@ -48,9 +48,11 @@ PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_g
     G = guaranteed_set(scene, S, control);
     plan.in_G = point_status(scene, S, curve, u, Rational(0), &plan.magnitudes_G, &*G);
   }
-  // A representative impulse: exact τ window of the ray b0 + τ g in S.
+  // A representative impulse: exact τ window of the ray b0 + τ g in S. Only
+  // for an IN point: at an OUT corner g's own ray (one edge's normal) can
+  // still hit S while another ray of the fan misses.
   const Magnitudes tau = ray_magnitudes(S, scene.background_impulse, g);
-  if (!tau.empty && !(t.x == 0 && t.y == 0)) {
+  if (plan.in_S == RegionStatus::kIn && !tau.empty && !(t.x == 0 && t.y == 0)) {
     const Rational tau_star = tau.hi ? (tau.lo + *tau.hi) / 2 : (tau.lo > 0 ? 2 * tau.lo : Rational(1));
     const VectorQ p = scene.background_impulse + tau_star * g;
     plan.sample_impulse = p;

@@ -153,7 +153,7 @@ std::vector<Rational> piece_widths(const Boundary& b, const RegionOptions& optio
 // refer to `js`, which must outlive them.
 void classify_pieces(Context& ctx, const RegionOptions& options, const std::vector<internal::Join>& js,
                      const std::vector<Rational>& widths, std::vector<RegionInterval>& raw,
-                     std::vector<internal::Deferred>& deferred) {
+                     std::vector<internal::Deferred>& deferred, std::vector<std::size_t>* corner_entries = nullptr) {
   const Boundary& b = *ctx.scene.body.boundary;
   RegionTarget& target = ctx.target;
   raw.reserve(2 * b.pieces.size());  // a corner and a segment per piece when nothing splits
@@ -167,6 +167,7 @@ void classify_pieces(Context& ctx, const RegionOptions& options, const std::vect
       corner.half_line = internal::in_half_line(target, corner);
       if (!deferred.empty() && deferred.back().index == kUnplaced)  // its magnitudes wait: the bounds say
         corner.half_line = std::string(target.push_model()) == "sustained" || !deferred.back().bounds.has_hi;
+      if (corner_entries) corner_entries->push_back(raw.size());
       place(ctx, std::move(corner), raw);
     }
     if (options.exact) {
@@ -227,13 +228,16 @@ Region internal::compute_region_joined(const Scene& scene, RegionTarget& target,
   const std::vector<Rational> widths = piece_widths(*scene.body.boundary, options);
   std::vector<RegionInterval> raw;
   std::vector<internal::Deferred> deferred;
+  std::vector<std::size_t> corner_entries;
   {
     const StatsScope counting(target, ctx.stats);
     const std::vector<internal::Join> made = given_joins ? std::vector<internal::Join>{} : joins_of(scene);
-    classify_pieces(ctx, options, given_joins ? checked(*given_joins, scene) : made, widths, raw, deferred);
+    classify_pieces(ctx, options, given_joins ? checked(*given_joins, scene) : made, widths, raw, deferred,
+                    &corner_entries);
     internal::settle(raw, deferred, options.merge);
   }
   Region region;
+  region.corners = internal::corner_ends(raw, corner_entries);
   region.intervals = options.merge ? internal::merge_runs(std::move(raw)) : std::move(raw);
   if (options.exact) {
     region.exact = true;

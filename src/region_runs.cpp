@@ -107,6 +107,22 @@ std::vector<RegionInterval> merge_runs(std::vector<RegionInterval> in) {
   return out;
 }
 
+std::vector<RegionCorner> corner_ends(const std::vector<RegionInterval>& raw, const std::vector<std::size_t>& corners) {
+  std::vector<RegionCorner> out;
+  const std::size_t n = raw.size();
+  for (const std::size_t i : corners) {
+    const RegionInterval& c = raw[i];
+    bool differs = false;
+    // The loop is closed: the first corner's neighbour before it is the last interval.
+    for (const std::size_t j : {(i + n - 1) % n, (i + 1) % n}) {
+      const RegionStatus s = raw[j].status;
+      differs = differs || (j != i && s != RegionStatus::kPartial && s != c.status);
+    }
+    if (differs) out.push_back({c.curve, c.u0, c.status});
+  }
+  return out;
+}
+
 Magnitudes neutral_magnitudes() { return Magnitudes::make(Rational(0), true, std::nullopt, false); }
 
 namespace {

@@ -10,6 +10,7 @@
 #include "fixel/progress.h"
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
+#include "fixel/seating.h"
 
 namespace fixel {
 namespace {
@@ -113,6 +114,26 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
   EXPECT_NE(push_plan_text(scene, corner).find("approach-aware J': out (a corner: not every push of its fan is in J'"),
             std::string::npos)
       << push_plan_text(scene, corner);
+}
+
+// The bundled polygon with every gap 0: at the corner u = 2 the next edge's
+// normal (the roof's, the direction printed) has a ray that hits S, but the
+// fan also holds the right edge's normal (−1, 0), whose ray misses (by hand
+// in region_test.cpp). The status is OUT, so no impulse is shown "inside
+// the window": there is none. Just past the corner, on the roof, there is.
+GTEST_TEST(PushPlan, AnOutCornerShowsNoSampleImpulseThoughItsNextEdgesRayHits) {
+  Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/polygon.json");
+  for (Fixel& f : scene.fixels) f.gap = 0;
+  const PushPlan corner = plan_push(scene, 0, Rational(2), false);
+  EXPECT_TRUE(corner.corner);
+  EXPECT_EQ(corner.in_S, RegionStatus::kOut);
+  EXPECT_FALSE(ray_magnitudes(seating_set(scene), scene.background_impulse, corner.wrench_direction).empty);
+  EXPECT_FALSE(corner.sample_impulse.has_value());
+  EXPECT_EQ(push_plan_text(scene, corner).find("inside the window"), std::string::npos);
+  const PushPlan roof = plan_push(scene, 0, Rational(2001, 1000), false);
+  EXPECT_EQ(roof.in_S, RegionStatus::kIn);
+  ASSERT_TRUE(roof.sample_impulse.has_value());
+  EXPECT_GE(roof.sample_outcomes.seating, 1);  // IN in S: some outcome seats
 }
 
 }  // namespace

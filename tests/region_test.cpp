@@ -600,5 +600,50 @@ GTEST_TEST(Region, ResolutionLengthLeavesNoPartialStretchLongerThanIt) {
   EXPECT_THROW(compute_region(scene, seating_set(scene), bad), InputError);
 }
 
+// The bundled polygon with every gap 0. At the corner u = 2 (the point
+// (3/2, 1/2)) the fan runs from the right edge's normal (−1, 0) to the
+// roof's (−4, −5)/√41. By hand: (−1, 0)'s ray misses S and the roof
+// normal's hits (ray_magnitudes below), so the corner is OUT while the IN
+// interval on the roof starts there. The region lists that corner, and at
+// every vertex end it does not list, the interval's status is the vertex's.
+GTEST_TEST(Region, ACornerWhoseStatusAnIntervalEndingThereLacksIsListed) {
+  Scene scene = scene_file("polygon");
+  for (Fixel& f : scene.fixels) f.gap = 0;
+  const SeatingSet S = seating_set(scene);
+  const Vec2 c = scene.body.p_AoCm_A;
+  const Vec2 r{Rational(3, 2) - c.x, Rational(1, 2) - c.y};
+  auto wrench = [&](const Rational& nx, const Rational& ny) { return v3(nx, ny, r.x * ny - r.y * nx); };
+  const VectorQ b0 = VectorQ::Zero(3);
+  EXPECT_TRUE(ray_magnitudes(S, b0, wrench(-1, 0)).empty);
+  EXPECT_FALSE(ray_magnitudes(S, b0, wrench(-4, -5)).empty);
+
+  RegionOptions o;
+  o.resolution = Rational(1, 1024);
+  const Region region = compute_region(scene, S, o);
+  ASSERT_EQ(region.corners.size(), 1u);
+  EXPECT_EQ(region.corners[0].curve, 0);
+  EXPECT_EQ(region.corners[0].u, 2);
+  EXPECT_EQ(region.corners[0].status, RegionStatus::kOut);
+  bool in_from_the_corner = false;
+  for (const RegionInterval& i : region.intervals)
+    in_from_the_corner = in_from_the_corner || (i.u0 == 2 && i.status == RegionStatus::kIn);
+  EXPECT_TRUE(in_from_the_corner);
+  // The vertices u = 1..4: an IN or OUT interval ending at one that is not
+  // listed has the vertex's own status there (the whole fan).
+  for (const RegionInterval& i : region.intervals) {
+    if (i.status == RegionStatus::kPartial) continue;
+    for (const Rational& end : {i.u0, i.u1}) {
+      if (end <= 0 || end >= 5 || denominator(end) != 1) continue;
+      const RegionCorner* listed = nullptr;
+      for (const RegionCorner& k : region.corners)
+        if (k.u == end) listed = &k;
+      const RegionStatus own = point_status(scene, S, 0, end, Rational(0));
+      EXPECT_EQ(own, listed ? listed->status : i.status) << to_string(end);
+    }
+  }
+  // With the scene's own gaps no interval ends at a corner of another status.
+  EXPECT_TRUE(compute_region(scene_file("polygon"), seating_set(scene_file("polygon")), o).corners.empty());
+}
+
 }  // namespace
 }  // namespace fixel

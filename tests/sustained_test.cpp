@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <random>
 #include <sstream>
 
@@ -15,6 +17,8 @@
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
+#include "fixel/seat_report.h"
+#include "fixel/seating.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -446,6 +450,45 @@ GTEST_TEST(SustainedRegion, PushesFromItsInIntervalSeatInBox2D) {
   const auto v = physics::validate_region(scene, region, physics::seated_push_model(scene), 3, 1, push);
   ASSERT_GT(v.total.pushes, 0);
   EXPECT_EQ(v.total.seated, v.total.pushes);
+}
+
+// The sustained region's document carries J's seated pose with |θ*| and
+// the report's note (DESIGN's "report |θ*| always"), before "push".
+GTEST_TEST(SustainedJson, TheSustainedRegionDocumentGivesThetaStarAndTheNote) {
+  const Scene scene = test::scene_file("example2_rounded");
+  const SustainedSet J = sustained_set(scene);
+  RegionOptions o;
+  o.resolution = Rational(1, 64);
+  const Region r = compute_region(scene, *sustained_target(J), o);
+  const auto doc = nlohmann::ordered_json::parse(region_json(scene, r, &J.pose));
+  EXPECT_EQ(doc.at("seated_pose").at("theta_abs").get<double>(), std::abs(J.pose.approx[2]));
+  EXPECT_GE(std::abs(J.pose.approx[2]), 0.2);  // this part turns 0.30 rad: the warning
+  EXPECT_EQ(doc.at("seat_note").get<std::string>().rfind("warning: |theta*| = 0.30031 rad", 0), 0u)
+      << doc.at("seat_note");
+  EXPECT_EQ(doc.items().begin().key(), "scene");
+  EXPECT_EQ((--doc.end()).key(), "push");
+  EXPECT_FALSE(nlohmann::json::parse(region_json(scene, r)).contains("seated_pose"));  // no seat given
+}
+
+// seat --sustained --json adds J's keys to S's (DESIGN §7 "JSON adds"): S's
+// keys are those of seat --json, unchanged; with a friction interval S
+// cannot be built and the document says why.
+GTEST_TEST(SustainedJson, TheSeatDocumentAddsJsKeysToSsOrSaysWhySIsMissing) {
+  const Scene scene = test::scene_file("polygon");
+  const SustainedSet J = sustained_set(scene);
+  const auto with = nlohmann::json::parse(sustained_json(scene, J, std::nullopt, nullptr, std::nullopt, true));
+  const SeatingSet S = seating_set(scene);
+  const auto seat = nlohmann::json::parse(seat_json(scene, S, seat_report(scene, S, std::nullopt, nullptr, false)));
+  for (const auto& item : seat.items()) EXPECT_EQ(with.at(item.key()), item.value()) << item.key();
+  const auto without = nlohmann::json::parse(sustained_json(scene, J, std::nullopt));
+  EXPECT_FALSE(without.contains("apex"));
+  EXPECT_EQ(with.at("sustained"), without.at("sustained"));
+  Scene interval = scene;
+  interval.fixels[0].mu_hi = Rational(1, 5);
+  const SustainedSet Ji = sustained_set(interval);
+  const auto doc = nlohmann::json::parse(sustained_json(interval, Ji, std::nullopt, nullptr, std::nullopt, true));
+  EXPECT_FALSE(doc.contains("apex"));
+  EXPECT_NE(doc.at("seating_unavailable").get<std::string>().find("interval"), std::string::npos);
 }
 
 }  // namespace

@@ -68,7 +68,10 @@ std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::v
 /// "half_line", "magnitudes": {"min", "min_inclusive", "max",
 /// "max_inclusive"} | null}], "counts", "stats": {...}}.
 /// The method, resolution and pusher μ are the ones the region records.
-std::string region_json(const Scene& scene, const Region& region);
+/// `seat` (a sustained region: J's seated pose) adds "seated_pose" (as in
+/// sustained_json, with |θ*| in "theta_abs") and "seat_note" (the note or
+/// warning of seat_rotation_note) before "push".
+std::string region_json(const Scene& scene, const Region& region, const SeatedPose* seat = nullptr);
 /// The same as a readable report.
 std::string region_text(const Scene& scene, const Region& region);
 
@@ -80,9 +83,14 @@ std::string region_text(const Scene& scene, const Region& region);
 /// approach.h, made from J), an "approach" object: "decided", "t_star",
 /// "theta_star", "on_edges", "empty" and, with `approach_wrench`, its
 /// "contains", "why_not" and "hold".
+/// With `with_seating` (the CLI's) the keys of `seat --json` for S come
+/// first, so the document adds J's keys to S's; when S cannot be built for
+/// the scene (a friction interval: the one-step model needs one value),
+/// "seating_unavailable" gives the reason instead.
 std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach = nullptr,
-                           const std::optional<ApproachVerdict>& approach_wrench = std::nullopt);
+                           const std::optional<ApproachVerdict>& approach_wrench = std::nullopt,
+                           bool with_seating = false);
 /// The same as a readable report.
 std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach = nullptr,

@@ -21,7 +21,7 @@ struct PushPlan {
   int curve = 0;
   Rational u;
   Vec2 point_A;   ///< The boundary point (m, frame A).
-  Vec2 normal_A;  ///< Inward normal there (not unit; the push direction).
+  Vec2 normal_A;  ///< Inward normal there (not unit; the push direction); at a corner, the next edge's.
   /// The point is a corner: its pushes form the fan between the two
   /// one-sided normals, and a status is IN when the whole fan is in.
   bool corner = false;
@@ -32,7 +32,8 @@ struct PushPlan {
   Magnitudes magnitudes_G;           ///< The same for G (one of its pieces).
   /// At a representative impulse of the S window (τ* g with τ* rational in
   /// the middle of the exact window, or twice its lower end when it is
-  /// unbounded): the impulse and its one-step outcomes.
+  /// unbounded): the impulse and its one-step outcomes. Only when in_S is
+  /// IN (at an OUT corner g's own ray may hit S while the fan does not).
   std::optional<VectorQ> sample_impulse;
   OutcomeCount sample_outcomes;
   std::optional<bool> sample_in_G;

@@ -83,8 +83,26 @@ struct RegionStats {
 
 /// The region: intervals that tile every curve's parameter range, in order,
 /// and how it was computed.
+/// A corner (a polyline vertex or a knot where the tangent turns) whose
+/// own status, for its whole fan of pushes, differs from the status of an
+/// IN or OUT interval that ends there.
+struct RegionCorner {
+  int curve = 0;
+  Rational u;
+  RegionStatus status = RegionStatus::kPartial;
+};
+
 struct Region {
+  /// The intervals tile each curve's parameter range; neighbours share an
+  /// end. A status holds at every point of its interval, ends included,
+  /// except at an end listed in `corners`: there the corner's own status
+  /// holds for its whole fan of pushes, and the interval's only for pushes
+  /// along its own piece's one-sided normal. (With `exact`, a status holds
+  /// strictly between the ends.)
   std::vector<RegionInterval> intervals;
+  /// The corners where an IN or OUT interval of another status ends, in
+  /// loop order (empty for samples).
+  std::vector<RegionCorner> corners;
   RegionStats stats;
   std::string push = "step";             ///< Push model of the target: "step" (S, G) or "sustained" (J).
   ConeMethod cone = ConeMethod::kTight;  ///< Segment cone used.

@@ -91,7 +91,12 @@ class RegionStats:
 
 @dataclass(eq=False)
 class Region:
-    """The intervals tile every curve's parameter range, in order."""
+    """The intervals tile every curve's parameter range, in order. A status
+    holds at every point of its interval, ends included, except at an end
+    listed in ``corners`` (``(curve, u, status)``): there the corner's own
+    status holds for its whole fan of pushes, the interval's only for its own
+    edge's normal. (With ``exact=True`` a status holds strictly between the
+    ends.)"""
 
     scene: object
     seating: object
@@ -103,6 +108,7 @@ class Region:
     _impl: object = field(repr=False)
     resolution_length: Optional[Fraction] = None  # with region(resolution_length=L): L (m); resolution is then None
     guaranteed: object = field(default=None, repr=False)  # the GuaranteedSet classified against, if any
+    corners: list = field(default_factory=list)  # (curve, u, status): corners whose status an interval ending there lacks
 
     def counts(self):
         """Number of intervals per status: {"in": .., "out": .., "partial": ..}."""
@@ -120,7 +126,10 @@ class Region:
 
     def to_json(self):
         """The document of `fixel region --json` (same C++ writer)."""
-        doc = _fixel.region_json(self.scene._impl, self._impl)
+        from . import SustainedSet
+
+        J = self.seating._impl if isinstance(self.seating, SustainedSet) else None
+        doc = _fixel.region_json(self.scene._impl, self._impl, J)
         return json.loads(doc)
 
 
@@ -139,7 +148,8 @@ def _region_of(scene, S, impl, cone, resolution, pusher_mu):
         s["roots"],
     )  # fmt: skip
     mu = pusher_mu if pusher_mu is not None else frac(scene._impl.pusher_mu)
-    return Region(scene, S, intervals, stats, cone, resolution, mu, impl)
+    corners = [(c, frac(u), status) for c, u, status in impl.corners]
+    return Region(scene, S, intervals, stats, cone, resolution, mu, impl, corners=corners)
 
 
 class _TqdmProgress:

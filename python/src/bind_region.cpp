@@ -10,6 +10,7 @@
 #include "fixel/guaranteed.h"
 #include "fixel/io.h"
 #include "fixel/region.h"
+#include "fixel/sustained.h"
 #include "fixel/svg.h"
 
 namespace fixel::python {
@@ -92,6 +93,14 @@ void bind_region(py::module_& m) {
                                for (const auto& i : r.intervals) out.append(interval_dict(i));
                                return out;
                              })
+      // (curve, u, status) of each corner listed in Region::corners.
+      .def_property_readonly("corners",
+                             [](const Region& r) {
+                               py::list out;
+                               for (const auto& c : r.corners)
+                                 out.append(py::make_tuple(c.curve, to_string(c.u), to_string(c.status)));
+                               return out;
+                             })
       .def_property_readonly("stats", [](const Region& r) { return stats_dict(r.stats); });
 
   m.def("compute_region",
@@ -113,9 +122,14 @@ void bind_region(py::module_& m) {
     return std::make_shared<Region>(
         sample_region(checked(scene, "scene"), checked(S, "seating"), points, mu, g, run_control(control)));
   });
-  m.def("region_json", [](const ScenePtr& scene, const RegionPtr& r) {
-    return region_json(checked(scene, "scene"), checked(r, "region"));
-  });
+  // `sustained`: the SustainedSet of a sustained region (its seated pose), or None.
+  m.def(
+      "region_json",
+      [](const ScenePtr& scene, const RegionPtr& r, const py::object& sustained) {
+        const SeatedPose* seat = sustained.is_none() ? nullptr : &sustained.cast<const SustainedSet&>().pose;
+        return region_json(checked(scene, "scene"), checked(r, "region"), seat);
+      },
+      py::arg("scene"), py::arg("region"), py::arg("sustained") = py::none());
   m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r,
                                const py::object& G) {
     const GuaranteedSet* g = guaranteed_of(G, S);

@@ -60,9 +60,9 @@ RegionOptions region_options(const RegionArgs& a) {
 
 // The region text or JSON, with the Box2D validation when asked.
 void print_region(const Scene& scene, const Region& r, const RegionArgs& a,
-                  const std::optional<physics::RegionValidation>& v) {
+                  const std::optional<physics::RegionValidation>& v, const SeatedPose* seat = nullptr) {
   if (a.json) {
-    const std::string doc = region_json(scene, r);
+    const std::string doc = region_json(scene, r, seat);
     std::cout << (v ? physics::add_validation_json(doc, *v) : doc);
   } else {
     std::cout << region_text(scene, r);
@@ -82,7 +82,7 @@ int run_sustained_region(const Scene& scene, const RegionArgs& a, const physics:
   if (a.validate != 0)  // the wrench at q*: what J judges (magnitude free)
     v = physics::validate_region(scene, r, physics::seated_push_model(scene), a.validate, 1, push_options);
   if (v) v->model = "sustained push: the unit wrench at q* held for T";
-  print_region(scene, r, a, v);
+  print_region(scene, r, a, v, &J.pose);
   if (!a.json) std::cout << seat_rotation_note(J.pose);
   if (!a.svg_path.empty()) {
     write_sustained_region_svg(a.svg_path, scene, J, r);

@@ -37,7 +37,7 @@ int run_sustained_seat(const Scene& scene, const SeatArgs& a) {
     wrench = wrench_verdict(J, *w_W);
     approach_wrench = approach_verdict(A, *w_W);
   }
-  std::cout << (a.json ? sustained_json(scene, J, wrench, &A, approach_wrench)
+  std::cout << (a.json ? sustained_json(scene, J, wrench, &A, approach_wrench, true)
                        : sustained_text(scene, J, wrench, &A, approach_wrench));
   return 0;
 }
@@ -103,7 +103,7 @@ Command add_seat(CLI::App& app) {
   cmd->add_flag("--stable", a->stable, "Also give the seat-and-stay set S ∩ h·C_stab");
   cmd->add_option("--svg", a->svg_path, "Draw the slice p_theta = const of S (and of G with --guaranteed); dof 3");
   cmd->add_flag("--sustained", a->sustained,
-                "The sustained-push wrench set J at the seated pose q* instead of S (past the paper)");
+                "The sustained-push wrench set J at the seated pose q* (past the paper); --json adds its keys to S's");
   cmd->add_option("--wrench", a->wrench_text, "With --sustained: test a world-frame wrench wx,wy,wm (exact numbers)");
   add_run_options(cmd, a->run);
   return {cmd, [a] {

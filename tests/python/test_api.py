@@ -292,6 +292,25 @@ def test_sustained_region_matches_the_cli():
         (d["curve"], F(d["u0"]), F(d["u1"]), d["status"]) for d in cli["intervals"]
     ]
     assert any(i.status == "in" for i in r.intervals)
+    doc = r.to_json()
+    assert doc["seated_pose"]["theta_abs"] == cli["seated_pose"]["theta_abs"]
+    assert doc["seat_note"] == cli["seat_note"] and doc["seat_note"].startswith("note: |theta*|")
+    assert list(doc)[-1] == "push"
+
+
+def test_region_corners_list_the_corner_an_in_interval_ends_at(polygon, tmp_path):
+    d = polygon.to_dict()
+    for f in d["fixels"]:
+        f["gap"] = "0"
+    path = tmp_path / "gaps0.json"
+    path.write_text(json.dumps(d))
+    r = fixel.region(fixel.Scene.from_dict(d), resolution="1/1024")
+    assert r.corners == [(0, F(2), "out")]
+    assert any(i.u0 == 2 and i.status == "in" for i in r.intervals)
+    cli = cli_json("region", path)
+    assert cli["corners"] == [{"curve": 0, "u": "2", "u_approx": 2.0, "status": "out"}]
+    assert r.to_json()["corners"] == cli["corners"]
+    assert fixel.region(polygon, resolution="1/1024").corners == []
 
 
 def test_push_runs_the_engine_and_agrees_with_the_cli():

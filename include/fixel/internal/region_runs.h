@@ -31,6 +31,11 @@ Vec2 end_tangent(const BezierPiece& p);
 // where the last ended; their magnitudes intersect.
 std::vector<RegionInterval> merge_runs(std::vector<RegionInterval> in);
 
+// The corners of the raw list (in loop order; `corners` their indices)
+// whose status differs from an IN or OUT neighbour's: there that
+// neighbour's interval, merged or not, ends at a point of another status.
+std::vector<RegionCorner> corner_ends(const std::vector<RegionInterval>& raw, const std::vector<std::size_t>& corners);
+
 // An IN interval of the raw list whose exact magnitudes wait for the merge:
 // raw[index] holds neutral_magnitudes() meanwhile.
 struct Deferred {
