@@ -123,7 +123,7 @@ nlohmann::ordered_json internal::approach_json(const ApproachSet& A, const std::
   json out;
   out["decided"] = A.decided;
   if (!A.decided) out["undecided_reason"] = A.undecided_reason;
-  out["t_star"] = A.t_star.text();
+  out["t_star"] = A.decided ? json(A.t_star.text()) : json(nullptr);  // unknown, not 0, when undecided
   out["theta_star"] = A.theta_star;
   out["on_edges"] = A.decided ? json(A.on_edges) : json(nullptr);
   if (A.decided && !A.on_edges) out["edge_reason"] = A.edge_reason;

@@ -292,7 +292,7 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
     throw InputError("push(wrench)", shown.str(), "has a component that is not finite");
   }
   check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
-  const PartPolygon poly = part_polygon(scene);
+  const PartPolygon poly = part_polygon(scene, options.control);
   Engine e;
   PushResult r;
   e.listener.events = &r.events;
@@ -320,6 +320,10 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   add_time_scale_warnings(r, h);
   if (nf == 0)
     r.warnings.push_back("the scene has no fixels: nothing can seat the part (the outcome cannot be seated)");
+  bool moving = false;
+  for (Eigen::Index k = 0; k < scene.body.velocity.size(); ++k) moving = moving || scene.body.velocity[k] != 0;
+  if (w.fx == 0 && w.fy == 0 && w.m == 0 && !options.impulse && !moving)
+    r.warnings.push_back("the wrench is zero and the part at rest: nothing moves it (the outcome is a timeout)");
   const Rational total_q = options.time * options.steps_per_h;
   if (total_q > kMaxPushSteps)  // also keeps the step count a long
     throw InputError("PushOptions.time", to_string(options.time),

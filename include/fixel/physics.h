@@ -151,8 +151,10 @@ struct PartPolygon {
 };
 /// Polygonises the boundary and splits it into convex pieces. Throws
 /// SceneError naming the curve if the polygon self-intersects, and naming
-/// "body.boundary" if there is none or it cannot be partitioned.
-PartPolygon part_polygon(const Scene& scene);
+/// "body.boundary" if there is none or it cannot be partitioned. `control`
+/// (may be null) is polled between the stages: StoppedError past its
+/// deadline or when cancelled.
+PartPolygon part_polygon(const Scene& scene, RunControl* control = nullptr);
 
 /// For the mapping test: at t = 0, the engine distance from each fixel's
 /// circle to the part's fixtures, minus the documented contact offset, in

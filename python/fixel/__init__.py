@@ -91,7 +91,11 @@ class Scene:
     num_contacts = property(lambda self: self._impl.num_contacts, doc="Number of fixels (contacts), n_c.")
     has_boundary = property(lambda self: self._impl.has_boundary, doc="Whether the body has an outline.")
     num_curves = property(lambda self: self._impl.num_curves, doc="Curves of the outline (0 without one).")
-    pusher_mu = property(lambda self: frac(self._impl.pusher_mu), doc="Pusher friction μ_p (Fraction).")
+    pusher_mu = property(
+        lambda self: frac(self._impl.pusher_mu),
+        doc="Pusher friction μ_p (Fraction): an interval's upper end, at which every analysis judges it "
+        "(to_dict() has the interval).",
+    )
 
     def curve_range(self, k):
         """(u_begin, u_end) of curve k as Fractions."""
@@ -328,12 +332,14 @@ def to_svg(path, result, theta=None, impulse=None):
 class SustainedSet:
     """J: the held wrenches (world frame: force through the centre of mass,
     moment about it) that drive the part into its seat and keep it there,
-    judged at the exact seated pose q* (docs/theory.md §10)."""
+    judged at the exact seated pose q* (docs/theory.md §10). ``empty`` is
+    None (unknown) when J's pieces are not decided (``pieces_decided``
+    False), as the CLI's null."""
 
     def __init__(self, scene, impl):
         self.scene = scene
         self._impl = impl
-        self.empty = impl.empty
+        self.empty = impl.empty if impl.pieces_decided else None
         self.empty_reason = impl.empty_reason
         self.strongly_stable = impl.strongly_stable
         self.pieces_decided = impl.pieces_decided
@@ -415,7 +421,8 @@ class ApproachSet:
     UnsupportedError), ``t_star`` (tan(θ*/2), exact text), ``theta_star``
     (rad, display), ``on_edges`` (False: a contact leaves its edge on the way
     and J' is empty; ``edge_reason`` says where), ``empty`` (True when J' is
-    known to be empty), and ``J``, the SustainedSet it refines."""
+    known to be empty), and ``J``, the SustainedSet it refines. When not
+    ``decided``, ``t_star``, ``on_edges`` and ``empty`` are None (unknown)."""
 
     def __init__(self, J, impl):
         self.J = J
@@ -423,11 +430,12 @@ class ApproachSet:
         self._impl = impl
         self.decided = impl.decided
         self.undecided_reason = impl.undecided_reason
-        self.t_star = impl.t_star
+        # Unknown (None) when J' is undecided, as the CLI's JSON has them (null).
+        self.t_star = impl.t_star if impl.decided else None
         self.theta_star = impl.theta_star
-        self.on_edges = impl.on_edges
+        self.on_edges = impl.on_edges if impl.decided else None
         self.edge_reason = impl.edge_reason
-        self.empty = impl.empty
+        self.empty = impl.empty if impl.decided else None
 
     def why_not(self, w, frame="world"):
         """"" when w is in J', else the reason (as J's, or the pair that can

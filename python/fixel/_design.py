@@ -644,6 +644,18 @@ def _design_dask(scene, cands, options, client, batch_size, wave, output, progre
     seconds = time.perf_counter() - start
     workers = len(client.scheduler_info().get("workers", {}))
     doc = json.loads(_fixel.design_report(scene._impl, cands, options, [l[3] for l in top], counts, seconds, workers))
+    # The report scores the chosen triples again: a recorded score that
+    # differs (an edited or foreign output file) could have displaced a
+    # layout that belongs in the top K, so it is refused, not trusted.
+    rescored = {l["index"]: frac(l["score"]) for l in doc["layouts"]}
+    for l in top:
+        if rescored.get(l[3]) != frac(l[4]):
+            raise InputError.make(
+                "output",
+                str(output),
+                f"records triple {l[3]} with score {l[4]}, but it scores {rescored.get(l[3])}: the file was edited "
+                "or written by another version of fixel; remove it (or name another output) and run again",
+            )
     doc["stats"]["batches"] = batches.batches
     doc["stats"]["batches_resumed"] = batches.resumed
     doc["stats"]["rounds"] = rounds

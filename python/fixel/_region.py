@@ -147,7 +147,7 @@ def _region_of(scene, S, impl, cone, resolution, pusher_mu):
         s["cone_tests"], s["lp_tests"], s["point_tests"], s["depth"], frac(s["partial_length"]), s["seconds"],
         s["roots"],
     )  # fmt: skip
-    mu = pusher_mu if pusher_mu is not None else frac(scene._impl.pusher_mu)
+    mu = frac(impl.pusher_mu)  # the friction the region was computed with (an interval's upper end)
     corners = [(c, frac(u), status) for c, u, status in impl.corners]
     return Region(scene, S, intervals, stats, cone, resolution, mu, impl, corners=corners)
 
@@ -220,7 +220,7 @@ def region(
     None is 1/1024; not with ``exact``, which has none).
     ``resolution_length``: a length L (m) instead (``--resolution-length``):
     each Bézier piece stops at its own parameter width, so that every stretch
-    left is at most L long (docs/cli.md); ``resolution`` is then ignored.
+    left is at most L long (docs/cli.md); ``resolution`` must then be None.
     ``cone``: "tight" or "paper". ``pusher_mu``: overrides the scene's.
     ``push``: "step" (one impulse, against S) or "sustained" (a held wrench,
     against the sustained-push set J at the seated pose; ``seating`` is then
@@ -259,6 +259,10 @@ def region(
         res_len = _fixel.parse_rational(text(resolution_length, "resolution_length"), "resolution_length")
     if res_len is not None and exact:
         raise InputError.make("resolution_length", res_len, "cannot be combined with exact=True")
+    if res_len is not None and resolution is not None:  # refused, not ignored, as --resolution-length is
+        raise InputError.make(
+            "resolution", str(resolution), "cannot be combined with resolution_length (each piece gets its own width)"
+        )
     shown = None if exact or res_len is not None else frac(res)
     mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
     if not isinstance(exact, bool):

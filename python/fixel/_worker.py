@@ -26,15 +26,16 @@ def _executor():
 def in_worker(work, tick, interval=0.1, on_interrupt=None):
     """Runs ``work()`` (a C++ call that releases the GIL) in a worker thread
     and calls ``tick()`` every ``interval`` seconds while it runs. On
-    KeyboardInterrupt, ``on_interrupt()`` is called (a core that polls a
-    control stops at its next poll), the worker is waited for (a core is
-    never left running unseen), and the interrupt is raised again. An
-    exception of ``work`` is raised in the caller's thread."""
+    KeyboardInterrupt, or any exception raised by ``tick()`` (a progress
+    callback that raises to abort), ``on_interrupt()`` is called (a core that
+    polls a control stops at its next poll), the worker is waited for (a
+    core is never left running unseen), and the exception is raised again.
+    An exception of ``work`` is raised in the caller's thread."""
     future = _executor().submit(work)
     try:
         while not wait([future], timeout=interval).done:
             tick()
-    except KeyboardInterrupt:
+    except BaseException:
         if on_interrupt is not None:
             on_interrupt()
         raise

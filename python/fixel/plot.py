@@ -70,6 +70,11 @@ def wrench_sphere(ax, scene, region=None, seating=None, grid=(120, 60), samples_
         raise InputError.make("scene", f"dof {scene.dof}", "has no wrench sphere: wrench_sphere needs dof 3")
     if seating is None:
         seating = region.seating if region is not None else None
+    if seating is not None and not hasattr(seating, "approx"):
+        raise TypeError(
+            f"wrench_sphere draws the one-step seating set S (or a region against it), not a "
+            f"{type(seating).__name__}: for J draw the region with fixel.plot.region"
+        )
     if seating is not None:
         approx = seating.approx
         b0 = np.array([float(v) for v in _fractions(scene.to_dict()["background_impulse"])])

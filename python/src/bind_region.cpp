@@ -101,6 +101,7 @@ void bind_region(py::module_& m) {
                                  out.append(py::make_tuple(c.curve, to_string(c.u), to_string(c.status)));
                                return out;
                              })
+      .def_property_readonly("pusher_mu", [](const Region& r) { return to_string(r.pusher_mu); })
       .def_property_readonly("stats", [](const Region& r) { return stats_dict(r.stats); });
 
   m.def("compute_region",

@@ -31,7 +31,8 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("name", [](const Scene& s) { return s.name; })
       .def_property_readonly("dof", [](const Scene& s) { return s.body.dof; })
       .def_property_readonly("num_contacts", &Scene::num_contacts)
-      .def_property_readonly("pusher_mu", [](const Scene& s) { return to_string(s.pusher_mu); })
+      // The value every analysis judges at: an interval's upper end.
+      .def_property_readonly("pusher_mu", [](const Scene& s) { return to_string(s.pusher_mu_upper()); })
       .def_property_readonly("has_boundary", [](const Scene& s) { return s.body.boundary != nullptr; })
       .def_property_readonly("num_curves",
                              [](const Scene& s) { return s.body.boundary ? s.body.boundary->curves.size() : 0; })

@@ -313,6 +313,41 @@ def test_region_corners_list_the_corner_an_in_interval_ends_at(polygon, tmp_path
     assert fixel.region(polygon, resolution="1/1024").corners == []
 
 
+def test_a_pusher_friction_interval_reads_as_its_upper_end_as_every_analysis_judges_it(polygon, tmp_path):
+    d = polygon.to_dict()
+    d["pusher"] = {"mu": ["0", "1/10"]}
+    scene = fixel.Scene.from_dict(d)
+    assert scene.pusher_mu == F(1, 10)
+    r = fixel.region(scene, resolution="1/64")
+    path = tmp_path / "pusher_interval.json"
+    path.write_text(json.dumps(d))
+    cli = cli_json("region", path, "--resolution", "1/64")
+    assert r.pusher_mu == F(cli["pusher_mu"]) == F(1, 10)
+    assert r.to_json()["pusher_mu"] == "1/10"
+    assert fixel.region(scene, resolution="1/64", pusher_mu="1/20").pusher_mu == F(1, 20)
+
+
+def test_resolution_and_resolution_length_together_are_refused_as_by_the_cli(polygon):
+    with pytest.raises(fixel.InputError, match="resolution: 1/8 cannot be combined with resolution_length"):
+        fixel.region(polygon, resolution="1/8", resolution_length="1/100")
+    code, _, err = run_cli("region", SCENE_DIR / "polygon.json", "--resolution", "1/8", "--resolution-length", "1/100")
+    assert code == 2 and "--resolution excludes --resolution-length" in err
+
+
+def test_the_wrench_sphere_of_a_sustained_region_is_a_clear_type_error(polygon):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    import fixel.plot
+
+    fig, ax = plt.subplots()
+    with pytest.raises(TypeError, match="wrench_sphere draws the one-step seating set S"):
+        fixel.plot.wrench_sphere(ax, polygon, region=fixel.region(polygon, push="sustained", resolution="1/16"))
+    plt.close(fig)
+
+
 def test_push_runs_the_engine_and_agrees_with_the_cli():
     path = SCENE_DIR / "polygon.json"
     r = fixel.push(fixel.Scene.load(path), wrench=[-1, -1, 0], time=5)

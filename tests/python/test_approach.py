@@ -151,3 +151,18 @@ def test_push_plan_j_prime_at_a_smooth_point_is_the_part_frame_verdict_on_g(poly
 def test_a_frame_other_than_world_or_part_is_an_input_error(polygon_approach):
     with pytest.raises(fixel.InputError, match="frame"):
         polygon_approach.contains(["-1", "-1", "0"], frame="body")
+
+
+def test_an_undecided_j_prime_reads_as_unknown_not_as_empty():
+    # example2_rounded seats on curved contacts: q* is only enclosed, so J's
+    # pieces and J' are not decided. Their fields are None, as the CLI's null.
+    scene = fixel.Scene.load(SCENE_DIR / "example2_rounded.json")
+    A = fixel.approach_set(scene)
+    assert A.decided is False and A.undecided_reason
+    assert A.t_star is None and A.on_edges is None and A.empty is None
+    assert A.J.pieces_decided is False and A.J.empty is None
+    code, out, err = run_cli("seat", SCENE_DIR / "example2_rounded.json", "--sustained", "--json")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert doc["approach"]["t_star"] is None and doc["approach"]["empty"] is None
+    assert doc["sustained"]["empty"] is None

@@ -129,6 +129,22 @@ def test_a_stopped_region_still_tells_its_progress_callback_done(blob32):
     assert events[0] == "start" and events[-1] == "done"
 
 
+def test_a_progress_callback_that_raises_stops_the_core(blob32):
+    # Without the cancel the call would return only at the 30 s backstop.
+    def abort(stage, t):
+        if stage == "running":
+            raise RuntimeError("abort from the callback")
+
+    t0 = time.monotonic()
+    with pytest.raises(RuntimeError, match="abort from the callback"):
+        fixel.region(blob32, progress=abort, max_seconds=30, **SLOW)
+    assert time.monotonic() - t0 < 25
+    events = []
+    with pytest.raises(ZeroDivisionError):
+        fixel.design(blob32, spacing="1/8", max_seconds=30, progress=lambda *a: events.append(a) or 1 / 0)
+    assert len(events) == 1  # raised at its first report, and the run ended there
+
+
 def _interrupted(call):
     """Raises KeyboardInterrupt in the main thread 0.3 s into ``call()``;
     returns the seconds until ``call`` gave up."""

@@ -254,6 +254,22 @@ def test_a_recorded_batch_that_is_not_the_batch_it_stands_for_is_refused(client,
     assert (e.value.field, e.value.value) == ("output", str(out))
 
 
+def test_a_recorded_score_that_the_triple_does_not_have_is_refused(client, polygon_candidates, tmp_path):
+    out = tmp_path / "design.jsonl"
+    run = dict(candidates=polygon_candidates, client=client, batch_size=20, output=str(out), exhaustive=True, **SMALL)
+    first = fixel.design(SCENE_DIR / "polygon.json", **run)
+    records = [json.loads(line) for line in out.read_text().splitlines()]
+    best = first.layouts[0].score
+    # A layout that is not the best, edited to outscore it: trusted, it would displace a true top layout.
+    edited = next(r for r in records if any(Fraction(l[4]) < best for l in r["layouts"]))
+    layout = next(l for l in edited["layouts"] if Fraction(l[4]) < best)
+    layout[4] = "999"
+    out.write_text("".join(json.dumps(r) + "\n" for r in records))
+    with pytest.raises(fixel.InputError, match=f"records triple {layout[3]} with score 999, but it scores") as e:
+        fixel.design(SCENE_DIR / "polygon.json", **run)
+    assert (e.value.field, e.value.value) == ("output", str(out))
+
+
 @pytest.mark.parametrize(
     "bad, exc, field",
     [
