@@ -221,6 +221,13 @@ std::string to_string(Outcome outcome) {
 Wrench to_wrench(const VectorQ& w, int dof, const std::string& field) {
   if (w.size() != dof)
     throw InputError(field, std::to_string(w.size()) + " components", "but the scene has dof " + std::to_string(dof));
+  // Checked as given: past double range it would show only as inf.
+  for (Eigen::Index k = 0; k < w.size(); ++k)
+    if (!std::isfinite(to_double(w[k]))) {
+      const std::string text = to_string(w[k]);
+      throw InputError(field + "[" + std::to_string(k) + "]", text.size() > 40 ? text.substr(0, 40) + "..." : text,
+                       "is beyond double range: the engine takes floats (|x| < 1e30)");
+    }
   return {to_double(w[0]), to_double(w[1]), dof == 3 ? to_double(w[2]) : 0.0};
 }
 
