@@ -133,6 +133,23 @@ class Region:
         return json.loads(doc)
 
 
+def _pusher_mu(pusher_mu):
+    """The pusher μ as exact text, or None: one number, or (lo, hi) judged at
+    hi as the CLI's ``--pusher-mu lo,hi`` (the region shrinks as μ grows)."""
+    if pusher_mu is None:
+        return None
+    if isinstance(pusher_mu, (list, tuple)):
+        if len(pusher_mu) != 2:
+            raise InputError.make("pusher_mu", repr(pusher_mu), "must be one number or (lo, hi)")
+        lo, hi = (_fixel.parse_rational(text(x, "pusher_mu"), "pusher_mu") for x in pusher_mu)
+        if frac(hi) < frac(lo):
+            raise InputError.make("pusher_mu", f"({lo}, {hi})", "has lo > hi")
+        if frac(lo) < 0:
+            raise InputError.make("pusher_mu", f"({lo}, {hi})", "must be >= 0")
+        return hi
+    return text(pusher_mu, "pusher_mu")
+
+
 def _region_of(scene, S, impl, cone, resolution, pusher_mu):
     intervals = [
         RegionInterval(
@@ -221,7 +238,7 @@ def region(
     ``resolution_length``: a length L (m) instead (``--resolution-length``):
     each Bézier piece stops at its own parameter width, so that every stretch
     left is at most L long (docs/cli.md); ``resolution`` must then be None.
-    ``cone``: "tight" or "paper". ``pusher_mu``: overrides the scene's.
+    ``cone``: "tight" or "paper". ``pusher_mu``: overrides the scene's (one number, or (lo, hi) judged at hi).
     ``push``: "step" (one impulse, against S) or "sustained" (a held wrench,
     against the sustained-push set J at the seated pose; ``seating`` is then
     the SustainedSet and IN intervals carry no magnitudes).
@@ -264,7 +281,7 @@ def region(
             "resolution", str(resolution), "cannot be combined with resolution_length (each piece gets its own width)"
         )
     shown = None if exact or res_len is not None else frac(res)
-    mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
+    mu = _pusher_mu(pusher_mu)
     if not isinstance(exact, bool):
         raise TypeError(f"exact: {exact!r} is not a bool")
     digits = whole(digits, "digits")
@@ -341,7 +358,7 @@ def sample(scene, points, pusher_mu=None, guaranteed=None, seating=None, max_sec
 
     scene = _scene(scene)
     points = whole(points, "points")
-    mu = None if pusher_mu is None else text(pusher_mu, "pusher_mu")
+    mu = _pusher_mu(pusher_mu)
     S = _seating_for(seating, guaranteed, scene)
     G = _guaranteed_of(guaranteed, scene, S)
     g = None if G is None else G._impl

@@ -327,6 +327,21 @@ def test_a_pusher_friction_interval_reads_as_its_upper_end_as_every_analysis_jud
     assert fixel.region(scene, resolution="1/64", pusher_mu="1/20").pusher_mu == F(1, 20)
 
 
+def test_a_pusher_mu_pair_is_judged_at_its_upper_end_as_the_clis_lo_hi():
+    path = SCENE_DIR / "example2_rounded.json"
+    scene = fixel.Scene.load(path)
+    pair = fixel.region(scene, pusher_mu=("0", "1/10"), resolution="1/64")
+    cli = cli_json("region", path, "--pusher-mu", "0,1/10", "--resolution", "1/64")
+    assert pair.pusher_mu == F(1, 10)
+    assert [(i.curve, i.u0, i.u1, i.status) for i in pair.intervals] == [
+        (d["curve"], F(d["u0"]), F(d["u1"]), d["status"]) for d in cli["intervals"]
+    ]
+    with pytest.raises(fixel.InputError, match="lo > hi"):
+        fixel.region(scene, pusher_mu=("1/5", "1/10"))
+    with pytest.raises(fixel.InputError, match="one number or"):
+        fixel.region(scene, pusher_mu=("0", "1/10", "1/5"))
+
+
 def test_resolution_and_resolution_length_together_are_refused_as_by_the_cli(polygon):
     with pytest.raises(fixel.InputError, match="resolution: 1/8 cannot be combined with resolution_length"):
         fixel.region(polygon, resolution="1/8", resolution_length="1/100")
