@@ -89,7 +89,7 @@ class RegionStats:
     roots: int = 0  # exact region (exact=True): real roots isolated in the pieces' interiors
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, repr=False)
 class Region:
     """The intervals tile every curve's parameter range, in order. A status
     holds at every point of its interval, ends included, except at an end
@@ -109,6 +109,14 @@ class Region:
     resolution_length: Optional[Fraction] = None  # with region(resolution_length=L): L (m); resolution is then None
     guaranteed: object = field(default=None, repr=False)  # the GuaranteedSet classified against, if any
     corners: list = field(default_factory=list)  # (curve, u, status): corners whose status an interval ending there lacks
+
+    def __repr__(self):
+        # Short: a sampled region can hold tens of thousands of intervals.
+        c = self.counts()
+        return (
+            f"<fixel.Region of {self.scene.name!r}: {len(self.intervals)} intervals "
+            f"(in {c['in']}, out {c['out']}, partial {c['partial']}), {len(self.corners)} corners listed>"
+        )
 
     def counts(self):
         """Number of intervals per status: {"in": .., "out": .., "partial": ..}."""

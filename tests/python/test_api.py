@@ -342,6 +342,15 @@ def test_a_pusher_mu_pair_is_judged_at_its_upper_end_as_the_clis_lo_hi():
         fixel.region(scene, pusher_mu=("0", "1/10", "1/5"))
 
 
+def test_a_regions_repr_is_short_and_counts_its_intervals(polygon):
+    r = fixel.sample(polygon, points=2000)
+    c = r.counts()
+    assert repr(r) == (
+        f"<fixel.Region of 'polygon': 2000 intervals (in {c['in']}, out {c['out']}, partial {c['partial']}), "
+        "0 corners listed>"
+    )
+
+
 def test_resolution_and_resolution_length_together_are_refused_as_by_the_cli(polygon):
     with pytest.raises(fixel.InputError, match="resolution: 1/8 cannot be combined with resolution_length"):
         fixel.region(polygon, resolution="1/8", resolution_length="1/100")
