@@ -26,8 +26,9 @@ using P2 = std::array<double, 2>;
 // The part's bounding-box diagonal maps to this many engine units, so that
 // b2_linearSlop (0.005 units) is 5e-5 of the part size (the issue asks ≤ 1e-4).
 constexpr double kEngineSize = 100;
-constexpr double kGapFraction = 1e-4;   // seated: every gap below 1e-4 · size
-constexpr double kRestFraction = 1e-4;  // at rest: speed below 1e-4 · size / h
+constexpr double kGapFraction = 1e-4;        // seated: every gap below 1e-4 · size
+constexpr std::size_t kLargeOutline = 4096;  // vertices: polled every step (as polygonize.cpp's partition switch)
+constexpr double kRestFraction = 1e-4;       // at rest: speed below 1e-4 · size / h
 constexpr double kSlop = b2_linearSlop;
 // Fixel circles are tiny; their centre sits outside f_i by the radius plus
 // 1.5 slop, so that Box2D's resting overlap (between 0 and one slop past the
@@ -367,8 +368,11 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   measure(pose, true);
   r.trajectory.push_back({0, pose});
   long seat_run = 0, jam_run = 0;
+  // Every 1024 steps; every step for a large outline, whose steps take
+  // milliseconds each (thousands of convex pieces).
+  const long poll_every = poly.outline.size() >= kLargeOutline ? 1 : 1024;
   for (long step = 1; step <= total; ++step) {
-    if (step % 1024 == 1) poll(options.control, "push", step - 1, total, "engine steps");
+    if ((step - 1) % poll_every == 0) poll(options.control, "push", step - 1, total, "engine steps");
     e.listener.t = double(step) * r.dt;
     e.listener.pose = pose;
     e.part->ApplyForceToCenter(force, true);

@@ -252,7 +252,12 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
     if (out) *out = Magnitudes{};
     if (out_ || empty_) {
       if (contains_cone(gens, &d_first, &d_last, nullptr)) return RegionStatus::kIn;
-      return misses(gens) ? RegionStatus::kOut : RegionStatus::kPartial;
+      if (misses(gens)) return RegionStatus::kOut;
+      // A point is IN only when every push of its cone is: one edge ray
+      // certainly outside J′ makes it OUT, as a ray outside J does for J.
+      for (const VectorQ& g : gens)
+        if (misses({g})) return RegionStatus::kOut;
+      return RegionStatus::kPartial;
     }
     try {
       const bool in = std::visit([&](const auto& d) { return cone_in_J(d, gens, stats); }, d_->data);

@@ -100,15 +100,15 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
   EXPECT_EQ(approach.at("t_star"), "15-1*sqrt(226)");
   EXPECT_EQ(doc.at("corner"), false);
   // At the corner u = 2 a status is for the whole fan, as for J and S: IN
-  // only when all of it is in J'. The J' region leaves this fan PARTIAL
-  // (undecided between its stand-ins), which is no claim that some push is
-  // in J', so the plan says OUT: not every push of the fan is in J' (nor
-  // in J).
+  // only when all of it is in J'. Not every push of the fan is in J (in_J
+  // is OUT), so not in J' ⊆ J: the plan says OUT, and so does the J'
+  // region's point test, since one edge ray of the fan is certainly outside
+  // J' (it once left this fan PARTIAL, testing only the whole fan).
   const PushPlan corner = plan_push(scene, 0, Rational(2), false);
   EXPECT_TRUE(corner.corner);
   EXPECT_FALSE(corner.J_approach_verdict.has_value());
   EXPECT_EQ(point_status(scene, *approach_target(*corner.approach), 0, Rational(2), Rational(0)),
-            RegionStatus::kPartial);
+            RegionStatus::kOut);
   EXPECT_EQ(corner.in_J, RegionStatus::kOut);
   EXPECT_EQ(corner.in_J_approach, RegionStatus::kOut);
   EXPECT_NE(push_plan_text(scene, corner).find("approach-aware J': out (a corner: not every push of its fan is in J'"),
