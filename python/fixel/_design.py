@@ -332,6 +332,13 @@ def _run_key(scene_dict, candidates, options, batch_size):
     return hashlib.sha256(blob.encode()).hexdigest()[:16]
 
 
+def _record_check(rec):
+    """A digest of a record without its "check": an edit that does not
+    recompute it (a changed score or layout) shows when the run resumes."""
+    body = {k: v for k, v in rec.items() if k != "check"}
+    return hashlib.sha256(json.dumps(body, sort_keys=True).encode()).hexdigest()[:16]
+
+
 def _read_finished(output, key):
     """Finished batches of run `key` in `output`: a range batch under its
     number, a batch of listed triples under the tuple of its triples."""
@@ -348,6 +355,15 @@ def _read_finished(output, key):
             except json.JSONDecodeError:
                 continue  # a line cut short by a crash: that batch runs again
             if isinstance(rec, dict) and rec.get("run") == key:
+                if "check" not in rec:
+                    continue  # written before records carried a check: that batch runs again
+                if rec["check"] != _record_check(rec):
+                    raise InputError.make(
+                        "output",
+                        str(output),
+                        f"holds a record of batch {rec.get('batch')!r} that was changed after fixel wrote it "
+                        "(its check does not match): remove that line, or the file, and run again",
+                    )
                 finished[tuple(rec["triples"]) if "triples" in rec else rec.get("batch")] = rec
     return finished
 
@@ -549,6 +565,7 @@ class _Batches:
                     rec = dict(f.result(), run=self.key, batch=number)
                     if triples is not None:
                         rec["triples"] = list(triples)
+                    rec["check"] = _record_check(rec)
                     records[number] = rec
                     if sink is not None:
                         sink.write(json.dumps(rec) + "\n")

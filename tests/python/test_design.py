@@ -9,6 +9,7 @@ import pytest
 
 import fixel
 from conftest import SCENE_DIR, cli_json
+from fixel._design import _record_check
 
 # The mirror-symmetric "house" of tests/design_test.cpp: the rectangle
 # [-1, 1] x [-1, 0] under the roof (1, 0), (0, 1), (-1, 0).
@@ -248,6 +249,7 @@ def test_a_recorded_batch_that_is_not_the_batch_it_stands_for_is_refused(client,
     for r in records:
         if r["batch"] == 1:
             r["first"], r["count"] = 16, 16  # as if written with batch_size=16
+            r["check"] = _record_check(r)  # a consistent record, as fixel would write it
     out.write_text("".join(json.dumps(r) + "\n" for r in records))
     with pytest.raises(fixel.InputError, match="belongs to a run with other settings") as e:
         fixel.design(SCENE_DIR / "polygon.json", **run)
@@ -264,6 +266,13 @@ def test_a_recorded_score_that_the_triple_does_not_have_is_refused(client, polyg
     edited = next(r for r in records if any(Fraction(l[4]) < best for l in r["layouts"]))
     layout = next(l for l in edited["layouts"] if Fraction(l[4]) < best)
     layout[4] = "999"
+    out.write_text("".join(json.dumps(r) + "\n" for r in records))
+    # Edited by hand: the record's check no longer matches.
+    with pytest.raises(fixel.InputError, match=f"batch {edited['batch']} that was changed after fixel wrote it") as e:
+        fixel.design(SCENE_DIR / "polygon.json", **run)
+    assert (e.value.field, e.value.value) == ("output", str(out))
+    # Its check recomputed too: the report's own scoring of the top triples refuses it.
+    edited["check"] = _record_check(edited)
     out.write_text("".join(json.dumps(r) + "\n" for r in records))
     with pytest.raises(fixel.InputError, match=f"records triple {layout[3]} with score 999, but it scores") as e:
         fixel.design(SCENE_DIR / "polygon.json", **run)
