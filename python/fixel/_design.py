@@ -207,6 +207,20 @@ def design_scene(part, design, rank=1):
     }
     layout = design.layouts[rank - 1]
     three = [(c.curve, text(c.u, "u")) for c in layout.fixels]
+    # The design's exact points must be this part's: another part with the
+    # same parameter ranges would give a scene the score does not describe.
+    for k, c in enumerate(layout.fixels):
+        try:
+            point = tuple(map(frac, _fixel.design_candidate(scene._impl, c.curve, text(c.u, "u"))[0]))
+        except Error as e:
+            raise InputError.make("part", scene.name, f"is not the part of this design: its fixel {k} ({e})") from None
+        if point != c.point:
+            raise InputError.make(
+                "part",
+                scene.name,
+                f"is not the part of this design: its fixel {k} (curve {c.curve}, u = {c.u}) is at "
+                f"({point[0]}, {point[1]}) on it, the design's at ({c.point[0]}, {c.point[1]})",
+            )
     from . import Scene
 
     impl, _ = _fixel.design_scene(scene._impl, three, options, text(layout.score, "score"), rank)

@@ -94,6 +94,11 @@ def test_design_scene_refuses_a_rank_it_does_not_have():
         fixel.design_scene(HOUSE, d, rank=len(d.layouts) + 1)
     with pytest.raises(TypeError, match="design"):
         fixel.design_scene(HOUSE, d.document)
+    # Another part whose parameter ranges fit: its points are not the design's.
+    moved = json.loads(json.dumps(HOUSE))
+    moved["body"]["boundary"][0]["points"][1] = [2, -1]  # the bottom right corner moved out
+    with pytest.raises(fixel.InputError, match="is not the part of this design: its fixel 0"):
+        fixel.design_scene(moved, d)
     none = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES[:2], mu=0, **SMALL)
     with pytest.raises(fixel.InputError, match="no layout"):
         fixel.design_scene(HOUSE, none)
