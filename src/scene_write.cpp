@@ -84,26 +84,33 @@ std::string write_scene(const Scene& s) {
   return d.dump(1, ' ', false, ordered::error_handler_t::replace) + "\n";
 }
 
-void save_scene(const Scene& scene, const std::string& path) {
+void save_scene(const Scene& scene, const std::string& path_given) {
   const std::string text = write_scene(scene);
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, "", "cannot be written: it is a folder");
+  if (std::filesystem::is_directory(path_given, ec))
+    throw InputError(path_given, "", "cannot be written: it is a folder");
+  // A symbolic link is written through (its target replaced), not replaced.
+  std::string path = path_given;
+  if (std::filesystem::is_symlink(path_given, ec)) {
+    const auto target = std::filesystem::weakly_canonical(path_given, ec);
+    if (!ec) path = target.string();
+  }
   const std::string temporary = path + ".fixel-partial";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, "", "cannot be written (" + temporary + " cannot be created)");
+    if (!out) throw InputError(path_given, "", "cannot be written (" + temporary + " cannot be created)");
     out << text;
     out.flush();
     if (!out) {
       out.close();
       std::remove(temporary.c_str());
-      throw InputError(path, "", "cannot be written (writing " + temporary + " failed)");
+      throw InputError(path_given, "", "cannot be written (writing " + temporary + " failed)");
     }
   }
   std::filesystem::rename(temporary, path, ec);
   if (ec) {
     std::remove(temporary.c_str());
-    throw InputError(path, "", "cannot be written: " + ec.message());
+    throw InputError(path_given, "", "cannot be written: " + ec.message());
   }
 }
 

@@ -480,6 +480,12 @@ GTEST_TEST(SaveScene, AFailedSaveLeavesTheEarlierFileWholeAndNamesThePath) {
   }
   expect_same_scene(polygon, load_scene(path), "kept");
   EXPECT_THROW(save_scene(polygon, dir + "/no such folder/scene.json"), InputError);
+  // Through a symbolic link: the link stays, its target gets the scene.
+  std::filesystem::remove(path + ".fixel-partial");
+  std::filesystem::create_symlink(path, dir + "/link.json");
+  save_scene(test::scene_file("example2"), dir + "/link.json");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir + "/link.json"));
+  expect_same_scene(test::scene_file("example2"), load_scene(path), "through the link");
   EXPECT_THROW(save_scene(polygon, dir), InputError);  // a folder
   std::filesystem::remove_all(dir);
 }

@@ -31,7 +31,8 @@ std::string write_scene(const Scene& scene);
 
 /// Writes write_scene(scene) to the file `path`: first to a temporary file
 /// beside it, then renamed over it, so an error leaves any earlier file
-/// whole. Throws InputError naming the path when it cannot be written.
+/// whole; a symbolic link is written through (its target replaced). Throws
+/// InputError naming the path when it cannot be written.
 void save_scene(const Scene& scene, const std::string& path);
 
 /// Parses an impulse given as "px,py[,pθ]" and checks its length against dof.
