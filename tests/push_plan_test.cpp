@@ -107,8 +107,7 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
   const PushPlan corner = plan_push(scene, 0, Rational(2), false);
   EXPECT_TRUE(corner.corner);
   EXPECT_FALSE(corner.J_approach_verdict.has_value());
-  EXPECT_EQ(point_status(scene, *approach_target(*corner.approach), 0, Rational(2), Rational(0)),
-            RegionStatus::kOut);
+  EXPECT_EQ(point_status(scene, *approach_target(*corner.approach), 0, Rational(2), Rational(0)), RegionStatus::kOut);
   EXPECT_EQ(corner.in_J, RegionStatus::kOut);
   EXPECT_EQ(corner.in_J_approach, RegionStatus::kOut);
   EXPECT_NE(push_plan_text(scene, corner).find("approach-aware J': out (a corner: not every push of its fan is in J'"),
