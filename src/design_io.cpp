@@ -80,6 +80,8 @@ std::vector<DesignCandidate> parse_candidates(const Scene& part, const std::stri
   const auto doc = internal::parse_json_exact(json_text, source);
   if (!doc.is_object() || !doc.contains("candidates"))
     throw ParseError("candidates", source, "must be an object {\"candidates\": [{\"curve\": k, \"u\": \"..\"}, ...]}");
+  for (const auto& [key, value] : doc.items())
+    if (key != "candidates") throw ParseError(key, value.dump().substr(0, 80), "is not a field of a candidate file");
   const auto& list = doc.at("candidates");
   if (!list.is_array()) throw ParseError("candidates", list.dump(), "must be an array");
   if (list.size() > 10000)
@@ -279,7 +281,8 @@ void write_design_svg(const std::string& path, const Scene& part, const DesignRe
   std::ofstream out(path);
   if (!out) throw InputError("svg(path)", path, "cannot be written");
   out << s.str();
-  if (!out) throw InputError("svg(path)", path, "cannot be written");
+  out.flush();  // a full disk shows here, not silently at the stream's end
+  if (!out) throw InputError("svg(path)", path, "could not be written completely");
 }
 
 }  // namespace fixel

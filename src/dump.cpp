@@ -94,6 +94,8 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
   obj << "l";
   for (int k = 1; k <= count; ++k) obj << " " << k;
   obj << " 1\n";
+  obj.close();
+  if (!obj) throw InputError("dump_off(directory)", obj_path, "could not be written completely");
   written.push_back(obj_path);
 
   std::vector<EdgeFamily> families = {EdgeFamily::kNormal};

@@ -284,11 +284,21 @@ namespace fixel {
 
 namespace {
 
+// A row's double for the picture; past double range there is no picture
+// (a Rational of an infinite double would abort in GMP).
+Rational drawable(double x) {
+  if (!std::isfinite(x))
+    throw InputError("dump --off --sustained", std::to_string(x),
+                     "a row of J is beyond double range: the scene's numbers are too large to draw (seat --sustained "
+                     "--json gives J exactly)");
+  return Rational(x);
+}
+
 // A display-only rational row: the double nearest each coordinate, read
 // back exactly (OFF vertices are doubles anyway).
 Halfspace display_row(const std::array<QuadraticIrrational, 3>& a) {
   VectorQ v(3);
-  for (int k = 0; k < 3; ++k) v[k] = Rational(a[k].approx());
+  for (int k = 0; k < 3; ++k) v[k] = drawable(a[k].approx());
   return {v, Rational(0)};
 }
 
@@ -296,7 +306,7 @@ Halfspace display_row(const std::array<QuadraticIrrational, 3>& a) {
 // each entry's midpoint.
 Halfspace display_row(const std::array<std::array<double, 2>, 3>& a) {
   VectorQ v(3);
-  for (int k = 0; k < 3; ++k) v[k] = Rational((a[k][0] + a[k][1]) / 2);
+  for (int k = 0; k < 3; ++k) v[k] = drawable((a[k][0] + a[k][1]) / 2);
   return {v, Rational(0)};
 }
 

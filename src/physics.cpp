@@ -300,6 +300,17 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
     throw InputError("push(wrench)", shown.str(), "has a component that is not finite");
   }
   check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
+  // Positive exact values that round to (near) zero in the engine's floats
+  // would run with dt = 0 or an infinite acceleration.
+  for (const auto& [value, field] : {std::pair{&scene.time_step, "time_step"}, std::pair{&scene.body.mass, "body.mass"},
+                                     std::pair{&scene.body.inertia, "body.inertia"}}) {
+    if (field == std::string("body.inertia") && scene.body.dof != 3) continue;
+    if (!(to_double(*value) >= 1e-30)) {
+      const std::string text = to_string(*value);
+      throw InputError(field, text.size() > 40 ? text.substr(0, 40) + "..." : text,
+                       "is too small for the engine's floats (at least 1e-30)");
+    }
+  }
   const PartPolygon poly = part_polygon(scene, options.control);
   Engine e;
   PushResult r;

@@ -156,7 +156,8 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
   out << caption(H - 18) << "blue: the part at the start; " << (r.outcome == Outcome::kSeated ? "green" : "red")
       << ": at the end; grey: every few steps; dashed: the centre of mass's path</text>\n";
   out << "</svg>\n";
-  if (!out) throw InputError("svg(path)", path, "cannot be written");
+  out.flush();  // a full disk shows here, not silently at the stream's end
+  if (!out) throw InputError("svg(path)", path, "could not be written completely");
 }
 
 std::string add_validation_json(const std::string& region_json_text, const RegionValidation& v) {

@@ -10,11 +10,13 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/internal/json_exact.h"
 #include "fixel/on_boundary.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -333,10 +335,22 @@ Scene load_scene(const std::string& path, RunControl* control) {
     throw InputError(path, "",
                      std::string("cannot be opened") + (reason ? std::string(": ") + std::strerror(reason) : ""));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path, "", "cannot be read");
-  return parse_scene(text.str(), path, control);
+  return read_scene(in, path, control);
+}
+
+Scene read_scene(std::istream& in, const std::string& source, RunControl* control) {
+  std::string text;
+  constexpr std::size_t kChunk = std::size_t(1) << 20;
+  std::vector<char> chunk(kChunk);
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(kChunk));
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSceneBytes)
+      throw InputError(source, "", "is larger than 256 MiB: not a scene file (is it /dev/zero or an endless stream?)");
+    poll(control, "load", static_cast<long>(text.size() >> 20), 0, "MiB read");
+  }
+  if (in.bad()) throw InputError(source, "", "cannot be read");
+  return parse_scene(text, source, control);
 }
 
 VectorQ parse_impulse(const std::string& text, int dof, const std::string& field) {

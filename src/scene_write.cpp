@@ -95,6 +95,11 @@ void save_scene(const Scene& scene, const std::string& path_given) {
     const auto target = std::filesystem::weakly_canonical(path_given, ec);
     if (!ec) path = target.string();
   }
+  // The temporary file is renamed over the path: a FIFO or device there
+  // would be replaced by a regular file, so only regular files are written.
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path_given, "", "cannot be written: it exists and is not a regular file (a FIFO or device)");
   const std::string temporary = path + ".fixel-partial";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

@@ -91,6 +91,8 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
   std::ofstream out(path);
   if (!out) throw InputError("svg(path)", path, "cannot be written");
   out << svg.str();
+  out.flush();  // a full disk shows here, not silently at the stream's end
+  if (!out) throw InputError("svg(path)", path, "could not be written completely");
 }
 
 }  // namespace fixel

@@ -87,6 +87,7 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
   std::ofstream out(path);
   if (!out) throw InputError("svg(path)", path, "cannot be written");
   out << svg.str();
+  out.flush();  // a full disk shows here, not silently at the stream's end
   if (!out) throw InputError("svg(path)", path, "could not be written completely");
 }
 

@@ -545,4 +545,20 @@ else
   echo "note: meshio (python3-meshio) not installed: OFF loader check skipped"
 fi
 
+# Bad input, adversarially (review 11): each is exit 2 with the field named, nothing half-done.
+expect 2 '--impulse: "" is empty (an unset variable?)' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse ""
+expect 2 '--pusher-mu: "" is empty' -- "$fixel" region "$src/data/scenes/polygon.json" --pusher-mu ""
+if [ -w /dev/full ] && [ -c /dev/full ]; then
+  expect 2 'standard output: cannot be written' -- bash -c "\"$fixel\" seat \"$src/data/scenes/example2.json\" > /dev/full"
+  expect 2 '--svg: /dev/full could not be written completely' -- "$fixel" seat "$src/data/scenes/example2.json" --svg /dev/full
+fi
+expect 2 'is larger than 256 MiB' -- "$fixel" info /dev/zero
+mkfifo "$tmp/fifo"
+expect 2 '--scene-out: '"$tmp"'/fifo cannot be written: it exists and is not a regular file' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --scene-out "$tmp/fifo"
+sed 's/"time_step": "1"/"time_step": "1e-400"/' "$src/data/scenes/polygon.json" > "$tmp/tiny_h.json"
+expect 2 'time_step: 1/10000000000000000000000000000000000000... is too small for the engine' -- "$fixel" push "$tmp/tiny_h.json" --at 0:1/2
+python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); d["body"]["center_of_mass"]=["1e308","-1e308"]; json.dump(d,open(sys.argv[2],"w"))' "$src/data/scenes/polygon.json" "$tmp/com308.json"
+expect 2 'a row of J is beyond double range' -- "$fixel" dump "$tmp/com308.json" --off "$tmp/d308" --sustained
+expect 2 'foo: "1" is not a field of a candidate file' -- "$fixel" design "$src/data/scenes/polygon.json" --candidates <(echo '{"candidates": [], "foo": 1}')
+
 exit $fail

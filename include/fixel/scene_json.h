@@ -3,6 +3,8 @@
 /// Reading scenes and impulses from text (the scene format is in
 /// docs/formats.md).
 
+#include <cstddef>
+#include <istream>
 #include <string>
 
 #include "fixel/progress.h"
@@ -18,8 +20,18 @@ namespace fixel {
 /// huge parts, and StoppedError past its deadline or when cancelled.
 Scene parse_scene(const std::string& json_text, const std::string& source = "scene", RunControl* control = nullptr);
 
-/// Reads and parses a scene file. Throws InputError if it cannot be read.
+/// Reads and parses a scene file. Throws InputError if it cannot be read,
+/// or is larger than kMaxSceneBytes (/dev/zero, say).
 Scene load_scene(const std::string& path, RunControl* control = nullptr);
+
+/// The largest scene text read: 256 MiB (a 100,000-edge outline in exact
+/// decimals is a few MiB).
+constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;
+
+/// Reads and parses a scene from a stream (standard input, say), at most
+/// kMaxSceneBytes, polling `control` while it reads (task "load"). Throws
+/// InputError naming `source` when it cannot be read or is too large.
+Scene read_scene(std::istream& in, const std::string& source, RunControl* control = nullptr);
 
 /// The scene in the scene-file format, as indented JSON text: every field
 /// written, derived ones included (mass, inertia and centre of mass from
@@ -31,8 +43,9 @@ std::string write_scene(const Scene& scene);
 
 /// Writes write_scene(scene) to the file `path`: first to a temporary file
 /// beside it, then renamed over it, so an error leaves any earlier file
-/// whole; a symbolic link is written through (its target replaced). Throws
-/// InputError naming the path when it cannot be written.
+/// whole; a symbolic link is written through (its target replaced), and an
+/// existing path that is not a regular file (a FIFO, a device) is refused.
+/// Throws InputError naming the path when it cannot be written.
 void save_scene(const Scene& scene, const std::string& path);
 
 /// Parses an impulse given as "px,py[,pθ]" and checks its length against dof.

@@ -8,6 +8,7 @@ deliberately, to the exact value of its binary representation.
 """
 
 import collections.abc
+import itertools
 import decimal
 import math
 import numbers
@@ -69,10 +70,15 @@ def _text(x, field):
     if isinstance(x, decimal.Decimal):
         if not x.is_finite():
             raise TypeError(f"{field}: {x!r} is not a finite number")
-        return text(Fraction(x), field)
+        # Its exact decimal text, so that the core's exponent limit applies
+        # (Fraction(Decimal('1e1000000')) would build the integer first).
+        return str(x)
     if isinstance(x, numbers.Rational):
         return f"{int_text(int(x.numerator))}/{int_text(int(x.denominator))}"
     raise TypeError(f"{field}: {x!r} ({type(x).__name__}) is not an exact number (Fraction, int or str)")
+
+
+_MAX_VECTOR = 10000  # entries read from an iterator
 
 
 def vector(p, field):
@@ -95,7 +101,11 @@ def vector(p, field):
         if getattr(p, "ndim", 1) != 1:
             raise InputError.make(field, f"shape {p.shape}", "must be a flat vector")
     elif not isinstance(p, (list, tuple)):
-        p = list(p)  # an iterator can be read only once, and the slow path reads again
+        # An iterator can be read only once, and the slow path reads again;
+        # an endless one is read no further than a vector can be long.
+        p = list(itertools.islice(p, _MAX_VECTOR + 1))
+        if len(p) > _MAX_VECTOR:
+            raise InputError.make(field, "an iterator", f"has more than {_MAX_VECTOR} entries")
     out = []
     try:
         for x in p:

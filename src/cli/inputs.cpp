@@ -18,9 +18,7 @@ Scene read_scene_polled(const std::string& path) {
   static bool consumed = false;
   if (consumed) throw InputError("scene", "-", "standard input can be read only once");
   consumed = true;
-  const std::string text{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
-  if (std::cin.bad()) throw InputError("scene", "-", "standard input cannot be read");
-  return parse_scene(text, "stdin", run_control());
+  return read_scene(std::cin, "stdin", run_control());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <new>
 #include <vector>
 
 #include "cli.h"
@@ -101,6 +102,17 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  // An option given an empty value (a script's unset "$VAR") would read as
+  // not given: refused instead.
+  for (const auto& command : commands)
+    if (command.app->parsed())
+      for (const CLI::Option* option : command.app->get_options())
+        for (const std::string& value : option->results())
+          if (value.empty()) {
+            std::cerr << "fixel: error: " << option->get_name() << ": \"\" is empty (an unset variable?)\n";
+            return kExitBadInput;
+          }
+
   try {
     maybe_inject_fault();
     if (exact_only) fixel::set_force_exact(true);
@@ -108,6 +120,12 @@ int main(int argc, char** argv) {
       if (command.app->parsed()) {
         const int code = command.run();
         maybe_print_filter_stats();
+        // A full disk or a closed pipe must not pass as success: the answer is lost.
+        std::cout.flush();
+        if (!std::cout) {
+          std::cerr << "fixel: error: standard output: cannot be written (the answer was lost)\n";
+          return kExitBadInput;
+        }
         return code;
       }
     return kExitBadInput;
@@ -126,6 +144,10 @@ int main(int argc, char** argv) {
   } catch (const fixel::Error& e) {
     end_progress();
     std::cerr << "fixel: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    end_progress();
+    std::cerr << "fixel: error: out of memory: the input is too large for this machine\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
     end_progress();

@@ -85,6 +85,8 @@ void check_writable(const std::string& path, const std::string& flag) {
   if (std::filesystem::is_directory(p, ec)) throw InputError(flag, path, "cannot be written: it is a folder");
   const bool exists = std::filesystem::exists(p, ec);
   if (access(exists ? path.c_str() : dir.c_str(), W_OK) != 0) throw InputError(flag, path, "cannot be written");
+  if (flag == "--scene-out" && exists && !std::filesystem::is_regular_file(p, ec))  // renamed over: only files
+    throw InputError(flag, path, "cannot be written: it exists and is not a regular file (a FIFO or device)");
 }
 
 // The region shrinks as the pusher's μ grows (docs/theory.md §10), so an

@@ -291,3 +291,17 @@ def test_digits_without_exact_is_refused_not_ignored():
     with pytest.raises(fixel.InputError) as e:
         fixel.region(polygon, digits=5)
     assert e.value.field == "digits"
+
+
+def test_a_decimal_beyond_the_exponent_limit_is_refused_before_any_huge_integer_is_built(S):
+    # Fraction(Decimal("1e1000000")) took seconds; the core's ±10000 limit now applies.
+    for d in ("1e10001", "1e1000000", "1e999999999", "-1e-10001"):
+        with pytest.raises(fixel.ParseError, match="beyond ±10000"):
+            S.contains((Decimal(d), 0, 0))
+    assert S.contains((Decimal("-1"), Decimal("-1.0"), Decimal("-1E0"))) == S.contains((-1, -1, -1))
+
+
+def test_an_endless_iterator_is_read_no_further_than_a_vector_can_be_long(S):
+    with pytest.raises(fixel.InputError, match="has more than 10000 entries"):
+        S.contains(iter(int, 1))
+    assert S.contains(iter([-1, -1, -1])) == S.contains((-1, -1, -1))
