@@ -274,8 +274,9 @@ BENCHMARK(BM_PrepareLemkeMatrix)->Repetitions(5)->ReportAggregatesOnly(true);
 // The filtered run's pivot path alone, without its exact final values: what
 // the interval path and its tie certificates cost, a floor for
 // BM_FilteredLemke (docs/performance.md). Every problem here has a negative
-// b entry, so solve_lcp_lemke would run exactly this path.
-void BM_LemkePivotPathOnly(benchmark::State& state) {
+// b entry, so solve_lcp_lemke would run exactly this path. `prepared`: with
+// B's prepared parts, the path of BM_FilteredLemkePreparedIntoReusedResult.
+void pivot_path_only(benchmark::State& state, bool prepared) {
   const auto& all = problems();
   for (const auto& pr : all)
     if ((pr.b.array() >= Rational(0)).all()) state.SkipWithError("a problem with b >= 0 never reaches the pivot path");
@@ -285,26 +286,16 @@ void BM_LemkePivotPathOnly(benchmark::State& state) {
   std::size_t k = 0;
   for (auto _ : state) {
     const int n = static_cast<int>(all[k].b.size());
-    benchmark::DoNotOptimize(fixel::internal::filtered_lemke_path(all[k].B, all[k].b, 100 * (n + 1), result, basis));
+    benchmark::DoNotOptimize(fixel::internal::filtered_lemke_path(all[k].B, all[k].b, 100 * (n + 1), result, basis,
+                                                                  prepared ? all[k].path_parts.get() : nullptr));
     k = (k + 1) % all.size();
   }
 }
+
+void BM_LemkePivotPathOnly(benchmark::State& state) { pivot_path_only(state, false); }
 BENCHMARK(BM_LemkePivotPathOnly)->Repetitions(5)->ReportAggregatesOnly(true);
 
-// The same with B prepared: the pivot path of BM_FilteredLemkePreparedIntoReusedResult.
-void BM_LemkePreparedPivotPathOnly(benchmark::State& state) {
-  const auto& all = problems();
-  fixel::ForceExactScope filtered(false);
-  fixel::LemkeResult result;
-  std::vector<int> basis;
-  std::size_t k = 0;
-  for (auto _ : state) {
-    const int n = static_cast<int>(all[k].b.size());
-    benchmark::DoNotOptimize(fixel::internal::filtered_lemke_path(all[k].B, all[k].b, 100 * (n + 1), result, basis,
-                                                                  all[k].path_parts.get()));
-    k = (k + 1) % all.size();
-  }
-}
+void BM_LemkePreparedPivotPathOnly(benchmark::State& state) { pivot_path_only(state, true); }
 BENCHMARK(BM_LemkePreparedPivotPathOnly)->Repetitions(5)->ReportAggregatesOnly(true);
 
 // Filtered against forced exact on all problems: status, pivots, w and z.

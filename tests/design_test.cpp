@@ -132,35 +132,51 @@ GTEST_TEST(Design, TheSquaresAxisAlignedLayoutsHaveNoFormClosureWithAFinger) {
   EXPECT_EQ(r.no_layout, "every one of the 4 triples was dropped (2 with W_n singular, 2 without form closure)");
 }
 
+// A pentagon with three candidates whose triple has no form closure with a
+// finger (tests below), its options (μ 1/10, gap 1/20, resolution 1/256),
+// and the same three fixels written by hand: on the bottom edge, up; on the
+// edge (4,0)-(7,4), (-4, 3)/5; on the edge (3,7)-(0,3), (4, -3)/5.
+const char* const kPentagonOutline =
+    R"("boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["7","4"],["3","7"],["0","3"],["0","0"]]}])";
+
+Scene pentagon(const std::string& fixels = "") {
+  return parse_scene(R"({"name": "pent", "time_step": "1", "body": {"dof": 3, "mass": "1", )" +
+                     std::string(kPentagonOutline) + R"(}, "fixels": [)" + fixels + R"(], "pusher": {"mu": "0"}})");
+}
+
+std::vector<DesignCandidate> pentagon_candidates(const Scene& part) {
+  return parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "117/1024"},
+      {"curve": 0, "u": "1425/1024"}, {"curve": 0, "u": "1839/512"}]})");
+}
+
+DesignOptions pentagon_options() {
+  DesignOptions o = frictionless();
+  o.mu = Rational(1, 10);
+  o.resolution = Rational(1, 256);
+  o.gap = Rational(1, 20);
+  return o;
+}
+
+const char* const kPentagonFixelsByHand =
+    R"({"point": ["117/256","0"], "normal": ["0","1"], "mu": "1/10", "gap": "1/20"},
+       {"point": ["5299/1024","401/256"], "normal": ["-4/5","3/5"], "mu": "1/10", "gap": "1/20"},
+       {"point": ["627/512","593/128"], "normal": ["4/5","-3/5"], "mu": "1/10", "gap": "1/20"})";
+
 // The one-step model needs no form closure: ranked by it, a pentagon's
 // triple without form closure (it was dropped) is scored, with the fraction
 // a region of the scene with those fixels gives: 119/320 at 1/256 (the
 // reviewer's case), so more than 0.
 GTEST_TEST(Design, RankedByTheOneStepPushATripleWithoutFormClosureIsScoredAsItsRegion) {
-  const std::string outline =
-      R"("boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["7","4"],["3","7"],["0","3"],["0","0"]]}])";
-  const Scene part = parse_scene(R"({"name": "pent", "time_step": "1", "body": {"dof": 3, "mass": "1", )" + outline +
-                                 R"(}, "fixels": [], "pusher": {"mu": "0"}})");
-  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "117/1024"},
-      {"curve": 0, "u": "1425/1024"}, {"curve": 0, "u": "1839/512"}]})");
-  DesignOptions o = frictionless();
-  o.mu = Rational(1, 10);
-  o.resolution = Rational(1, 256);
-  o.gap = Rational(1, 20);
+  const Scene part = pentagon();
+  const auto c = pentagon_candidates(part);
+  DesignOptions o = pentagon_options();
   DesignOptions sustained = o;
   EXPECT_EQ(design(part, c, sustained).stats.no_form_closure, 1);  // the sustained ranking drops it
   o.push = DesignPush::kStep;
   const DesignResult r = design(part, c, o);
   EXPECT_EQ(r.stats.no_form_closure, 0);
   ASSERT_EQ(r.layouts.size(), 1u);
-  // The same fixels by hand: on the bottom edge, up; on the edge (4,0)-(7,4),
-  // (-4, 3)/5; on the edge (3,7)-(0,3), (4, -3)/5.
-  const std::string fixels =
-      R"({"point": ["117/256","0"], "normal": ["0","1"], "mu": "1/10", "gap": "1/20"},
-         {"point": ["5299/1024","401/256"], "normal": ["-4/5","3/5"], "mu": "1/10", "gap": "1/20"},
-         {"point": ["627/512","593/128"], "normal": ["4/5","-3/5"], "mu": "1/10", "gap": "1/20"})";
-  const Scene scene = parse_scene(R"({"name": "layout", "time_step": "1", "body": {"dof": 3, "mass": "1", )" + outline +
-                                  R"(}, "fixels": [)" + fixels + R"(], "pusher": {"mu": "0"}})");
+  const Scene scene = pentagon(kPentagonFixelsByHand);
   RegionOptions ro;
   ro.resolution = o.resolution;
   Rational in_length = 0;
@@ -175,28 +191,16 @@ bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 // The same pentagon layout through design_scene: field for field the scene
 // written by hand above, and its region gives the one-step score again.
 GTEST_TEST(Design, AOneStepLayoutAsASceneIsTheSceneWrittenByHand) {
-  const std::string outline =
-      R"("boundary": [{"type": "polyline", "points": [["0","0"],["4","0"],["7","4"],["3","7"],["0","3"],["0","0"]]}])";
-  const Scene part = parse_scene(R"({"name": "pent", "time_step": "1", "body": {"dof": 3, "mass": "1", )" + outline +
-                                 R"(}, "fixels": [], "pusher": {"mu": "0"}})");
-  const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "117/1024"},
-      {"curve": 0, "u": "1425/1024"}, {"curve": 0, "u": "1839/512"}]})");
-  DesignOptions o = frictionless();
-  o.mu = Rational(1, 10);
-  o.resolution = Rational(1, 256);
-  o.gap = Rational(1, 20);
+  const Scene part = pentagon();
+  const auto c = pentagon_candidates(part);
+  DesignOptions o = pentagon_options();
   o.push = DesignPush::kStep;
   const DesignResult r = design(part, c, o);
   ASSERT_EQ(r.layouts.size(), 1u);
   double angle_error = -1;
   const Scene scene = design_scene(part, r.candidates, r.layouts[0], 1, o, &angle_error);
   EXPECT_EQ(angle_error, 0);
-  const Scene by_hand = parse_scene(R"({"name": "layout", "time_step": "1", "body": {"dof": 3, "mass": "1", )" +
-                                    outline + R"(}, "fixels": [
-         {"point": ["117/256","0"], "normal": ["0","1"], "mu": "1/10", "gap": "1/20"},
-         {"point": ["5299/1024","401/256"], "normal": ["-4/5","3/5"], "mu": "1/10", "gap": "1/20"},
-         {"point": ["627/512","593/128"], "normal": ["4/5","-3/5"], "mu": "1/10", "gap": "1/20"}],
-         "pusher": {"mu": "0"}})");
+  const Scene by_hand = pentagon(kPentagonFixelsByHand);
   ASSERT_EQ(scene.fixels.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_TRUE(same(scene.fixels[i].p_AoF_A, by_hand.fixels[i].p_AoF_A)) << i;
