@@ -45,7 +45,9 @@ void end_progress();
 /// Throws InputError naming `flag` unless `path` can be written (its folder
 /// exists and is writable, and the file, if it exists, is writable); run
 /// before any output, so that a bad path never follows a printed report.
-void check_writable(const std::string& path, const std::string& flag);
+// `renamed_over`: the file is written beside and renamed over the path
+// (save_scene), so an existing FIFO or device there is refused too.
+void check_writable(const std::string& path, const std::string& flag, bool renamed_over = false);
 
 /// A pusher μ, or an interval "lo,hi", judged at its upper end.
 Rational parse_pusher_mu(const std::string& text);

@@ -71,7 +71,7 @@ DesignOptions design_options(const Scene& part, const DesignArgs& a) {
 int run_design(const DesignArgs& a) {
   arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
-  check_writable(a.scene_out, "--scene-out");
+  check_writable(a.scene_out, "--scene-out", true);
   const Scene part = read_scene(a.scene_path);  // with the plain progress line
   if (run_control()->on_progress) run_control()->on_progress = show_design_progress;
   const DesignOptions o = design_options(part, a);

@@ -76,7 +76,7 @@ void end_progress() {
   g_progress_width = 0;
 }
 
-void check_writable(const std::string& path, const std::string& flag) {
+void check_writable(const std::string& path, const std::string& flag, bool renamed_over) {
   if (path.empty()) return;
   const std::filesystem::path p(path);
   const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
@@ -85,7 +85,7 @@ void check_writable(const std::string& path, const std::string& flag) {
   if (std::filesystem::is_directory(p, ec)) throw InputError(flag, path, "cannot be written: it is a folder");
   const bool exists = std::filesystem::exists(p, ec);
   if (access(exists ? path.c_str() : dir.c_str(), W_OK) != 0) throw InputError(flag, path, "cannot be written");
-  if (flag == "--scene-out" && exists && !std::filesystem::is_regular_file(p, ec))  // renamed over: only files
+  if (renamed_over && exists && !std::filesystem::is_regular_file(p, ec))
     throw InputError(flag, path, "cannot be written: it exists and is not a regular file (a FIFO or device)");
 }
 
