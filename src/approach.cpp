@@ -18,6 +18,7 @@
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
 #include "fixel/internal/sustained_data.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -92,6 +93,7 @@ Rational derivative_at(const Polynomial& p, const Rational& t) {
 void add_pieces(PairFamily& fam, const Rational& end, int count) {
   for (int k = 0; k < count; ++k) {
     const Rational a = end * Rational(k, count), b = end * Rational(k + 1, count);
+    poll_exact_step();
     PairFamily::Piece piece;
     piece.t0 = a;  // on 0's side
     piece.t1 = b;
@@ -117,6 +119,7 @@ void add_pieces(PairFamily& fam, const Rational& end, int count) {
 using internal::Q2;
 
 ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
+  const internal::ExactTask task("approach-aware J'");
   ApproachSet A;
   A.J = J;
   const SeatedPose& q = J.pose;

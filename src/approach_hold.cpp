@@ -16,6 +16,7 @@
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
 #include "fixel/internal/sustained_data.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -128,7 +129,9 @@ bool held(std::size_t m, const Signs& s) {
 // hold at a piece's start settles the answer only at t = 0, where the
 // visit starts; without it (a yes/no question) at any piece's start.
 std::string holds(const ApproachSet& A, const FieldWrench& v, ApproachHold* hold, bool witness) {
+  const ExactTask task("approach-aware J' (a wrench's test)");
   for (const auto& fam : A.data->pairs) {
+    poll_exact_step();
     // Filters, exact: a hold at a piece's start settles it; a wrench outside
     // every piece's outer cone is held nowhere on the family. Root isolation
     // decides the rest.

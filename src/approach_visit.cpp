@@ -10,6 +10,7 @@
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/quadratic_field.h"
 #include "fixel/internal/root_isolation.h"
+#include "fixel/progress.h"
 
 namespace fixel::internal {
 
@@ -84,6 +85,7 @@ std::optional<Point> first_point(const std::vector<FieldPolynomial>& polys, cons
     all.push_back(norms[k]);
   }
   auto visit = [&](const Point& x) {
+    poll_exact_step();
     std::vector<int> cache(polys.size(), 2);
     const Signs s = [&](std::size_t k) {
       if (cache[k] == 2) cache[k] = sign_at(polys[k], norms[k], x, t_star, root_d);

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "fixel/internal/cone3.h"
+#include "fixel/progress.h"
 
 namespace fixel::internal {
 
@@ -149,6 +150,7 @@ class Elimination {
     if (k == x.j) {
       exact_.push_back(Q2(0));
     } else {
+      poll_exact_step();  // thousands of digits make each product slow
       const Q2& pj = exact(x.p, x.j);
       const Q2& nj = exact(x.n, x.j);
       const Q2& pk = exact(x.p, k);
@@ -279,6 +281,7 @@ std::vector<A3<NT>> facets_filtered(const std::vector<A3<NT>>& gens, bool planar
   std::vector<A3<FI>> out_enclosed;
   for (std::size_t i = 0; i < gens.size(); ++i)
     for (std::size_t j = i + 1; j < gens.size(); ++j) {
+      poll_exact_step();
       A3<FI> c_enclosed;
       {
         Protect guard;

@@ -3,8 +3,10 @@
 #include <gmp.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "fixel/error.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -249,6 +251,7 @@ std::vector<BezierPiece> Curve::bezier_pieces(int curve_index) const {
     const Rational a = knots[j], b = knots[j + 1];
     std::vector<Vec2> ctrl;
     for (int i = 0; i <= p; ++i) {
+      internal::poll_exact_step();  // O(p²) operations on the knots' and points' digits
       std::vector<Rational> t(p - i, a);
       t.insert(t.end(), i, b);
       ctrl.push_back(blossom(knots, points, p, j, t));
@@ -333,6 +336,8 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces, RunContro
 
 Boundary make_boundary(std::vector<Curve> curves, const std::string& path, RunControl* control) {
   if (curves.empty()) throw SceneError(path, "[]", "must contain at least one curve");
+  const internal::ControlScopeIfGiven scope(control);  // one curve's Bézier pieces poll it
+  const internal::ExactTask task("load (one curve's Bezier pieces)");
   Boundary b;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const std::string cpath = path + "[" + std::to_string(k) + "]";

@@ -196,6 +196,7 @@ void rank_layouts(std::vector<DesignLayout>& layouts, int top) {
 
 std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& cands,
                                        const DesignOptions& o, long first, long count, DesignStats& stats) {
+  const ControlScope between_layouts(nullptr);  // see design()
   check_design(part, o);
   const long total = triple_count(static_cast<long>(cands.size()));
   if (first < 0 || count < 0 || first + count > total)
@@ -208,6 +209,7 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
 
 std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& cands,
                                        const DesignOptions& o, const std::vector<long>& indices, DesignStats& stats) {
+  const ControlScope between_layouts(nullptr);  // see design()
   check_design(part, o);
   const long n = static_cast<long>(cands.size());
   for (std::size_t k = 0; k < indices.size(); ++k)
@@ -231,6 +233,10 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
 }
 
 DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o) {
+  // The search polls between layouts, from any of its threads; a layout's
+  // own exact steps do not poll the caller's ControlScope, so a stop names
+  // the layouts done.
+  const ControlScope between_layouts(nullptr);
   check_design(part, o);
   const auto start = std::chrono::steady_clock::now();
   DesignResult result;

@@ -10,6 +10,7 @@
 #include "fixel/internal/region_context.h"
 #include "fixel/internal/region_filter.h"
 #include "fixel/internal/sustained_core.h"
+#include "fixel/progress.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
@@ -301,6 +302,8 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
         score_sustained(s, o, total, l, true);
       else if (l.sustained_empty.has_value() && !*l.sustained_empty)  // ranked without J's width
         l.j_width = j_width(s, sustained_set(s, false));
+    } catch (const StoppedError&) {
+      throw;  // the run's stop (its ControlScope), not this layout's failure
     } catch (const Error& e) {
       l.note += std::string(l.note.empty() ? "" : "; ") + "sustained score: " + e.what();
     }
@@ -314,6 +317,8 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
       const Scene step = layout_scene(part, cands, l.fixels, o, true, &err);
       l.normal_angle_error = err;
       score_step(step, o, total, l);
+    } catch (const StoppedError&) {
+      throw;
     } catch (const Error& e) {
       l.note += std::string(l.note.empty() ? "" : "; ") + "one-step score: " + e.what();
     }

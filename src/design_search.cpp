@@ -98,6 +98,7 @@ const std::vector<long>& DesignSearch::pilot() const { return impl_->pilot; }
 long DesignSearch::singular() const { return impl_->singular; }
 
 bool DesignSearch::start(const std::vector<DesignLayout>& top) {
+  const ControlScope between_layouts(nullptr);  // as design()
   Impl& s = *impl_;
   if (!applies()) throw InputError("DesignSearch", "start", "the bound does not apply: score every triple");
   if (s.bound) throw InputError("DesignSearch", "start", "was called twice");
@@ -189,6 +190,7 @@ bool DesignSearch::start(const std::vector<DesignLayout>& top) {
 }
 
 std::optional<std::vector<long>> DesignSearch::next(const std::vector<DesignLayout>& top, long block) {
+  const ControlScope between_layouts(nullptr);  // as design()
   Impl& s = *impl_;
   if (block < 1) throw InputError("DesignSearch.next block", std::to_string(block), "must be >= 1");
   if (!s.bound) throw InputError("DesignSearch", "next", "needs start() to have returned true");

@@ -71,6 +71,7 @@ bool GuaranteedSet::contains(const VectorQ& p, const SeatingSet& S) const {
 }
 
 GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl* control) {
+  const internal::ControlScopeIfGiven scope(control);  // its exact steps poll it too
   const int nc = scene.num_contacts();
   if (nc != scene.body.dof) throw InputError("fixels", std::to_string(nc), "must number dof for the guaranteed set");
   check_seating_set_of(scene, S);

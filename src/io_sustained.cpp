@@ -12,6 +12,7 @@
 #include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
+#include "fixel/progress.h"
 #include "fixel/seat_report.h"
 #include "fixel/seating.h"
 
@@ -152,6 +153,8 @@ std::string sustained_json(const Scene& scene, const SustainedSet& J, const std:
     try {
       const SeatingSet S = seating_set(scene);
       doc = json::parse(seat_json(scene, S, seat_report(scene, S, std::nullopt, nullptr, false)));
+    } catch (const StoppedError&) {
+      throw;  // the run's stop, not S's absence
     } catch (const Error& e) {
       doc["scene"] = scene.name;
       doc["seating_unavailable"] = e.what();

@@ -9,6 +9,7 @@
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/lemke_filtered.h"
 #include "fixel/internal/lemke_prepared.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -200,6 +201,7 @@ void solve(const MatrixQ& B, const internal::PreparedLemkeMatrix* prepared, cons
     return;
   }
 
+  const internal::ExactTask task("LCP (Lemke)");
   if (!force_exact()) {
     if (internal::filtered_lemke(B, b, max_pivots, result, prepared)) return;
     internal::record_filter(FilterSite::kLemke, 0, 1);  // a pivot interval held zero: the whole run is exact
@@ -216,6 +218,7 @@ void solve(const MatrixQ& B, const internal::PreparedLemkeMatrix* prepared, cons
   result.pivots = 1;
 
   while (true) {
+    internal::poll_exact_step();
     if (result.pivots >= max_pivots) {
       result.status = LemkeStatus::kPivotLimit;
       result.w.resize(0);

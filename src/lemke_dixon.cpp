@@ -17,6 +17,7 @@
 #include "fixel/internal/flint_thread.h"
 #include "fixel/internal/lemke_dixon_words.h"
 #include "fixel/internal/lemke_scaled.h"
+#include "fixel/progress.h"
 
 namespace fixel::internal {
 
@@ -368,6 +369,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     // is seen to divide (a wrong digit would stop the solve), and the
     // acceptance test (accepts) relies on it.
     for (int step = 0; step < limit; ++step) {
+      poll_exact_step();  // entries of thousands of digits make the limit large
       ++record.steps;
       for (int a = 0; a < k; ++a)
         ws.rhs[a] = in_words ? residue(ws.residual_words[a], mod) : residue(ws.residual[a], mod);

@@ -155,7 +155,8 @@ ModeSystem mode_system(const Scene& scene, const std::vector<ContactMode>& modes
 }
 
 std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext, RunControl* control) {
-  check_scene_values(scene);  // the scene before the impulse measured against it
+  const internal::ControlScopeIfGiven scope(control);  // its exact steps poll it too
+  check_scene_values(scene);                           // the scene before the impulse measured against it
   check_impulse(scene, p_ext);
   const int nc = scene.num_contacts(), n = scene.body.dof + 2 * nc;
   const ContactMatrices W = contact_matrices(scene);

@@ -7,6 +7,7 @@
 #include "fixel/geometry.h"
 #include "fixel/guaranteed.h"
 #include "fixel/on_boundary.h"
+#include "fixel/progress.h"
 #include "fixel/region_target.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
@@ -21,6 +22,8 @@ double relative_width(const Magnitudes& m) {
 }
 
 PushPlan plan_push(const Scene& scene, int curve, const Rational& u, bool with_guaranteed, RunControl* control) {
+  const internal::ControlScopeIfGiven scope(control);  // its exact steps poll it too
+  const internal::ExactTask task("push-plan");
   if (!scene.body.boundary) throw SceneError("body.boundary", "", "is missing: a push plan needs the part's outline");
   const Boundary& b = *scene.body.boundary;
   if (curve < 0 || curve >= static_cast<int>(b.curves.size()))

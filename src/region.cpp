@@ -220,6 +220,8 @@ Region compute_region(const Scene& scene, RegionTarget& target, const RegionOpti
 
 Region internal::compute_region_joined(const Scene& scene, RegionTarget& target, const RegionOptions& options,
                                        const std::vector<Join>* given_joins, bool locate) {
+  const ControlScopeIfGiven scope(options.control);  // its exact steps poll it too
+  const ExactTask task("region");
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(internal::default_pusher_mu(scene, target));
   internal::check_region_inputs(scene, mu, target);

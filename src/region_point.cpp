@@ -7,6 +7,7 @@
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/region_context.h"
 #include "fixel/internal/region_filter.h"
+#include "fixel/progress.h"
 #include "fixel/region.h"
 
 namespace fixel {
@@ -128,6 +129,8 @@ RegionStatus point_status(const Scene& scene, const SeatingSet& S, int curve, co
 
 Region sample_region(const Scene& scene, RegionTarget& target, int points_per_curve, std::optional<Rational> pusher_mu,
                      RunControl* control) {
+  const internal::ControlScopeIfGiven scope(control);  // its exact steps poll it too
+  const internal::ExactTask task("sample");
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(internal::default_pusher_mu(scene, target));
   internal::check_region_inputs(scene, mu, target);

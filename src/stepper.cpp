@@ -9,7 +9,8 @@
 namespace fixel {
 
 Simulation simulate(const Scene& scene, const std::vector<VectorQ>& impulses, int steps, RunControl* control) {
-  check_scene_values(scene);  // the scene before the impulses measured against it
+  const internal::ControlScopeIfGiven scope(control);  // its exact steps poll it too
+  check_scene_values(scene);                           // the scene before the impulses measured against it
   const int dof = scene.body.dof, nc = scene.num_contacts();
   if (steps <= 0) throw InputError("simulate(steps)", std::to_string(steps), "must be >= 1");
   for (std::size_t k = 0; k < impulses.size(); ++k)

@@ -9,6 +9,7 @@
 #include "fixel/internal/cone3.h"
 #include "fixel/internal/sustained_core.h"
 #include "fixel/internal/sustained_data.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -23,6 +24,7 @@ namespace {
 template <class NT>
 bool enumerate_pieces(Data<NT>& d, std::size_t jam, std::vector<A3<NT>>& closed, std::vector<A3<NT>>& strict,
                       bool with_rays, bool first_only) {
+  poll_exact_step();
   std::vector<RowRef<NT>> rows;
   append_refs(d.K_rows, true, rows);
   append_refs(closed, false, rows);
@@ -288,6 +290,7 @@ std::vector<Rational> fixel_mu(const Scene& scene) {
 }  // namespace
 
 SustainedSet sustained_set(const Scene& scene, bool check_stability) {
+  const internal::ExactTask task("sustained set J");
   check_scene(scene);
   SustainedSet J;
   J.pose = seated_pose(scene);
@@ -302,6 +305,7 @@ SustainedSet sustained_set(const Scene& scene, bool check_stability) {
 namespace internal {
 
 SustainedCore sustained_core(const Scene& scene) {
+  const ExactTask task("sustained set J");
   check_scene(scene);
   SustainedCore out;
   out.data = make_data(scene, seated_pose(scene), fixel_mu(scene), false);

@@ -586,5 +586,15 @@ TEST(Approach, BadInputIsATypedErrorNamingTheField) {
   EXPECT_THROW(undecided.contains(test::vec({Rational(1), Rational(0), Rational(0)})), UnsupportedError);
 }
 
+// Building J' polls the calling thread's ControlScope, as J's does.
+TEST(Approach, BuildingItStopsInsideACancelledControlScopeNamingJPrime) {
+  const Scene polygon = test::scene_file("polygon");
+  const SustainedSet J = sustained_set(polygon);
+  EXPECT_EQ(test::stop_message([&] { approach_set(polygon, J); }), "(no stop)");
+  const test::CancelledControl cancelled;
+  const ControlScope scope(&cancelled.control);
+  EXPECT_EQ(test::stop_message([&] { approach_set(polygon, J); }).rfind("approach-aware J': interrupted after ", 0),
+            0u);
+}
 }  // namespace
 }  // namespace fixel

@@ -211,6 +211,19 @@ expect 2 '--max-seconds' -- "$fixel" simulate "$src/data/scenes/example2.json" -
 expect 4 'push: time limit reached after' -- "$fixel" push "$src/data/scenes/polygon.json" --wrench 0,0,0 --time 100000 --max-seconds 0.5
 expect 4 'validate: time limit reached after' -- "$fixel" region "$src/data/scenes/polygon.json" --push sustained --validate 1000000 --max-seconds 0.5 --quiet
 expect 2 '--time: 1000000000000000000000000000000 holds the push for' -- "$fixel" push "$src/data/scenes/polygon.json" --wrench 0,0,0 --time 1000000000000000000000000000000
+# One exact step on numbers of 20,000 digits (building J took 30 s here) polls the limit and Ctrl-C
+# inside: it used to run to the end and exit 0, past any --max-seconds.
+sevens=$(printf '7%.0s' $(seq 20000))
+sed "s|\"gap\": \"1/10\"|\"gap\": \"1/$sevens\"|" "$src/data/scenes/polygon.json" > "$tmp/long_gap.json"
+expect 4 'sustained set J: time limit reached after' -- "$fixel" seat "$tmp/long_gap.json" --sustained --max-seconds 1 --quiet
+expect 4 'sustained set J: time limit reached after' -- "$fixel" region "$tmp/long_gap.json" --push sustained --max-seconds 1 --quiet
+# (One SIGINT: a second one ends the process at once, and one exact step here takes up to a second.)
+"$fixel" seat "$tmp/long_gap.json" --sustained --quiet --max-seconds 60 > "$tmp/int_j.out" 2>&1 &
+pid=$!; sleep 1; kill -INT "$pid"
+wait "$pid"; rc=$?
+if [ "$rc" -ne 130 ] || ! grep -qE "(sustained set J|approach-aware J'): interrupted after [0-9]+ exact steps" "$tmp/int_j.out"; then
+  echo "FAIL: SIGINT to seat --sustained on long numbers -> exit $rc (want 130), output:"; head -3 "$tmp/int_j.out"; fail=1
+fi
 # (--max-seconds is only a safety net: a missed SIGINT then fails with exit 4 instead of hanging.)
 "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 --max-seconds 60 > "$tmp/int.out" 2>&1 &
 pid=$!; sleep 1

@@ -278,5 +278,15 @@ GTEST_TEST(Scene, BoundaryGivesMassCentreAndInertia) {
   EXPECT_EQ(parse_scene(no_mass).body.mass, Rational(8));
 }
 
+// A B-spline's Bézier pieces poll the calling thread's ControlScope (a
+// curve of high degree with long numbers took seconds to load).
+GTEST_TEST(Curve, BSplinePiecesStopInsideACancelledControlScope) {
+  std::mt19937_64 rng(7);
+  const Curve c = random_bspline(rng, 3, 6, false);
+  EXPECT_NO_THROW(c.bezier_pieces(0));
+  const test::CancelledControl cancelled;
+  const ControlScope scope(&cancelled.control);
+  EXPECT_EQ(test::stop_message([&] { c.bezier_pieces(0); }).rfind("exact step: interrupted after 1 ", 0), 0u);
+}
 }  // namespace
 }  // namespace fixel

@@ -520,5 +520,25 @@ GTEST_TEST(Design, AStoppedRunThrowsStoppedError) {
   EXPECT_THROW(design(part, boundary_candidates(part, std::nullopt), o), StoppedError);
 }
 
+// The design search polls between layouts only: a ControlScope around it
+// does not reach the layouts' own exact steps (their J polls it, as the
+// check below shows), so a stop names the layouts done.
+GTEST_TEST(Design, AControlScopeAroundTheSearchDoesNotStopItsLayouts) {
+  const Scene part = scene_file("polygon");
+  const auto cands = boundary_candidates(part, std::nullopt);
+  const std::vector<DesignCandidate> few(cands.begin(), cands.begin() + 9);  // 84 triples
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  o.jobs = 1;
+  const DesignResult free = design(part, few, o);
+  ASSERT_GT(free.stats.regions, 0);  // some layout's J was built
+  const test::CancelledControl cancelled;
+  const ControlScope scope(&cancelled.control);
+  EXPECT_THROW(sustained_set(part), StoppedError);
+  const DesignResult scoped = design(part, few, o);
+  EXPECT_EQ(scoped.stats.regions, free.stats.regions);
+  ASSERT_EQ(scoped.layouts.size(), free.layouts.size());
+  for (std::size_t k = 0; k < free.layouts.size(); ++k) EXPECT_EQ(scoped.layouts[k].score, free.layouts[k].score);
+}
 }  // namespace
 }  // namespace fixel

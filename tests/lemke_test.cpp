@@ -610,5 +610,21 @@ GTEST_TEST(IsSolution, AgreesWithTheRationalDefinitionOnRandomComplementaryPairs
   }
 }
 
+// One LCP polls the calling thread's ControlScope: the filtered run at
+// each lifting step of its exact values, the exact run at each pivot.
+// Entries of thousands of digits make either take seconds.
+GTEST_TEST(Lemke, BothRunsStopInsideACancelledControlScopeNamingTheLcp) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const TimeSteppingLcp lcp = build_lcp(scene);
+  const VectorQ b = lcp.b(vec({-1, -1, -1}));
+  const test::CancelledControl cancelled;
+  for (const bool exact : {false, true}) {
+    const ForceExactScope forced(exact);
+    EXPECT_EQ(test::stop_message([&] { solve_lcp_lemke(lcp.B, b); }), "(no stop)") << exact;
+    const ControlScope scope(&cancelled.control);
+    EXPECT_EQ(test::stop_message([&] { solve_lcp_lemke(lcp.B, b); }).rfind("LCP (Lemke): interrupted after ", 0), 0u)
+        << exact;
+  }
+}
 }  // namespace
 }  // namespace fixel

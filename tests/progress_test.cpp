@@ -1,11 +1,17 @@
 // RunControl's time limit (include/fixel/progress.h): a limit beyond what
-// steady_clock can hold sets none, instead of a deadline in the past.
+// steady_clock can hold sets none, instead of a deadline in the past. And
+// ControlScope: which control the exact steps inside one call poll.
 #include "fixel/progress.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
+#include <thread>
+
 #include <limits>
+#include "test_util.h"
 
 namespace fixel {
 namespace {
@@ -54,6 +60,107 @@ GTEST_TEST(RunControl, ALimitThatIsNotPositiveIsAnInputErrorNamingTheField) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.value(), "0");  // not std::to_string's "0.000000"
   }
+}
+
+GTEST_TEST(ControlScope, WithoutAScopeAnExactStepPollsNothing) { EXPECT_NO_THROW(internal::poll_exact_step()); }
+
+GTEST_TEST(ControlScope, InsideAScopeAnExactStepStopsWithTheInnermostTaskNamed) {
+  const test::CancelledControl c;
+  const ControlScope scope(&c.control);
+  EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
+            "exact step: interrupted after 1 exact steps; no result");
+  const internal::ExactTask task("building it");
+  EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
+            "building it: interrupted after 1 exact steps; no result");
+}
+
+GTEST_TEST(ControlScope, APastDeadlineIsATimeLimitStop) {
+  RunControl control;
+  control.deadline = RunControl::Clock::now() - std::chrono::seconds(1);
+  const ControlScope scope(&control);
+  try {
+    internal::poll_exact_step();
+    ADD_FAILURE() << "no stop";
+  } catch (const StoppedError& e) {
+    EXPECT_EQ(e.reason(), StopReason::kTimeLimit);
+  }
+}
+
+GTEST_TEST(ControlScope, ScopesNestAndTheOuterOneAppliesAgainAfterAnInnerOneEnds) {
+  const test::CancelledControl c;
+  const ControlScope outer(&c.control);
+  {
+    const ControlScope none(nullptr);  // as design() sets
+    EXPECT_NO_THROW(internal::poll_exact_step());
+    const internal::ControlScopeIfGiven not_given(nullptr);  // keeps `none`
+    EXPECT_NO_THROW(internal::poll_exact_step());
+  }
+  {
+    const internal::ControlScopeIfGiven not_given(nullptr);  // keeps `outer`
+    EXPECT_THROW(internal::poll_exact_step(), StoppedError);
+  }
+  EXPECT_THROW(internal::poll_exact_step(), StoppedError);
+}
+
+GTEST_TEST(ControlScope, AnExactStepReportsNoProgressSoAnyThreadMayPollTheSameControl) {
+  RunControl control;
+  int reports = 0;
+  control.interval = std::chrono::milliseconds(0);
+  control.start = RunControl::Clock::now() - std::chrono::seconds(5);
+  control.on_progress = [&](const char*, long, long, const char*) { ++reports; };
+  const ControlScope scope(&control);
+  for (int k = 0; k < 3; ++k) internal::poll_exact_step();
+  EXPECT_EQ(reports, 0);
+  control.poll("loop", 1, 2, "units");  // the loop's own poll reports
+  EXPECT_EQ(reports, 1);
+}
+
+GTEST_TEST(ControlScope, AScopeIsPerThread) {
+  const test::CancelledControl c;
+  const ControlScope scope(&c.control);
+  bool stopped_elsewhere = false;
+  std::thread other([&] {
+    try {
+      internal::poll_exact_step();
+    } catch (const StoppedError&) {
+      stopped_elsewhere = true;
+    }
+  });
+  other.join();
+  EXPECT_FALSE(stopped_elsewhere);
+  EXPECT_THROW(internal::poll_exact_step(), StoppedError);
+}
+
+GTEST_TEST(ControlScope, AnExactStepInsideALoopThatPollsIsToldAsTheLoopsPoll) {
+  RunControl control;
+  {
+    const internal::ControlScopeIfGiven scope(&control);  // as simulate opens
+    control.poll("simulate", 3, 10, "steps");             // the loop's own poll, before its step's exact work
+    control.cancel = true;
+    const internal::ExactTask task("LCP (Lemke)");
+    EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
+              "simulate: interrupted after 3 of 10 steps; no result");
+  }
+  // Outside that scope the loop's poll is forgotten: the task is named.
+  const ControlScope later(&control);
+  const internal::ExactTask task("sustained set J");
+  EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
+            "sustained set J: interrupted after 1 exact steps; no result");
+}
+
+GTEST_TEST(ControlScope, OnlyALoopsScopeRecordsItsPolls) {
+  const test::CancelledControl cancelled;
+  RunControl other;
+  const internal::ControlScopeIfGiven scope(&cancelled.control);
+  other.poll("elsewhere", 1, 2, "units");  // not the scope's control
+  EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
+            "exact step: interrupted after 1 exact steps; no result");
+  RunControl reading;  // a caller's scope (the CLI's): its polls, as a file's reading, name no later stop
+  const ControlScope caller(&reading);
+  reading.poll("load", 0, 6, "points read");
+  reading.cancel = true;
+  EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
+            "exact step: interrupted after 1 exact steps; no result");
 }
 
 }  // namespace

@@ -11,22 +11,23 @@
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
 #include "fixel/seating.h"
+#include "test_util.h"
 
 namespace fixel {
 namespace {
 
 Scene blob() { return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/blob.json"); }
 
-GTEST_TEST(PushPlan, ACancelledControlStopsTheGuaranteedSetAndTheOutcomeEnumeration) {
+// The plan's exact steps poll its control (a ControlScope), not only G's
+// modes and the outcome enumeration: a cancelled plan stops at its first
+// exact step, with or without G, and names the plan.
+GTEST_TEST(PushPlan, ACancelledControlStopsThePlanAtItsFirstExactStep) {
   const Scene scene = blob();
-  RunControl cancelled;
-  cancelled.cancel = true;
-  EXPECT_THROW(plan_push(scene, 0, Rational(10), true, &cancelled), StoppedError);  // G's modes
-  try {
-    plan_push(scene, 0, Rational(10), false, &cancelled);  // then the sample impulse's outcomes
-    ADD_FAILURE() << "a cancelled plan finished";
-  } catch (const StoppedError& e) {
-    EXPECT_NE(std::string(e.what()).find("solutions: interrupted"), std::string::npos) << e.what();
+  test::CancelledControl cancelled;
+  for (const bool with_guaranteed : {true, false}) {
+    const std::string message =
+        test::stop_message([&] { plan_push(scene, 0, Rational(10), with_guaranteed, &cancelled.control); });
+    EXPECT_EQ(message, "push-plan: interrupted after 1 exact steps; no result") << with_guaranteed;
   }
 }
 

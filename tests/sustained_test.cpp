@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <random>
 #include <sstream>
 
@@ -14,6 +15,7 @@
 #include "fixel/internal/sustained_core.h"
 #include "fixel/io.h"
 #include "fixel/physics.h"
+#include "fixel/progress.h"
 #include "fixel/region.h"
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
@@ -491,5 +493,15 @@ GTEST_TEST(SustainedJson, TheSeatDocumentAddsJsKeysToSsOrSaysWhySIsMissing) {
   EXPECT_NE(doc.at("seating_unavailable").get<std::string>().find("interval"), std::string::npos);
 }
 
+// Building J polls the calling thread's ControlScope between its exact
+// steps: on numbers of 20,000 digits it took half a minute and ignored
+// --max-seconds.
+GTEST_TEST(SustainedSet, BuildingItStopsInsideACancelledControlScopeNamingJ) {
+  const Scene polygon = scene_file("polygon");
+  EXPECT_EQ(test::stop_message([&] { sustained_set(polygon); }), "(no stop)");
+  const test::CancelledControl cancelled;
+  const ControlScope scope(&cancelled.control);
+  EXPECT_EQ(test::stop_message([&] { sustained_set(polygon); }).rfind("sustained set J: interrupted after ", 0), 0u);
+}
 }  // namespace
 }  // namespace fixel

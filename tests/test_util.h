@@ -3,9 +3,11 @@
 // ::testing stays visible): exact literals, bundled scenes, and seeded
 // random scenes with exact unit normals.
 
+#include <functional>
 #include <random>
 #include <string>
 
+#include "fixel/progress.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
 
@@ -23,6 +25,22 @@ inline int sanitizer_scaled(int n) {
   return n;
 #endif
 }
+
+// The message of the StoppedError `call` throws ("(no stop)" if none).
+inline std::string stop_message(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const StoppedError& e) {
+    return e.what();
+  }
+  return "(no stop)";
+}
+
+// A control cancelled before the run: it stops at its first check.
+struct CancelledControl {
+  RunControl control;
+  CancelledControl() { control.cancel = true; }
+};
 
 // An exact vector or matrix from literals.
 inline VectorQ vec(std::initializer_list<Rational> xs) {

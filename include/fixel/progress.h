@@ -77,9 +77,20 @@ struct RunControl {
     deadline = from + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   }
 
+  /// Throws StoppedError if cancelled or past the deadline, with poll's
+  /// message; reports no progress and changes nothing, so any thread may
+  /// call it while another polls.
+  void check_stop(const char* task, long done, long total, const char* unit) const {
+    if (cancel.load(std::memory_order_relaxed)) stop(StopReason::kInterrupted, task, done, total, unit);
+    if (deadline && Clock::now() >= *deadline) stop(StopReason::kTimeLimit, task, done, total, unit);
+  }
+
   /// Throws StoppedError if cancelled or past the deadline; reports progress
   /// when due. `unit` names the work ("steps", "points", "segments").
+  /// Inside a ControlScope for this control, an exact step's stop within
+  /// the loop is told as this poll's (internal::poll_exact_step).
   void poll(const char* task, long done, long total, const char* unit) {
+    note_poll(task, done, total, unit);
     if (cancel.load(std::memory_order_relaxed)) stop(StopReason::kInterrupted, task, done, total, unit);
     const auto now = Clock::now();
     if (deadline && now >= *deadline) stop(StopReason::kTimeLimit, task, done, total, unit);
@@ -97,6 +108,8 @@ struct RunControl {
                       "; no result";
     throw StoppedError(reason, msg, done, total);
   }
+  // Records this poll for the calling thread's ControlScope (src/progress.cpp).
+  void note_poll(const char* task, long done, long total, const char* unit) const;
   Clock::time_point next_report_{};
 };
 
@@ -104,5 +117,79 @@ struct RunControl {
 inline void poll(RunControl* control, const char* task, long done, long total, const char* unit) {
   if (control) control->poll(task, done, total, unit);
 }
+
+/// Makes `control` (or none) the control of the exact steps on the calling
+/// thread that take none of their own, for the life of the scope: building
+/// J and J′ (sustained_set, approach_set) and J′'s wrench tests, one exact
+/// LCP, the Bézier pieces of one B-spline curve. With numbers of thousands
+/// of digits one such step can take minutes; inside it, cancel and the
+/// deadline are checked (RunControl::check_stop, no progress report) and
+/// end it with StoppedError, e.g. "sustained set J: time limit reached after
+/// 412 exact steps; no result". Scopes nest; the innermost wins. Threads
+/// started inside do not inherit it.
+///
+/// Inside a library function that polls the control in its own loop
+/// (simulate's steps, the region's segments), an exact step's stop is told
+/// as that loop's last poll: "simulate: time limit reached after 1529 of
+/// 100000000 steps; no result", as its own poll would say.
+class ControlScope {
+ public:
+  explicit ControlScope(const RunControl* control) : ControlScope(control, false) {}
+  /// `loop`: the scope of a function that polls `control` in its own loop;
+  /// its polls are then recorded for the stop message above. A caller's
+  /// scope records none, so that no finished loop's poll (a file's reading)
+  /// names a later stop.
+  ControlScope(const RunControl* control, bool loop);
+  ~ControlScope();
+  ControlScope(const ControlScope&) = delete;
+  ControlScope& operator=(const ControlScope&) = delete;
+
+  /// The last poll of the scope's control inside a loop's scope (task
+  /// null: none, or not a loop's scope).
+  struct LastPoll {
+    const char* task = nullptr;
+    long done = 0, total = 0;
+    const char* unit = nullptr;
+  };
+
+ private:
+  const RunControl* previous_;
+  long previous_steps_;
+  LastPoll previous_poll_;
+  bool previous_loop_;
+};
+
+namespace internal {
+/// Checks the calling thread's ControlScope, if any: one exact step of the
+/// innermost ExactTask.
+void poll_exact_step();
+
+/// A loop's ControlScope for `control` when one is given; else the
+/// caller's scope stays (the library's functions that take a control and
+/// poll it in a loop open one).
+class ControlScopeIfGiven {
+ public:
+  explicit ControlScopeIfGiven(const RunControl* control) {
+    if (control) scope_.emplace(control, true);
+  }
+
+ private:
+  std::optional<ControlScope> scope_;
+};
+
+/// Names the exact steps polled on this thread for the life of the scope
+/// (the stop message's task, e.g. "sustained set J").
+class ExactTask {
+ public:
+  explicit ExactTask(const char* name);
+  ~ExactTask();
+  ExactTask(const ExactTask&) = delete;
+  ExactTask& operator=(const ExactTask&) = delete;
+
+ private:
+  const char* previous_;
+  long previous_steps_;
+};
+}  // namespace internal
 
 }  // namespace fixel

@@ -406,10 +406,13 @@ def push_plan(scene, at, guaranteed=False, max_seconds=None):
     return json.loads(stoppable(lambda c: _fixel.push_plan(scene._impl, at, g, c), max_seconds))
 
 
-def sustained_set(scene):
-    """The sustained-push set J of a scene (``fixel seat --sustained``)."""
+def sustained_set(scene, max_seconds=None):
+    """The sustained-push set J of a scene (``fixel seat --sustained``).
+    Building it is one exact step that takes milliseconds on ordinary
+    numbers and can take minutes on numbers of many thousands of digits:
+    ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
-    return SustainedSet(scene, _fixel.sustained_set(scene._impl))
+    return SustainedSet(scene, stoppable(lambda c: _fixel.sustained_set(scene._impl, c), max_seconds))
 
 
 class ApproachSet:
@@ -473,14 +476,23 @@ class ApproachSet:
         return self._impl.why_not(vector(w, "wrench"), frame == "part")
 
 
-def approach_set(scene, sustained=None):
+def approach_set(scene, sustained=None, max_seconds=None):
     """The approach-aware set J' of a scene (``fixel seat --sustained``
     reports it as "approach"). ``sustained``: its SustainedSet J, when
-    already computed."""
+    already computed. ``max_seconds`` and Ctrl-C as in sustained_set (one
+    limit for J, when it is built here, and J' together)."""
     scene = _scene(scene)
-    J = _expect(sustained, SustainedSet, "sustained") if sustained is not None else sustained_set(scene)
-    _same_scene(J.scene, scene, "sustained")
-    return ApproachSet(J, _fixel.approach_set(scene._impl, J._impl))
+    if sustained is not None:
+        J = _expect(sustained, SustainedSet, "sustained")
+        _same_scene(J.scene, scene, "sustained")
+        return ApproachSet(J, stoppable(lambda c: _fixel.approach_set(scene._impl, J._impl, c), max_seconds))
+
+    def both(control):
+        j = _fixel.sustained_set(scene._impl, control)
+        return j, _fixel.approach_set(scene._impl, j, control)
+
+    j, a = stoppable(both, max_seconds)
+    return ApproachSet(SustainedSet(scene, j), a)
 
 
 @contextlib.contextmanager

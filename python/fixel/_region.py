@@ -296,7 +296,7 @@ def region(
     if digits != 0 and not exact:
         raise InputError.make("digits", str(digits), "needs exact=True (it refines the exact region's ends)")
     if push == "sustained":
-        from . import ApproachSet, SustainedSet, _same_scene, approach_set, sustained_set
+        from . import ApproachSet, SustainedSet, _same_scene
 
         if guaranteed is not None and guaranteed is not False:
             raise InputError.make("guaranteed", repr(guaranteed), "cannot be combined with push='sustained'")
@@ -311,20 +311,24 @@ def region(
             _same_scene(approach.scene, scene, "approach")
             if seating is not None and approach.J is not seating:
                 raise InputError.make("seating", repr(seating), "is not the SustainedSet the ApproachSet refines")
-            A = approach
-        elif approach is True:
-            A = approach_set(scene, seating)
-        elif approach is False or approach is None:
-            A = None
+            A, J = approach, approach.J
+        elif approach is True or approach is False or approach is None:
+            A, J = None, seating
         else:
             raise InputError.make("approach", repr(approach), "is not True, False or an ApproachSet")
-        J = A.J if A is not None else (seating if seating is not None else sustained_set(scene))
-        a_impl = None if A is None else A._impl
-        impl = _run(
-            lambda c: _fixel.compute_region_sustained(
-                scene._impl, J._impl, res, cone, mu, exact, digits, res_len, a_impl, c),
-            progress, "fixel.region", max_seconds,
-        )  # fmt: skip
+        build_a = approach is True
+
+        # J and J' not given are built in the same run as the region, under
+        # its max_seconds and Ctrl-C (each is one long exact step on numbers
+        # of thousands of digits).
+        def work(c):
+            j = J._impl if J is not None else _fixel.sustained_set(scene._impl, c)
+            a = A._impl if A is not None else (_fixel.approach_set(scene._impl, j, c) if build_a else None)
+            return j, a, _fixel.compute_region_sustained(scene._impl, j, res, cone, mu, exact, digits, res_len, a, c)
+
+        j, _, impl = _run(work, progress, "fixel.region", max_seconds)
+        if J is None:
+            J = SustainedSet(scene, j)
         r = _region_of(scene, J, impl, cone, shown, None if mu is None else frac(mu))
         r.resolution_length = None if res_len is None else frac(res_len)
         return r

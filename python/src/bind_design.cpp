@@ -126,6 +126,7 @@ void bind_design(py::module_& m) {
   m.def(
       "design_json",
       [](const ScenePtr& scene, const CandidateList& list, const py::dict& opts, Control* control) {
+        const ControlScope scope(run_control(control));  // exact steps inside poll it too
         const Scene& s = checked(scene, "scene");
         const auto cands = candidates_of(s, list);
         DesignOptions o = options_of(opts);

@@ -108,6 +108,7 @@ void bind_region(py::module_& m) {
         [](const ScenePtr& scene, const SeatingPtr& S, const std::string& resolution, const std::string& cone,
            const std::optional<std::string>& pusher_mu, const py::object& G, bool exact, int digits,
            const std::optional<std::string>& resolution_length, Control* control) {
+          const ControlScope scope(run_control(control));  // exact steps inside poll it too
           RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
           options.guaranteed = guaranteed_of(G, S);
           options.control = run_control(control);
@@ -116,6 +117,7 @@ void bind_region(py::module_& m) {
         });
   m.def("sample_region", [](const ScenePtr& scene, const SeatingPtr& S, int points,
                             const std::optional<std::string>& pusher_mu, const py::object& G, Control* control) {
+    const ControlScope scope(run_control(control));  // exact steps inside poll it too
     if (points < 1) throw InputError("points", std::to_string(points), "must be at least 1");
     const auto mu = optional_rational(pusher_mu, "pusher_mu");
     const GuaranteedSet* g = guaranteed_of(G, S);

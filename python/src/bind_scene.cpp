@@ -49,6 +49,7 @@ void bind_scene(py::module_& m) {
   m.def(
       "parse_scene",
       [](const std::string& text, const std::string& source, Control* control) {
+        const ControlScope scope(run_control(control));  // exact steps inside poll it too
         py::gil_scoped_release release;
         return std::make_shared<Scene>(parse_scene(text, source, run_control(control)));
       },
@@ -56,6 +57,7 @@ void bind_scene(py::module_& m) {
   m.def(
       "load_scene",
       [](const std::string& path, Control* control) {
+        const ControlScope scope(run_control(control));  // exact steps inside poll it too
         py::gil_scoped_release release;
         return std::make_shared<Scene>(load_scene(path, run_control(control)));
       },

@@ -124,12 +124,14 @@ void bind_sets(py::module_& m) {
     return seating_system(checked(scene, "scene"), checked(S, "seating"));
   });
   m.def("guaranteed_set", [](const ScenePtr& scene, const SeatingPtr& S, Control* control) {
+    const ControlScope scope(run_control(control));  // exact steps inside poll it too
     py::gil_scoped_release release;
     return std::make_shared<GuaranteedHandle>(
         GuaranteedHandle{guaranteed_set(checked(scene, "scene"), checked(S, "seating"), run_control(control)), S});
   });
   m.def("simulate", [](const ScenePtr& scene, const std::vector<std::vector<std::string>>& impulses, int steps,
                        Control* control) {
+    const ControlScope scope(run_control(control));  // exact steps inside poll it too
     std::vector<VectorQ> p;
     for (std::size_t k = 0; k < impulses.size(); ++k)
       p.push_back(exact_vector(impulses[k], checked(scene, "scene").body.dof, "impulse[" + std::to_string(k) + "]"));
@@ -143,6 +145,7 @@ void bind_sets(py::module_& m) {
     return py::make_tuple(sim.seated, out);
   });
   m.def("solutions", [](const ScenePtr& scene, const std::vector<std::string>& impulse, Control* control) {
+    const ControlScope scope(run_control(control));  // exact steps inside poll it too
     const VectorQ p = exact_vector(impulse, checked(scene, "scene").body.dof, "impulse");
     std::vector<Outcome> outcomes;
     {
@@ -155,6 +158,7 @@ void bind_sets(py::module_& m) {
   });
   // `fixel push-plan --json` at "K:U": per model, how hard to push there.
   m.def("push_plan", [](const ScenePtr& scene, const std::string& at, bool guaranteed, Control* control) {
+    const ControlScope scope(run_control(control));  // exact steps inside poll it too
     const Scene& s = checked(scene, "scene");
     const auto point = physics::parse_curve_point(s, at, "at");
     py::gil_scoped_release release;

@@ -36,7 +36,8 @@ void bind_sustained(py::module_& m) {
       .def("why_not", [](const SustainedSet& J, const std::vector<std::string>& w) {
         return J.why_not(exact_vector(w, 3, "wrench"));
       });
-  m.def("sustained_set", [](const ScenePtr& scene) {
+  m.def("sustained_set", [](const ScenePtr& scene, Control* control) {
+    const ControlScope scope(run_control(control));  // its exact steps poll it
     const Scene& s = checked(scene, "scene");
     py::gil_scoped_release release;
     return std::make_shared<SustainedSet>(sustained_set(s));
@@ -74,7 +75,8 @@ void bind_sustained(py::module_& m) {
         }
         return py::make_tuple(reason, h);
       });
-  m.def("approach_set", [](const ScenePtr& scene, const SustainedPtr& J) {
+  m.def("approach_set", [](const ScenePtr& scene, const SustainedPtr& J, Control* control) {
+    const ControlScope scope(run_control(control));  // its exact steps poll it
     const Scene& s = checked(scene, "scene");
     const SustainedSet& j = checked(J, "sustained");
     py::gil_scoped_release release;
@@ -86,6 +88,7 @@ void bind_sustained(py::module_& m) {
   // The Box2D check: the `fixel push --json` document (a measurement).
   m.def("push", [](const ScenePtr& scene, const std::optional<std::vector<std::string>>& wrench,
                    const std::optional<std::string>& at, const std::string& time, Control* control) {
+    const ControlScope scope(run_control(control));  // exact steps inside poll it too
     const Scene& s = checked(scene, "scene");
     physics::PushOptions options;
     options.time = parse_rational(time, "time");
@@ -118,6 +121,7 @@ void bind_sustained(py::module_& m) {
         [](const ScenePtr& scene, const SustainedPtr& J, const std::string& resolution, const std::string& cone,
            const std::optional<std::string>& pusher_mu, bool exact, int digits,
            const std::optional<std::string>& resolution_length, const ApproachPtr& approach, Control* control) {
+          const ControlScope scope(run_control(control));  // exact steps inside poll it too
           RegionOptions options = region_options(resolution, cone, pusher_mu, exact, digits, resolution_length);
           options.control = run_control(control);
           const Scene& s = checked(scene, "scene");

@@ -66,6 +66,9 @@ void arm_run_control(const RunOptions& options) {
   if (options.max_seconds != 0) g_run.set_time_limit(options.max_seconds, "--max-seconds", g_run.start);
   if (!options.quiet && isatty(STDERR_FILENO)) g_run.on_progress = show_progress;
   std::signal(SIGINT, on_sigint);
+  // The exact steps inside one library call poll it too (building J and J',
+  // one LCP): for the rest of the command, on this thread.
+  static const ControlScope scope(&g_run);
 }
 
 RunControl* run_control() { return &g_run; }

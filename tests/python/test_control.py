@@ -42,7 +42,8 @@ CALLS = {
     "solutions": lambda s: fixel.solutions(s, [0, -1, 0], max_seconds=PAST),
     "push": lambda s: fixel.push(s, wrench=[0, -1, 0], max_seconds=PAST),
 }
-TASKS = {"sustained region": "region"}
+# J is built in the same run, and it stops first.
+TASKS = {"sustained region": "sustained set J"}
 
 
 @pytest.mark.parametrize("name", CALLS)
@@ -204,3 +205,39 @@ def test_calls_from_several_threads_get_their_own_answers(polygon, blob32):
         t.join()
     assert not errors
     assert len(got) == 6 and all(intervals == expected[key] for key, intervals in got)
+
+
+@pytest.fixture(scope="module")
+def long_gap():
+    """The polygon with a gap of 20,000 digits: building J takes about 30 s
+    (one exact step that used to ignore max_seconds and Ctrl-C)."""
+    d = json.loads((SCENE_DIR / "polygon.json").read_text())
+    d["fixels"][0]["gap"] = "1/" + "7" * 20000
+    return fixel.Scene.from_dict(d)
+
+
+@pytest.mark.parametrize(
+    "name, call",
+    [
+        ("sustained set J", lambda s: fixel.sustained_set(s, max_seconds=0.5)),
+        ("sustained set J", lambda s: fixel.approach_set(s, max_seconds=0.5)),
+        ("sustained set J", lambda s: fixel.region(s, push="sustained", max_seconds=0.5)),
+        ("sustained set J", lambda s: fixel.push_plan(s, "0:1/2", max_seconds=0.5)),
+    ],
+)
+def test_one_long_exact_step_stops_at_max_seconds(long_gap, name, call):
+    t0 = time.monotonic()
+    with pytest.raises(fixel.StoppedError, match=f"^{name}: time limit reached after [0-9]+ exact steps; no result$"):
+        call(long_gap)
+    assert time.monotonic() - t0 < 10  # not the 30 s of the whole step
+
+
+def test_j_prime_of_a_given_j_stops_at_max_seconds_naming_j_prime(polygon):
+    J = fixel.sustained_set(polygon)
+    with pytest.raises(fixel.StoppedError, match="^approach-aware J': time limit reached after"):
+        fixel.approach_set(polygon, J, max_seconds=PAST)
+    assert fixel.approach_set(polygon, J, max_seconds=60).decided  # a generous limit changes nothing
+
+
+def test_ctrl_c_stops_one_long_exact_step(long_gap):
+    assert _interrupted(lambda: fixel.sustained_set(long_gap, max_seconds=20)) < 10

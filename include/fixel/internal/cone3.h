@@ -14,6 +14,7 @@
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/interval_arith.h"
 #include "fixel/internal/quadratic_field.h"
+#include "fixel/progress.h"
 
 namespace fixel::internal {
 
@@ -261,6 +262,7 @@ std::vector<A3<NT>> facets_of(const std::vector<A3<NT>>& gens, bool planar) {
   }
   for (std::size_t i = 0; i < gens.size(); ++i)
     for (std::size_t j = i + 1; j < gens.size(); ++j) {
+      poll_exact_step();
       const A3<NT> c = cross3(gens[i], gens[j]);
       const int side = supporting_side(c, gens, i, j);
       if (side != 0) add_unique(out, side > 0 ? c : neg3(c));
@@ -283,6 +285,7 @@ std::vector<A3<NT>> rays_of(const std::vector<A3<NT>>& rows) {
   std::vector<A3<NT>> out;
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      poll_exact_step();
       const A3<NT> c = cross3(rows[i], rows[j]);
       if (is_zero3(c)) continue;
       for (const A3<NT>& r : {c, neg3(c)}) {
