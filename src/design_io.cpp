@@ -13,6 +13,7 @@
 #include "fixel/curve.h"
 #include "fixel/design.h"
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/internal/json_exact.h"
 
 namespace fixel {
@@ -278,11 +279,7 @@ void write_design_svg(const std::string& path, const Scene& part, const DesignRe
     s << "<text x='" << ox - size / 2 << "' y='" << oy + size / 2 + 20 << "'>" << caption.str() << "</text>\n";
   }
   s << "</svg>\n";
-  std::ofstream out(path);
-  if (!out) throw InputError("svg(path)", path, "cannot be written");
-  out << s.str();
-  out.flush();  // a full disk shows here, not silently at the stream's end
-  if (!out) throw InputError("svg(path)", path, "could not be written completely");
+  internal::write_file(path, "svg(path)", [&](std::ostream& out) { out << s.str(); });
 }
 
 }  // namespace fixel

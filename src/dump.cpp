@@ -6,6 +6,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/internal/json_exact.h"
 #include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
@@ -78,24 +79,22 @@ std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const
 
   const Boundary& boundary = *scene.body.boundary;
   const std::string obj_path = (std::filesystem::path(dir) / "boundary.obj").string();
-  std::ofstream obj(obj_path);
-  if (!obj) throw InputError("dump_off(directory)", obj_path, "cannot be written");
-  obj << "# fixel: boundary of scene \"" << scene.name << "\", 32 samples per Bezier piece (display only)\n";
-  obj.precision(17);
-  int count = 0;
-  for (const auto& piece : boundary.pieces) {
-    obj << "# curve " << piece.curve << ", u in [" << to_string(piece.u0) << ", " << to_string(piece.u1) << "]\n";
-    for (int k = 0; k < 32; ++k) {
-      const Vec2 p = piece.point(Rational(k, 32));
-      obj << "v " << to_double(p.x) << " " << to_double(p.y) << " 0\n";
-      ++count;
+  internal::write_file(obj_path, "dump_off(directory)", [&](std::ostream& obj) {
+    obj << "# fixel: boundary of scene \"" << scene.name << "\", 32 samples per Bezier piece (display only)\n";
+    obj.precision(17);
+    int count = 0;
+    for (const auto& piece : boundary.pieces) {
+      obj << "# curve " << piece.curve << ", u in [" << to_string(piece.u0) << ", " << to_string(piece.u1) << "]\n";
+      for (int k = 0; k < 32; ++k) {
+        const Vec2 p = piece.point(Rational(k, 32));
+        obj << "v " << to_double(p.x) << " " << to_double(p.y) << " 0\n";
+        ++count;
+      }
     }
-  }
-  obj << "l";
-  for (int k = 1; k <= count; ++k) obj << " " << k;
-  obj << " 1\n";
-  obj.close();
-  if (!obj) throw InputError("dump_off(directory)", obj_path, "could not be written completely");
+    obj << "l";
+    for (int k = 1; k <= count; ++k) obj << " " << k;
+    obj << " 1\n";
+  });
   written.push_back(obj_path);
 
   std::vector<EdgeFamily> families = {EdgeFamily::kNormal};

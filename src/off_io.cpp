@@ -13,6 +13,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/internal/json_approx.h"
 #include "fixel/internal/off_sidecar.h"
 
@@ -139,11 +140,8 @@ std::string sidecar_path(const std::string& off_path) {
 
 std::vector<std::string> write_off_with_sidecar(const std::string& off_path, const std::vector<Halfspace>& halfspaces,
                                                 int dim, const nlohmann::ordered_json& meta, const std::string& field) {
-  std::ofstream out(off_path);
-  if (!out) throw InputError(field, off_path, "cannot be written");
-  const std::size_t vertices = write_polytope_off(out, halfspaces, dim);
-  out.close();
-  if (!out) throw InputError(field, off_path, "could not be written completely");
+  std::size_t vertices = 0;
+  write_file(off_path, field, [&](std::ostream& out) { vertices = write_polytope_off(out, halfspaces, dim); });
   std::vector<VectorQ> exact = polytope_vertices(halfspaces, dim);
   std::vector<VectorQ> directions;
   for (std::size_t k = 1; k < exact.size(); ++k) directions.push_back(VectorQ(exact[k] - exact[0]));
@@ -156,11 +154,7 @@ std::vector<std::string> write_off_with_sidecar(const std::string& off_path, con
   for (const auto& [key, value] : meta.items()) doc[key] = value;
   internal::add_approx(doc);
   const std::string json_path = sidecar_path(off_path);
-  std::ofstream side(json_path);
-  if (!side) throw InputError(field, json_path, "cannot be written");
-  side << doc.dump(2) << "\n";
-  side.close();
-  if (!side) throw InputError(field, json_path, "could not be written completely");
+  write_file(json_path, field, [&](std::ostream& side) { side << doc.dump(2) << "\n"; });
   return {off_path, json_path};
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/internal/readable.h"
 #include "fixel/physics.h"
 
@@ -119,8 +120,7 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
     o << "\"/>\n";
     return o.str();
   };
-  std::ofstream out(path);
-  if (!out) throw InputError("svg(path)", path, "cannot be written");
+  std::ostringstream out;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 " << W
       << " " << H << "\" font-family=\"sans-serif\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -156,8 +156,7 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
   out << caption(H - 18) << "blue: the part at the start; " << (r.outcome == Outcome::kSeated ? "green" : "red")
       << ": at the end; grey: every few steps; dashed: the centre of mass's path</text>\n";
   out << "</svg>\n";
-  out.flush();  // a full disk shows here, not silently at the stream's end
-  if (!out) throw InputError("svg(path)", path, "could not be written completely");
+  internal::write_file(path, "svg(path)", [&](std::ostream& file) { file << out.str(); });
 }
 
 std::string add_validation_json(const std::string& region_json_text, const RegionValidation& v) {

@@ -8,6 +8,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
 
@@ -84,39 +85,11 @@ std::string write_scene(const Scene& s) {
   return d.dump(1, ' ', false, ordered::error_handler_t::replace) + "\n";
 }
 
-void save_scene(const Scene& scene, const std::string& path_given) {
+void save_scene(const Scene& scene, const std::string& path) {
   const std::string text = write_scene(scene);
-  std::error_code ec;
-  if (std::filesystem::is_directory(path_given, ec))
-    throw InputError(path_given, "", "cannot be written: it is a folder");
-  // A symbolic link is written through (its target replaced), not replaced.
-  std::string path = path_given;
-  if (std::filesystem::is_symlink(path_given, ec)) {
-    const auto target = std::filesystem::weakly_canonical(path_given, ec);
-    if (!ec) path = target.string();
-  }
-  // The temporary file is renamed over the path: a FIFO or device there
-  // would be replaced by a regular file, so only regular files are written.
-  const auto status = std::filesystem::status(path, ec);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-    throw InputError(path_given, "", "cannot be written: it exists and is not a regular file (a FIFO or device)");
-  const std::string temporary = path + ".fixel-partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path_given, "", "cannot be written (" + temporary + " cannot be created)");
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(temporary.c_str());
-      throw InputError(path_given, "", "cannot be written (writing " + temporary + " failed)");
-    }
-  }
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    throw InputError(path_given, "", "cannot be written: " + ec.message());
-  }
+  // A scene is read back: a FIFO or device is refused, not written into.
+  internal::write_file(
+      path, "save_scene(path)", [&](std::ostream& out) { out << text; }, internal::SpecialFile::kRefuse);
 }
 
 }  // namespace fixel

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/svg.h"
 
 namespace fixel {
@@ -88,11 +89,7 @@ void write_guaranteed_svg(const std::string& path, const Scene& scene, const Sea
         << (G->pieces.size() == 1 ? " piece, " : " pieces, ") << G->non_seating.size()
         << " non-seating sets meet S.</text>\n</svg>\n";
   }
-  std::ofstream out(path);
-  if (!out) throw InputError("svg(path)", path, "cannot be written");
-  out << svg.str();
-  out.flush();  // a full disk shows here, not silently at the stream's end
-  if (!out) throw InputError("svg(path)", path, "could not be written completely");
+  internal::write_file(path, "svg(path)", [&](std::ostream& out) { out << svg.str(); });
 }
 
 }  // namespace fixel

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/internal/svg_region.h"
 #include "fixel/svg.h"
 
@@ -84,11 +85,7 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
   draw_wrench_panel(svg, scene, region, pic);
   svg << "</svg>\n";
 
-  std::ofstream out(path);
-  if (!out) throw InputError("svg(path)", path, "cannot be written");
-  out << svg.str();
-  out.flush();  // a full disk shows here, not silently at the stream's end
-  if (!out) throw InputError("svg(path)", path, "could not be written completely");
+  internal::write_file(path, "svg(path)", [&](std::ostream& out) { out << svg.str(); });
 }
 
 }  // namespace

@@ -350,6 +350,11 @@ for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polyg
   if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: $cmd --svg into a missing folder -> exit $rc, stdout '$out'"; fail=1; fi
 done
 expect 2 '--svg: '"$tmp"'/no/x.svg cannot be written: no such folder' -- "$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/no/x.svg"
+# A picture that cannot be written keeps the earlier one whole (the temporary file is blocked here).
+"$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/kept.svg" > /dev/null 2>&1
+cp "$tmp/kept.svg" "$tmp/kept_before.svg"; mkdir "$tmp/kept.svg.fixel-partial"
+expect 2 'kept.svg.fixel-partial cannot be created' -- "$fixel" region "$src/data/scenes/polygon.json" --push sustained --svg "$tmp/kept.svg"
+cmp -s "$tmp/kept.svg" "$tmp/kept_before.svg" || { echo "FAIL: a failed --svg changed the earlier picture"; fail=1; }
 
 # Scene checks (issue 16 §4): fixels on the outline, friendlier normals, info, stdin, batches, b0.
 python3 - "$src/data/scenes/polygon.json" "$tmp" <<'PY'

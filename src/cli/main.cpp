@@ -40,6 +40,7 @@ std::string user_message(const fixel::InputError& e) {
       {"dump_off(directory)", "--off"},
       {"dump_sustained_off(directory)", "--off"},
       {"svg(path)", "--svg"},
+      {"save_scene(path)", "--scene-out"},
       {"boundary_candidates(spacing)", "--spacing"},
       {"load_candidates(path)", "--candidates"},
       {"DesignOptions.resolution", "--resolution"},
