@@ -3,6 +3,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/lcp.h"
 
 namespace fixel {
 
@@ -21,6 +22,20 @@ SceneInfo scene_info(const Scene& scene) {
   if (b.mass_from_area)
     info.warnings.push_back("body.mass is not given: it defaults to the enclosed area, " + to_string(b.mass) +
                             " kg (density 1 kg/m²); give \"mass\" for the real part");
+  // The analyses that would refuse the scene, said here rather than only
+  // when one of them is run.
+  try {
+    require_determined_fixture(scene);
+  } catch (const InputError& e) {
+    info.warnings.push_back(
+        "the one-step analyses (seat, region, sample, simulate, solutions, push-plan, dump) refuse this scene: " +
+        std::string(e.what()));
+  }
+  if (b.dof == 3 && scene.num_contacts() != 3)
+    info.warnings.push_back(
+        "the sustained-push analyses (seat --sustained, region --push sustained) refuse this "
+        "scene: they need exactly 3 fixels, and it has " +
+        std::to_string(scene.num_contacts()));
   try {
     info.seated = seated_pose(scene);
   } catch (const InputError& e) {

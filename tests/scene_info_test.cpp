@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "fixel/io_info.h"
+#include "fixel/lcp.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -53,6 +54,37 @@ GTEST_TEST(SceneInfo, NamesTheFixelsMarkedOffTheOutline) {
   EXPECT_NE(info.warnings[0].find("fixels[0] is marked off_boundary"), std::string::npos);
   EXPECT_FALSE(info.on_outline[0].on_boundary);
   EXPECT_FALSE(scene.description.empty());
+}
+
+// info said nothing of a scene every analysis refuses: it now warns, with
+// the analyses' own reason, before one is run.
+GTEST_TEST(SceneInfo, WarnsWhenTheAnalysesRefuseTheScene) {
+  Scene two = test::scene_file("polygon");
+  two.fixels.pop_back();  // n_c = 2 < dof = 3
+  const SceneInfo info = scene_info(two);
+  ASSERT_EQ(info.warnings.size(), 3u);  // the mass, the one-step rule, the sustained push
+  EXPECT_EQ(info.warnings[1],
+            "the one-step analyses (seat, region, sample, simulate, solutions, push-plan, dump) refuse this scene: "
+            "fixels: 2 fixels but dof is 3: the seating analysis needs exactly dof fixels (n_c == dof)");
+  EXPECT_EQ(info.warnings[2],
+            "the sustained-push analyses (seat --sustained, region --push sustained) refuse this scene: they need "
+            "exactly 3 fixels, and it has 2");
+  EXPECT_THROW(require_determined_fixture(two), SceneError);  // as the warning says
+  // W_n singular: fixels 1 and 2 push along the same line (both normals (0, 1)
+  // at the same x would; here fixel 2 moves onto fixel 1's point).
+  Scene singular = test::scene_file("polygon");
+  singular.fixels[2].p_AoF_A = singular.fixels[1].p_AoF_A;
+  const SceneInfo s = scene_info(singular);
+  ASSERT_EQ(s.warnings.size(), 2u);
+  EXPECT_EQ(s.warnings[1].rfind("the one-step analyses (seat, region, sample, simulate, solutions, push-plan, dump) "
+                                "refuse this scene: fixels[2]: ",
+                                0),
+            0u);
+  EXPECT_NE(s.warnings[1].find("makes W_n singular"), std::string::npos);
+  // The bundled scenes the analyses accept get no such warning.
+  for (const char* name : {"polygon", "example2", "blob", "fig6"})
+    for (const auto& w : scene_info(test::scene_file(name)).warnings)
+      EXPECT_EQ(w.find("refuse this scene"), std::string::npos) << name << ": " << w;
 }
 
 }  // namespace

@@ -25,7 +25,9 @@ struct SceneInfo {
   /// The seated pose q*, when it can be computed; else the reason.
   std::optional<SeatedPose> seated;
   std::string seated_unavailable;
-  /// Warnings for the user: defaulted mass, fixels marked off_boundary.
+  /// Warnings for the user: defaulted mass, fixels marked off_boundary, and
+  /// the analyses that refuse the scene (n_c ≠ dof, W_n singular; the
+  /// sustained push needs dof 3 and 3 fixels).
   std::vector<std::string> warnings;
 };
 
