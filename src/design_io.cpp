@@ -113,6 +113,8 @@ std::vector<DesignCandidate> parse_candidates(const Scene& part, const std::stri
 std::vector<DesignCandidate> load_candidates(const Scene& part, const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) throw InputError(path, "", "is a directory, not a candidate file");
+  if (path == "-")  // not standard input: the part may already have used it
+    throw InputError("load_candidates(path)", "-", "must name a candidate file (standard input is not read here)");
   errno = 0;
   std::ifstream in(path);
   if (!in) {

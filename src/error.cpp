@@ -5,10 +5,23 @@
 namespace fixel {
 
 namespace {
+// A message stays readable whatever the input: an exact value of 10,000
+// digits is shown by its ends (InputError::value() keeps all of it).
+// Cuts fall between UTF-8 characters (a continuation byte is 10xxxxxx).
+bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+std::string shortened(const std::string& text, std::size_t head, std::size_t tail) {
+  if (text.size() <= head + tail + 64) return text;
+  std::size_t end = head, start = text.size() - tail;
+  while (end > 0 && continuation(text[end])) --end;
+  while (start < text.size() && continuation(text[start])) ++start;
+  return text.substr(0, end) + "…[" + std::to_string(start - end) + " bytes]…" + text.substr(start);
+}
+
 std::string compose(const std::string& field, const std::string& value, const std::string& reason) {
-  std::string out = field + ":";
-  if (!value.empty()) out += " " + value;
-  if (!reason.empty()) out += " " + reason;
+  std::string out = shortened(field, 200, 40) + ":";
+  if (!value.empty()) out += " " + shortened(value, 120, 40);
+  if (!reason.empty()) out += " " + shortened(reason, 600, 200);
   return out;
 }
 }  // namespace

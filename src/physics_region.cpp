@@ -2,6 +2,7 @@
 // through the engine ("region --validate", docs/physics.md).
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
@@ -50,13 +51,30 @@ std::optional<double> pick_magnitude(const Magnitudes& m, double fallback) {
   return lo > 0 ? 2 * lo : fallback;
 }
 
+// A push wrench computed from the scene that doubles cannot hold: not the
+// user's wrench (push() would blame that), but the scene's numbers.
+void require_finite(const Wrench& w, const Scene& scene, const std::string& field, int curve, const Rational& u,
+                    const std::string& detail) {
+  if (std::isfinite(w.fx) && std::isfinite(w.fy) && std::isfinite(w.m)) return;
+  std::ostringstream shown;
+  shown << "gives the push wrench (" << w.fx << ", " << w.fy << ", " << w.m
+        << "), which doubles cannot hold: the part's size or position is beyond the engine's range (centre of "
+           "mass ≈ ("
+        << to_double(scene.body.p_AoCm_A.x) << ", " << to_double(scene.body.p_AoCm_A.y) << ") m, " << detail << ")";
+  throw SceneError(field, std::to_string(curve) + ":" + to_string(u), shown.str());
+}
+
 }  // namespace
 
 Wrench push_wrench_at(const Scene& scene, int curve, const Rational& u, const Pose& pose, const std::string& field) {
   const Contact c = contact_at(scene, curve, u, field);
   const double cs = std::cos(pose.theta), sn = std::sin(pose.theta);
   // A rotation turns force and lever arm alike, so the moment is unchanged.
-  return {cs * c.nx - sn * c.ny, sn * c.nx + cs * c.ny, c.r_cross_n};
+  const Wrench w{cs * c.nx - sn * c.ny, sn * c.nx + cs * c.ny, c.r_cross_n};
+  std::ostringstream rotation;
+  rotation << "seat rotation " << pose.theta << " rad";
+  require_finite(w, scene, field, curve, u, rotation.str());
+  return w;
 }
 
 CurvePoint parse_curve_point(const Scene& scene, const std::string& text, const std::string& field) {
@@ -85,7 +103,11 @@ PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rat
     const double t = tau.value_or(apex);
     const Contact c = contact_at(scene, iv.curve, u, "interval");
     // The impulse τ (d, r ⊗ d) delivered as the constant force p / h.
-    return Wrench{t * c.nx / h, t * c.ny / h, t * c.r_cross_n / h};
+    const Wrench w{t * c.nx / h, t * c.ny / h, t * c.r_cross_n / h};
+    std::ostringstream magnitude;
+    magnitude << "impulse magnitude " << t << " N·s, h = " << h << " s";
+    require_finite(w, scene, "body", iv.curve, u, magnitude.str());
+    return w;
   };
 }
 
@@ -93,7 +115,8 @@ PushModel seated_push_model(const Scene& scene, double force) {
   const auto q = seated_pose(scene).approx;
   const Pose pose{q[0], q[1], q[2]};
   return [&scene, pose, force](const RegionInterval& iv, const Rational& u) {
-    const Wrench w = push_wrench_at(scene, iv.curve, u, pose, "interval");
+    const Wrench w =
+        push_wrench_at(scene, iv.curve, u, pose, "body");  // a push the validation chose: the body overflows
     return Wrench{force * w.fx, force * w.fy, force * w.m};
   };
 }

@@ -155,11 +155,17 @@ Vec2 parse_normal(const json& v, const std::string& path, bool& from_boundary) {
     // Niven: the only rational angles in degrees with rational sine and
     // cosine are the multiples of 90°.
     const Rational quarter = deg / 90;
-    if (boost::multiprecision::denominator(quarter) != 1)
+    if (boost::multiprecision::denominator(quarter) != 1) {
+      // The hint from deg mod 360, exactly: 1e400 degrees has no double.
+      const Rational turns = deg / 360;
+      Rational reduced =
+          deg - 360 * Rational(boost::multiprecision::numerator(turns) / boost::multiprecision::denominator(turns));
+      if (reduced < 0) reduced += 360;
       throw SceneError(path + ".degrees", to_string(deg),
                        "is not an exact direction: a rational angle in degrees has rational cosine and sine only at "
                        "multiples of 90°; " +
-                           suggest_unit(to_double(deg) * M_PI / 180));
+                           suggest_unit(to_double(reduced) * M_PI / 180));
+    }
     const int k = static_cast<int>(((boost::multiprecision::numerator(quarter) % 4) + 4) % 4);
     static const int cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     return {Rational(cs[k][0]), Rational(cs[k][1])};

@@ -126,6 +126,9 @@ expect 2 'The following argument was not expected: --bogus' -- "$fixel" seat "$s
 expect 2 'fixel: error: The following argument was not expected: --bogus' -- "$fixel" seat "$src/data/scenes/example2.json" --bogus
 expect 2 'fixel: error: --max-seconds: 0 must be a positive number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds 0
 expect 2 'fixel: error: --max-seconds: abc is not a number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds abc
+expect 2 'fixel: error: --max-seconds: 0x10 is not a decimal number of seconds' -- "$fixel" region "$src/data/scenes/polygon.json" --max-seconds 0x10
+expect 2 'SCENE: - is given twice: standard input can be read only once' -- bash -c "\"$fixel\" seat - - < \"$src/data/scenes/polygon.json\""
+expect 2 '--candidates: - must name a candidate file' -- "$fixel" design "$src/data/scenes/polygon.json" --candidates -
 # A limit past what the clock can hold is no limit (1e10 s once stopped the run before it began).
 expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --json --max-seconds 1e10
 expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --json --max-seconds inf
@@ -217,6 +220,16 @@ sevens=$(printf '7%.0s' $(seq 20000))
 sed "s|\"gap\": \"1/10\"|\"gap\": \"1/$sevens\"|" "$src/data/scenes/polygon.json" > "$tmp/long_gap.json"
 expect 4 'sustained set J: time limit reached after' -- "$fixel" seat "$tmp/long_gap.json" --sustained --max-seconds 1 --quiet
 expect 4 'sustained set J: time limit reached after' -- "$fixel" region "$tmp/long_gap.json" --push sustained --max-seconds 1 --quiet
+# simulate's count of step 1's outcomes, stopped, is simulate's stop (it said "solutions").
+sed "s|\"gap\": \"1/10\"|\"gap\": \"1/$(printf '7%.0s' $(seq 12000))\"|" "$src/data/scenes/example2.json" > "$tmp/long_ex2.json"
+expect 4 'fixel: stopped: simulate: ' -- "$fixel" simulate "$tmp/long_ex2.json" --impulse -1,-1,-1 --max-seconds 1 --quiet
+# Errors name the scene's field, not an option the user did not give, and show long values by their ends.
+sed 's|"normal": \["1", "0"\]|"normal": {"degrees": "1e400"}|' "$src/data/scenes/example2.json" > "$tmp/deg.json"
+expect 2 'fixels[0].normal.degrees: 1000000000' -- "$fixel" seat "$tmp/deg.json"
+expect 2 ' bytes]…' -- "$fixel" seat "$tmp/deg.json"
+sed 's|"dof": 3,|"dof": 3, "mass": "1", "inertia": "1", "center_of_mass": ["1e310", "0"],|' "$src/data/scenes/polygon.json" > "$tmp/far.json"
+expect 2 '--at: 0:1/2 gives the push wrench' -- "$fixel" push "$tmp/far.json" --at 0:1/2
+expect 2 'fixel: error: body: 0:' -- "$fixel" region "$tmp/far.json" --push sustained --validate 1 --quiet
 # (One SIGINT: a second one ends the process at once, and one exact step here takes up to a second.)
 "$fixel" seat "$tmp/long_gap.json" --sustained --quiet --max-seconds 60 > "$tmp/int_j.out" 2>&1 &
 pid=$!; sleep 1; kill -INT "$pid"

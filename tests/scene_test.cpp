@@ -331,6 +331,23 @@ GTEST_TEST(Scene, NormalInDegreesIsExactOnlyAtMultiplesOfNinety) {
     EXPECT_EQ(what.rfind("fixels[1].normal.degrees: 30 is not an exact direction", 0), 0u) << what;
     EXPECT_NE(what.find("the nearest exact unit normal (within 1e-9 rad) is"), std::string::npos) << what;
   }
+  // 10^400 degrees has no double: its hint is 10^400 mod 360 = 280 degrees'
+  // (10^400 is 0 mod 40 and 1 mod 9), and -10^400's is 80 degrees'. It said
+  // "radians: inf must be finite".
+  auto reason = [](const std::string& degrees) {
+    try {
+      parse_scene(square_with(R"({"point": ["2", "1/2"], "normal": {"degrees": ")" + degrees +
+                              R"("}, "mu": "0", "gap": "0"})"));
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.field(), "fixels[1].normal.degrees");
+      const std::string what = e.what();
+      return what.substr(what.find(" is not an exact direction"));
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(reason("1e400"), reason("280"));
+  EXPECT_EQ(reason("-1e400"), reason("80"));
+  EXPECT_NE(reason("280"), reason("80"));
 }
 
 // Loading polls a RunControl (task "load"): progress through the points,

@@ -24,7 +24,17 @@ int run_simulate(const ImpulseArgs& a) {
   const Scene scene = read_scene(a.scene_path);
   const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   const auto sim = simulate(scene, {p}, a.steps, run_control());
-  const OutcomeCount first = count_outcomes(enumerate_outcomes(scene, p, run_control()));
+  // Step 1's outcomes, for the report's count: a stop there is simulate's.
+  OutcomeCount first;
+  try {
+    first = count_outcomes(enumerate_outcomes(scene, p, run_control()));
+  } catch (const StoppedError& e) {
+    const std::string how = e.reason() == StopReason::kInterrupted ? "interrupted" : "time limit reached";
+    throw StoppedError(e.reason(),
+                       "simulate: " + how + " after its " + std::to_string(a.steps) +
+                           " step(s), while counting step 1's outcomes (" + e.what() + ")",
+                       e.done(), e.total());
+  }
   end_progress();
   std::cout << (a.json ? simulation_json(scene, sim, &first) : simulation_text(scene, sim, &first));
   return 0;

@@ -16,7 +16,7 @@ namespace {
 Scene read_scene_polled(const std::string& path) {
   if (path != "-") return load_scene(path, run_control());
   static bool consumed = false;
-  if (consumed) throw InputError("scene", "-", "standard input can be read only once");
+  if (consumed) throw InputError("SCENE", "-", "is given twice: standard input can be read only once");
   consumed = true;
   return read_scene(std::cin, "stdin", run_control());
 }
@@ -103,7 +103,7 @@ int run_batch(const std::vector<std::string>& paths, bool json, const std::funct
       std::cout << "== " << path << "\n";
       if (error.empty())
         std::cout << output;
-      else if (error.rfind(path + ":", 0) == 0)  // a file error names the path already
+      else if (error.rfind(path + ":", 0) == 0 || path == "-")  // names the path (or "-") already
         std::cerr << "fixel: error: " << error << "\n";
       else
         std::cerr << "fixel: error: " << path << ": " << error << "\n";

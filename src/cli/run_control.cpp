@@ -49,6 +49,8 @@ void add_run_options(CLI::App* cmd, RunOptions& options) {
       ->check(CLI::Validator(
           [](std::string& text) {
             double x = 0;
+            if (text.find_first_of("xXpP") != std::string::npos)  // std::stod reads hex floats: 0x10 is 16
+              return text + " is not a decimal number of seconds";
             try {
               x = std::stod(text);
             } catch (const std::exception&) {

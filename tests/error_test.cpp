@@ -1,0 +1,51 @@
+// InputError's message: "field: value reason", with a value or reason of
+// thousands of characters shown by its ends.
+#include "fixel/error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace fixel {
+namespace {
+
+// Whether s is well-formed UTF-8 (lead byte, then its continuation bytes).
+bool valid_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const int n = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : -1;
+    if (n < 0 || i + n >= s.size() + (n == 0 ? 1 : 0)) return false;
+    for (int k = 1; k <= n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+    i += n + 1;
+  }
+  return true;
+}
+
+GTEST_TEST(InputError, AShortMessageIsFieldValueAndReason) {
+  EXPECT_STREQ(InputError("fixels[0].gap", "-1", "must be >= 0").what(), "fixels[0].gap: -1 must be >= 0");
+  EXPECT_STREQ(InputError("scene.json", "", "cannot be opened").what(), "scene.json: cannot be opened");
+}
+
+GTEST_TEST(InputError, AValueOfThousandsOfDigitsIsShownByItsEndsAndKeptWhole) {
+  const std::string value = "1" + std::string(10000, '0') + "7";
+  const InputError e("body.mass", value, "is too large");
+  const std::string message = e.what();
+  EXPECT_EQ(e.value(), value);
+  EXPECT_LT(message.size(), 300u);
+  EXPECT_EQ(message.rfind("body.mass: 1" + std::string(119, '0') + "…[", 0), 0u) << message;
+  EXPECT_NE(message.find("…[9842 bytes]…" + std::string(39, '0') + "7 is too large"), std::string::npos) << message;
+}
+
+GTEST_TEST(InputError, AShortenedMessageCutsBetweenCharacters) {
+  std::string reason;
+  for (int k = 0; k < 2000; ++k) reason += k % 3 ? "μ" : "≈";  // two- and three-byte characters
+  const std::string message = InputError("x", "", reason).what();
+  EXPECT_LT(message.size(), reason.size());
+  EXPECT_TRUE(valid_utf8(message));
+  EXPECT_TRUE(valid_utf8(reason));  // the check itself accepts what it should
+  EXPECT_FALSE(valid_utf8(reason.substr(0, 1)));
+}
+
+}  // namespace
+}  // namespace fixel
