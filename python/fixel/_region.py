@@ -132,6 +132,30 @@ class Region:
             out[r.status] += r.u1 - r.u0
         return out
 
+    def validate(self, pushes, time=20, max_seconds=None):
+        """The Box2D check of ``fixel region --json --validate N --time T``
+        (docs/physics.md): ``pushes`` pushes at seeded pseudo-random points
+        of every IN interval, each held for ``time`` time steps h, and the
+        region's document with "validation" added, as a dict (per IN
+        interval {"pushes", "seated", ...}, and the total with the seed and
+        the model). A measurement, not a decision: the region's statuses are
+        unchanged. The one-step push uses each interval's certified
+        magnitudes (so not an ``exact=True`` region), the sustained push the
+        unit wrench at the seat. ``max_seconds`` and Ctrl-C as in region."""
+        from . import SeatingSet, SustainedSet
+
+        pushes = whole(pushes, "pushes")
+        if not 1 <= pushes <= 2**31 - 1:
+            raise InputError.make("pushes", str(pushes), "must be 1 to 2147483647")
+        if not isinstance(self.seating, (SeatingSet, SustainedSet)):
+            raise TypeError(f"region.seating: {type(self.seating).__name__} is neither a SeatingSet nor a SustainedSet")
+        t = text(time, "time")
+        doc = stoppable(
+            lambda c: _fixel.validate_region_json(self.scene._impl, self._impl, self.seating._impl, pushes, t, c),
+            max_seconds,
+        )
+        return json.loads(doc)
+
     def to_json(self):
         """The document of `fixel region --json` (same C++ writer)."""
         from . import SustainedSet

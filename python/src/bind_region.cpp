@@ -9,6 +9,7 @@
 #include "bindings.h"
 #include "fixel/guaranteed.h"
 #include "fixel/io.h"
+#include "fixel/physics.h"
 #include "fixel/region.h"
 #include "fixel/sustained.h"
 #include "fixel/svg.h"
@@ -133,6 +134,42 @@ void bind_region(py::module_& m) {
         return region_json(checked(scene, "scene"), checked(r, "region"), seat);
       },
       py::arg("scene"), py::arg("region"), py::arg("sustained") = py::none());
+  // `fixel region --json --validate N --time T` of a computed region: its
+  // IN intervals pushed in Box2D (docs/physics.md), as the CLI does.
+  // `seating`: the region's SeatingSet (one-step push) or SustainedSet (J).
+  m.def("validate_region_json", [](const ScenePtr& scene, const RegionPtr& region, const py::object& seating,
+                                   int pushes, const std::string& time, Control* control) {
+    const ControlScope scope(run_control(control));
+    const Scene& s = checked(scene, "scene");
+    const Region& r = checked(region, "region");
+    physics::PushOptions options;
+    options.time = parse_rational(time, "time");
+    if (options.time <= 0) throw InputError("time", time, "must be > 0");
+    if (options.time * options.steps_per_h > physics::kMaxPushSteps)  // the core's limit, named as Python's argument
+      throw InputError("time", time,
+                       "holds each push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +
+                           std::to_string(options.steps_per_h) + " per h)");
+    options.control = run_control(control);
+    if (pushes < 1) throw InputError("pushes", std::to_string(pushes), "must be >= 1");
+    if (r.target == "J") {
+      const SustainedSet& J = seating.cast<const SustainedSet&>();
+      physics::RegionValidation v;
+      {
+        py::gil_scoped_release release;
+        v = physics::validate_region(s, r, physics::seated_push_model(s), pushes, 1, options);
+      }
+      v.model = "sustained push: the unit wrench at q* held for T";  // as the CLI names it
+      return physics::add_validation_json(region_json(s, r, &J.pose), v);
+    }
+    if (r.exact)
+      throw InputError("pushes", std::to_string(pushes),
+                       "needs the certified magnitudes of subdivision: exact=True gives none for the one-step push "
+                       "(use push=\"sustained\", or exact=False)");
+    const SeatingSet& S = seating.cast<const SeatingSet&>();
+    py::gil_scoped_release release;
+    const auto v = physics::validate_region(s, r, physics::one_step_push_model(s, S, r.pusher_mu), pushes, 1, options);
+    return physics::add_validation_json(region_json(s, r), v);
+  });
   m.def("write_region_svg", [](const std::string& path, const ScenePtr& scene, const SeatingPtr& S, const RegionPtr& r,
                                const py::object& G) {
     const GuaranteedSet* g = guaranteed_of(G, S);

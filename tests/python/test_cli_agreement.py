@@ -6,7 +6,7 @@ import pytest
 
 import fixel
 
-from conftest import SCENES, cli_error, cli_json
+from conftest import SCENE_DIR, SCENES, cli_error, cli_json, run_cli
 
 IMPULSES = {"example2.json": "-1,-1,-1", "nonunique.json": "29157/10540,-71119/105400,-1169839/263500"}
 
@@ -174,3 +174,41 @@ def test_every_sustained_row_has_doubles_beside_its_exact_entries():
                 irrational += "sqrt" in exact
                 assert shown == pytest.approx(_q_sqrt_d(exact), rel=1e-12, abs=1e-15)  # display, not a decision
     assert irrational > 0
+
+
+def _without_seconds(doc):
+    doc = dict(doc)
+    doc.pop("stats", None)  # wall time differs between runs
+    return doc
+
+
+@pytest.mark.parametrize(
+    "push, args",
+    [("step", ["--validate", "2", "--time", "10"]), ("sustained", ["--push", "sustained", "--validate", "3"])],
+)
+def test_region_validate_agrees(push, args):
+    # The same engine runs on the same seeded points: the same counts, push for push.
+    scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
+    r = fixel.region(scene, push=push)
+    mine = r.validate(int(args[args.index("--validate") + 1]), time=10 if push == "step" else 20)
+    cli = cli_json("region", SCENE_DIR / "polygon.json", *args, "--quiet")
+    assert _without_seconds(mine) == _without_seconds(cli)
+    assert mine["validation"]["pushes"] > 0
+    assert sum(1 for iv in mine["intervals"] if "validation" in iv) == r.counts()["in"]
+
+
+def test_region_validate_refuses_what_the_cli_refuses():
+    scene = fixel.Scene.load(SCENE_DIR / "example2_rounded.json")
+    r = fixel.region(scene, resolution="1/64")
+    with pytest.raises(fixel.InputError, match="^pushes: 0 must be 1 to 2147483647$"):
+        r.validate(0)
+    with pytest.raises(fixel.InputError) as e:
+        r.validate(1, time=10**9)
+    assert e.value.field == "time"
+    exact = fixel.region(scene, exact=True)
+    with pytest.raises(fixel.InputError, match="needs the certified magnitudes of subdivision"):
+        exact.validate(1)
+    code, _, err = run_cli("region", SCENE_DIR / "example2_rounded.json", "--exact", "--validate", "1")
+    assert code == 2 and "needs the certified magnitudes of subdivision" in err
+    with pytest.raises(fixel.StoppedError, match="^validate: time limit reached after"):
+        r.validate(1000, max_seconds=1e-9)
