@@ -37,6 +37,11 @@ fi
 cmake --build "$tmp/consumer-nocgal" -j 2 > /dev/null
 "$tmp/consumer-nocgal/consumer" | grep -q "impulse (-1, -1, -1) is in S"
 echo "consumer without CGAL's CMake files: configured, built and ran"
+# pkg-config, without CMake: the same program from the installed fixel.pc alone.
+pc_dir=$(dirname "$(find "$tmp/prefix" -name fixel.pc)")
+c++ -std=c++17 -O1 -o "$tmp/consumer-pc" "$src/examples/consumer/main.cpp" $(PKG_CONFIG_PATH="$pc_dir" pkg-config --cflags --libs fixel)
+"$tmp/consumer-pc" | grep -q "impulse (-1, -1, -1) is in S"
+echo "consumer built with pkg-config: ran"
 # The Python package, when built, is installed and importable from the prefix.
 pkg=$(find "$tmp/prefix/lib" -path '*dist-packages/fixel' -type d 2>/dev/null | head -1)
 if [ -n "$pkg" ]; then
