@@ -1,9 +1,11 @@
 // Reports of the physics check: JSON, text and the trajectory SVG.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "fixel/error.h"
@@ -88,7 +90,37 @@ std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r) 
   return out.str();
 }
 
-void write_push_svg(const std::string& path, const Scene& scene, const PushResult& r) {
+namespace {
+
+// The push on the picture: an arrow along its force's line of action at the
+// start, ending where that line enters the part (a finger's contact), or at
+// the line's point nearest the centre of mass when it misses the outline.
+// None for a zero force (a pure moment, said in the caption).
+std::optional<std::array<std::array<double, 2>, 2>> push_arrow(const Wrench& w, double cx, double cy,
+                                                               const std::vector<std::array<double, 2>>& outline,
+                                                               double length) {
+  const double f = std::hypot(w.fx, w.fy);
+  if (!(f > 0) || !std::isfinite(f)) return std::nullopt;
+  const double ux = w.fx / f, uy = w.fy / f;
+  // r0 = m (Fy, −Fx)/|F|²: r0 × F = m, the point of the line nearest c.
+  const double px = cx + w.m * w.fy / (f * f), py = cy - w.m * w.fx / (f * f);
+  double entry = INFINITY;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const auto& a = outline[i];
+    const auto& b = outline[(i + 1) % outline.size()];
+    const double ex = b[0] - a[0], ey = b[1] - a[1], denom = ux * ey - uy * ex;
+    if (denom == 0) continue;
+    const double ax = a[0] - px, ay = a[1] - py;
+    const double t = (ax * ey - ay * ex) / denom, s = (ax * uy - ay * ux) / denom;
+    if (s >= 0 && s <= 1) entry = std::min(entry, t);
+  }
+  const double tip_x = std::isfinite(entry) ? px + entry * ux : px, tip_y = std::isfinite(entry) ? py + entry * uy : py;
+  return std::array<std::array<double, 2>, 2>{{{tip_x - length * ux, tip_y - length * uy}, {tip_x, tip_y}}};
+}
+
+}  // namespace
+
+void write_push_svg(const std::string& path, const Scene& scene, const PushResult& r, const Wrench* w) {
   const PartPolygon poly = part_polygon(scene);
   const double cx = to_double(scene.body.p_AoCm_A.x), cy = to_double(scene.body.p_AoCm_A.y);
   auto place = [&](const Pose& p, const std::array<double, 2>& v) {
@@ -106,8 +138,14 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
   for (const auto& s : r.trajectory)
     for (const auto& v : poly.outline) grow(place(s.pose, v));
   for (const auto& f : fixels) grow(f);
+  std::optional<std::array<std::array<double, 2>, 2>> arrow;
+  if (w) {
+    arrow = push_arrow(*w, cx, cy, poly.outline, 0.2 * std::max({x1 - x0, y1 - y0, 1e-12}));
+    if (arrow)
+      for (const auto& q : *arrow) grow(q);
+  }
   const double W = 640, margin = 20, span = std::max({x1 - x0, y1 - y0, 1e-12});
-  const double k = (W - 2 * margin) / span, H = (y1 - y0) * k + 2 * margin + 76;  // + three caption lines
+  const double k = (W - 2 * margin) / span, H = (y1 - y0) * k + 2 * margin + (w ? 92 : 76);  // + the caption lines
   auto X = [&](double x) { return margin + (x - x0) * k; };
   auto Y = [&](double y) { return margin + (y1 - y) * k; };
   auto outline = [&](const Pose& p, const std::string& style) {
@@ -145,16 +183,36 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
     out << "<circle cx=\"" << X(fixels[i][0]) << "\" cy=\"" << Y(fixels[i][1]) << "\" r=\"3\" fill=\"black\"/>"
         << "<text x=\"" << X(fixels[i][0]) + 5 << "\" y=\"" << Y(fixels[i][1]) - 5 << "\" font-size=\"11\">" << i
         << "</text>\n";
+  if (arrow) {
+    const auto& [tail, tip] = *arrow;
+    const double dx = X(tip[0]) - X(tail[0]), dy = Y(tip[1]) - Y(tail[1]), n = std::hypot(dx, dy);
+    const double ux = dx / n, uy = dy / n, head = 9;
+    out << "<g style=\"stroke:#d81b60;fill:#d81b60\"><title>the push: wrench (" << w->fx << ", " << w->fy << ", "
+        << w->m << ") in the world frame, along its force's line of action</title><line x1=\"" << X(tail[0])
+        << "\" y1=\"" << Y(tail[1]) << "\" x2=\"" << X(tip[0]) << "\" y2=\"" << Y(tip[1])
+        << "\" stroke-width=\"2\"/><polygon points=\"" << X(tip[0]) << "," << Y(tip[1]) << " "
+        << X(tip[0]) - head * ux - 0.5 * head * uy << "," << Y(tip[1]) - head * uy + 0.5 * head * ux << " "
+        << X(tip[0]) - head * ux + 0.5 * head * uy << "," << Y(tip[1]) - head * uy - 0.5 * head * ux << "\"/></g>\n";
+  }
   auto caption = [&](double y) {
     return "<text x=\"" + std::to_string(margin) + "\" y=\"" + std::to_string(y) + "\" font-size=\"12\">";
   };
-  out << caption(H - 50) << scene.name << ": " << to_string(r.outcome);
+  const double first = w ? H - 66 : H - 50;
+  out << caption(first) << scene.name << ": " << to_string(r.outcome);
   if (r.time_to_seat) out << " at t = " << *r.time_to_seat << " s (at rest from then on)";
   out << "; run stopped at " << r.time_end << " s</text>\n";
-  out << caption(H - 34) << r.events.size()
+  out << caption(first + 16) << r.events.size()
       << " contact events at the fixels (black): orange ring: touch, purple ring: leave</text>\n";
-  out << caption(H - 18) << "blue: the part at the start; " << (r.outcome == Outcome::kSeated ? "green" : "red")
+  out << caption(first + 32) << "blue: the part at the start; " << (r.outcome == Outcome::kSeated ? "green" : "red")
       << ": at the end; grey: every few steps; dashed: the centre of mass's path</text>\n";
+  if (w) {
+    if (arrow)
+      out << caption(first + 48) << "magenta: the push (" << w->fx << ", " << w->fy << ", " << w->m
+          << "), along its force's line of action";
+    else
+      out << caption(first + 48) << "the push (" << w->fx << ", " << w->fy << ", " << w->m << ") is a pure moment";
+    out << "</text>\n";
+  }
   out << "</svg>\n";
   internal::write_file(path, "svg(path)", [&](std::ostream& file) { file << out.str(); });
 }

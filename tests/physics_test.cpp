@@ -5,10 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <regex>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "fixel/error.h"
 #include "fixel/progress.h"
@@ -441,6 +446,44 @@ GTEST_TEST(PartPolygon, ALargeOutlineIsSplitIntoConvexPiecesThatTileItExactly) {
   }
   EXPECT_EQ(pieces_area, area(part.outline));
   EXPECT_EQ(area(part.outline), Rational(kTeeth) + Rational(kTeeth, 4));  // by hand: 5000 × 1 plus 5000 half-unit teeth
+}
+
+// The push SVG draws the push: an arrow along the force's line of action,
+// ending where that line enters the part. For F = (1, 0) and moment -1/2 on
+// the square (centre of mass at the origin) the line is y = 1/2 (r × F =
+// -y = m), which enters at the left side's (-1, 1/2): fixel 0's height,
+// 1/20 right of fixel 0 (drawn at x = -21/20).
+GTEST_TEST(Physics, ThePushSvgDrawsTheForceEndingWhereItsLineEntersThePart) {
+  const Scene sq = square();
+  const Wrench w{1, 0, -0.5};
+  const PushResult r = push(sq, w, short_run("1/10"));
+  const std::string path = testing::TempDir() + "fixel_push_arrow.svg";
+  write_push_svg(path, sq, r, &w);
+  std::ifstream in(path);
+  const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      svg, m, std::regex(R"re(<line x1="([-0-9.e]+)" y1="([-0-9.e]+)" x2="([-0-9.e]+)" y2="([-0-9.e]+)")re")));
+  const double x1 = std::stod(m[1]), y1 = std::stod(m[2]), x2 = std::stod(m[3]), y2 = std::stod(m[4]);
+  std::vector<std::array<double, 2>> fixel;  // the fixels' dots, in order
+  const std::regex dot(R"re(<circle cx="([-0-9.e]+)" cy="([-0-9.e]+)" r="3" fill="black"/>)re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), dot); it != std::sregex_iterator(); ++it)
+    fixel.push_back({std::stod((*it)[1]), std::stod((*it)[2])});
+  ASSERT_EQ(fixel.size(), 3u);
+  // The picture maps x and y affinely: fixel 0 is at x = -21/20, fixel 2 at x = 1/2.
+  const double x_at_minus_1 = fixel[0][0] + (fixel[2][0] - fixel[0][0]) * (1.0 / 20) / (31.0 / 20);
+  const double pixel = 1e-3;  // printed with 6 significant digits: display, not a decision
+  EXPECT_NEAR(x2, x_at_minus_1, pixel);
+  EXPECT_NEAR(y2, fixel[0][1], pixel);
+  EXPECT_NEAR(y1, y2, pixel);  // horizontal, pointing right (+x)
+  EXPECT_LT(x1, x2);
+  EXPECT_NE(svg.find("magenta: the push (1, 0, -0.5)"), std::string::npos);
+  const Wrench moment{0, 0, 1};
+  write_push_svg(path, sq, r, &moment);
+  std::ifstream again(path);
+  const std::string pure((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(pure.find("<line"), std::string::npos);
+  EXPECT_NE(pure.find("the push (0, 0, 1) is a pure moment"), std::string::npos);
 }
 
 }  // namespace

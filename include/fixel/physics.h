@@ -207,9 +207,11 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
 std::string push_json(const Scene& scene, const Wrench& w, const PushResult& r);
 /// The same as a readable report.
 std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r);
-/// Draws the trajectory: ghost outlines, the fixels, contact events.
-/// Throws InputError if the file cannot be written.
-void write_push_svg(const std::string& path, const Scene& scene, const PushResult& r);
+/// Draws the trajectory: ghost outlines, the fixels, contact events, and
+/// with `w` the push: an arrow along its force's line of action at the
+/// start, ending where that line enters the part. Throws InputError if the
+/// file cannot be written.
+void write_push_svg(const std::string& path, const Scene& scene, const PushResult& r, const Wrench* w = nullptr);
 
 /// Adds "validation" to a region JSON document (from region_json): per IN
 /// interval {"pushes", "seated"}, and a total with the seed and engine step.

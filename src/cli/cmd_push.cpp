@@ -40,7 +40,7 @@ int run_push(const PushArgs& a) {
   const auto r = physics::push(scene, w, push_options);
   std::cout << (a.json ? physics::push_json(scene, w, r) : physics::push_text(scene, w, r));
   if (!a.svg_path.empty()) {
-    physics::write_push_svg(a.svg_path, scene, r);
+    physics::write_push_svg(a.svg_path, scene, r, &w);
     if (!a.json) std::cout << "wrote " << a.svg_path << "\n";
   }
   return 0;
