@@ -51,13 +51,17 @@ ordered curve(const Curve& c) {
 
 }  // namespace
 
-std::string write_scene(const Scene& s) {
+std::string write_scene(const Scene& s, bool with_derived) {
   ordered body;
   body["dof"] = s.body.dof;
-  body["mass"] = to_string(s.body.mass);
-  if (s.body.dof == 3) body["inertia"] = to_string(s.body.inertia);
+  // A value the outline gave (uniform density) is left out, so that reading
+  // the file derives it again, exactly, and says so ("from_area", info's
+  // warning on a defaulted mass).
+  const bool outline = s.body.boundary != nullptr && !with_derived;
+  if (!(outline && s.body.mass_from_area)) body["mass"] = to_string(s.body.mass);
+  if (s.body.dof == 3 && !(outline && s.body.inertia_from_area)) body["inertia"] = to_string(s.body.inertia);
   body["velocity"] = texts(s.body.velocity);
-  body["center_of_mass"] = pair(s.body.p_AoCm_A);
+  if (!(outline && s.body.center_of_mass_from_area)) body["center_of_mass"] = pair(s.body.p_AoCm_A);
   if (s.body.boundary) {
     ordered curves = ordered::array();
     for (const auto& c : s.body.boundary->curves) curves.push_back(curve(c));

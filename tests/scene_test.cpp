@@ -414,6 +414,9 @@ void expect_same_scene(const Scene& a, const Scene& b, const std::string& what) 
   EXPECT_EQ(a.body.dof, b.body.dof) << what;
   EXPECT_EQ(a.body.mass, b.body.mass) << what;
   EXPECT_EQ(a.body.inertia, b.body.inertia) << what;
+  EXPECT_EQ(a.body.mass_from_area, b.body.mass_from_area) << what;  // the values the outline gave stay derived
+  EXPECT_EQ(a.body.inertia_from_area, b.body.inertia_from_area) << what;
+  EXPECT_EQ(a.body.center_of_mass_from_area, b.body.center_of_mass_from_area) << what;
   EXPECT_EQ(a.body.velocity, b.body.velocity) << what;
   EXPECT_TRUE(same(a.body.p_AoCm_A, b.body.p_AoCm_A)) << what;
   ASSERT_EQ(a.body.boundary == nullptr, b.body.boundary == nullptr) << what;
@@ -450,6 +453,17 @@ GTEST_TEST(WriteScene, EveryBundledSceneReadsBackTheSameAndWritesTheSameText) {
     expect_same_scene(scene, again, name);
     EXPECT_EQ(write_scene(again), text) << name;
   }
+  // polygon gives no mass, inertia or centre of mass: the text leaves them
+  // out (the reader derives them again), as the bundled file does.
+  const std::string polygon = write_scene(test::scene_file("polygon"));
+  for (const char* key : {"\"mass\"", "\"inertia\"", "\"center_of_mass\""})
+    EXPECT_EQ(polygon.find(key), std::string::npos) << key;
+  EXPECT_NE(write_scene(test::scene_file("example2")).find("\"mass\""), std::string::npos);  // given there
+  // with_derived writes them out: the same values, now as given.
+  const Scene explicit_values = parse_scene(write_scene(test::scene_file("polygon"), true));
+  EXPECT_EQ(explicit_values.body.mass, test::scene_file("polygon").body.mass);
+  EXPECT_EQ(explicit_values.body.inertia, test::scene_file("polygon").body.inertia);
+  EXPECT_FALSE(explicit_values.body.mass_from_area);
 }
 
 // Friction intervals, off_boundary, a velocity and b0 survive the trip (the

@@ -34,12 +34,13 @@ constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;
 Scene read_scene(std::istream& in, const std::string& source, RunControl* control = nullptr);
 
 /// The scene in the scene-file format, as indented JSON text: every field
-/// written, derived ones included (mass, inertia and centre of mass from
-/// the outline, and the defaults), every number an exact string, friction
-/// intervals as ["lo", "hi"]. parse_scene of it gives back the same values
-/// (only the flags saying which were derived from the outline are not
-/// kept). Invalid UTF-8 in a name or description set in code becomes U+FFFD.
-std::string write_scene(const Scene& scene);
+/// written (the defaults included), every number an exact string, friction
+/// intervals as ["lo", "hi"]. The mass, inertia and centre of mass that the
+/// outline gave (uniform density) are left out, so that parse_scene derives
+/// them again, exactly, and keeps the flags saying so; with
+/// `with_derived` they are written too (the values again, the flags not).
+/// Invalid UTF-8 in a name or description set in code becomes U+FFFD.
+std::string write_scene(const Scene& scene, bool with_derived = false);
 
 /// Writes write_scene(scene) to the file `path`: first to a temporary file
 /// beside it, then renamed over it, so an error leaves any earlier file

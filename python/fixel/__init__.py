@@ -75,11 +75,12 @@ class Scene:
         friction intervals as ["lo", "hi"], derived values (mass, inertia,
         centre of mass from the outline) written out: Scene.from_dict of it
         gives the same scene."""
-        return json.loads(self._impl.to_json())
+        return json.loads(self._impl.to_json(True))
 
     def save(self, path):
-        """Writes the scene file (`to_dict`'s content, as `fixel design
-        --scene-out` writes one): to a temporary file beside `path`, then
+        """Writes the scene file (`to_dict`'s content, less the mass
+        properties the outline gave, which reading derives again; as `fixel
+        design --scene-out` writes one): to a temporary file beside `path`, then
         renamed over it, so an error leaves an earlier file whole.
         InputError naming the path when it cannot be written."""
         if not isinstance(path, (str, os.PathLike)):
@@ -102,8 +103,10 @@ class Scene:
         return fracs(_fixel.curve_range(self._impl, whole(k, "k")))
 
     def __reduce__(self):
-        # Pickled as its exact dict (for multiprocessing over many layouts).
-        return (_scene_from_dict, (self.to_dict(), self.name))
+        # Pickled as its exact dict (for multiprocessing over many layouts),
+        # the outline's mass properties left to be derived again (so they
+        # stay marked derived).
+        return (_scene_from_dict, (json.loads(self._impl.to_json(False)), self.name))
 
     def __repr__(self):
         return f"<fixel.Scene {self.name!r} dof={self.dof} contacts={self.num_contacts}>"

@@ -36,8 +36,11 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("has_boundary", [](const Scene& s) { return s.body.boundary != nullptr; })
       .def_property_readonly("num_curves",
                              [](const Scene& s) { return s.body.boundary ? s.body.boundary->curves.size() : 0; })
-      // The scene file's text (write_scene): fixel.Scene.to_dict parses it.
-      .def("to_json", [](const Scene& s) { return write_scene(s); });
+      // The scene file's text (write_scene): fixel.Scene.to_dict parses it
+      // (with_derived: the outline's mass properties written out too).
+      .def(
+          "to_json", [](const Scene& s, bool with_derived) { return write_scene(s, with_derived); },
+          py::arg("with_derived") = true);
   m.def(
       "save_scene",
       [](const Scene& s, const std::string& path) {

@@ -83,7 +83,12 @@ def test_design_scene_is_the_scene_the_cli_writes(tmp_path, polygon_candidates):
     out = tmp_path / "best.json"
     cli_json("design", SCENE_DIR / "polygon.json", "--candidates", path, "--resolution", "1/32", "--scene-out", out)
     d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, **SMALL)
-    assert fixel.design_scene(SCENE_DIR / "polygon.json", d).to_dict() == json.loads(out.read_text())
+    scene = fixel.design_scene(SCENE_DIR / "polygon.json", d)
+    scene.save(tmp_path / "mine.json")
+    assert (tmp_path / "mine.json").read_text() == out.read_text()  # the same file, byte for byte
+    # which reads back as the same scene (the outline's mass properties derived again)
+    assert fixel.Scene.load(out).to_dict() == scene.to_dict()
+    assert "mass" not in json.loads(out.read_text())["body"]
 
 
 def test_design_scene_refuses_a_rank_it_does_not_have():
