@@ -223,6 +223,9 @@ class GuaranteedSet:
         """Exact membership: every one-step outcome at impulse p seats the part."""
         return self._impl.contains(vector(p, "p"))
 
+    def __reduce__(self):
+        return (_guaranteed_from, (self.seating,))  # recomputed exactly on unpickling
+
     def __contains__(self, p):
         return self.contains(p)
 
@@ -232,6 +235,10 @@ class GuaranteedSet:
     def lost_fraction(self, grid=6):
         """Fraction of sample points of S that are not in G (exact)."""
         return frac(self._impl.lost_fraction(whole(grid, "grid")))
+
+
+def _guaranteed_from(S):
+    return guaranteed_set(S.scene, S)
 
 
 def guaranteed_set(scene, seating=None, progress=None, max_seconds=None):
@@ -361,6 +368,9 @@ class SustainedSet:
         """Exact membership of the world-frame wrench w in J."""
         return self.why_not(w) == ""
 
+    def __reduce__(self):
+        return (sustained_set, (self.scene,))  # recomputed exactly on unpickling
+
     def __contains__(self, w):
         return self.contains(w)
 
@@ -466,6 +476,9 @@ class ApproachSet:
     def __contains__(self, w):
         return self.contains(w)
 
+    def __reduce__(self):
+        return (_approach_from, (self.J,))  # recomputed exactly on unpickling (J with it)
+
     def __repr__(self):
         if not self.decided:
             state = "undecided"
@@ -477,6 +490,10 @@ class ApproachSet:
         if frame not in ("world", "part"):
             raise InputError.make("frame", repr(frame), 'must be "world" or "part"')
         return self._impl.why_not(vector(w, "wrench"), frame == "part")
+
+
+def _approach_from(J):
+    return approach_set(J.scene, J)
 
 
 def approach_set(scene, sustained=None, max_seconds=None):

@@ -263,6 +263,26 @@ def test_pickle_round_trip(example2):
     S = fixel.seating_set(example2)
     T = pickle.loads(pickle.dumps(S))
     assert T.halfspaces == S.halfspaces and T.scene.to_dict() == example2.to_dict()
+    G = fixel.guaranteed_set(example2, S)
+    H = pickle.loads(pickle.dumps(G))
+    assert H.num_pieces == G.num_pieces and H.non_seating == G.non_seating
+    for p in ([-1, -1, -1], [1, 1, 1], [F(29157, 10540), F(-71119, 105400), -1]):
+        assert H.contains(p) == G.contains(p)
+
+
+def test_sustained_and_approach_sets_pickle_as_the_same_exact_sets(polygon):
+    import pickle
+
+    J = fixel.sustained_set(polygon)
+    A = fixel.approach_set(polygon, J)
+    K = pickle.loads(pickle.dumps(J))
+    B = pickle.loads(pickle.dumps(A))
+    assert K.cones == J.cones and K.seated_pose == J.seated_pose and K.mu == J.mu
+    assert (B.decided, B.t_star, B.on_edges, B.empty) == (A.decided, A.t_star, A.on_edges, A.empty)
+    assert B.J.cones == J.cones
+    for w in ([-1, -1, 0], [0, -1, 0], [1, 0, 0], [-1, -2, F(1, 3)]):
+        assert K.why_not(w) == J.why_not(w) and B.why_not(w) == A.why_not(w)
+    assert any(J.contains(w) for w in ([-1, -1, 0], [0, -1, 0]))  # the comparison sees members too
 
 
 def test_sustained_set_agrees_with_the_cli_and_decides_exactly():
