@@ -16,6 +16,7 @@
 #include "fixel/internal/polynomial.h"
 #include "fixel/internal/sustained_core.h"
 #include "fixel/internal/sustained_data.h"
+#include "fixel/progress.h"
 #include "fixel/region_target.h"
 
 namespace fixel {
@@ -40,6 +41,7 @@ V neg(const V& v) { return {-v[0], -v[1], -v[2]}; }
 void add_rotated(std::vector<Data<Q2>::Jam>& jams, const std::array<int, 2>& fixels,
                  const std::vector<std::array<Rational, 3>>& gens, const std::vector<std::array<Rational, 3>>& rows,
                  const Q2& cs, const Q2& sn) {
+  poll_exact_step();  // products in Q(√d): on long numbers, seconds per cone
   Data<Q2>::Jam jam;
   jam.fixels = fixels;
   for (const auto& g : gens) jam.gens.push_back(neg(to_seat(cs, sn, {Q2(g[0]), Q2(g[1]), Q2(g[2])})));
@@ -65,6 +67,7 @@ void add_jam(std::vector<Data<Q2>::Jam>& jams, const std::array<int, 2>& fixels,
 }  // namespace internal
 
 std::unique_ptr<RegionTarget> approach_target(const ApproachSet& A) {
+  const internal::ExactTask task("approach-aware J' (its region target)");
   using internal::Q2;
   using internal::V;
   internal::require_decided(A);

@@ -209,6 +209,7 @@ std::vector<A3<Q2>> rays_of(const std::vector<A3<Q2>>& rows) {
   std::vector<A3<Q2>> out;
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = i + 1; j < rows.size(); ++j) {
+      poll_exact_step();  // as in the generic rays_of (cone3.h)
       A3<FI> c_enclosed;
       bool nonzero = false;
       {

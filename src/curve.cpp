@@ -245,6 +245,7 @@ std::vector<BezierPiece> Curve::bezier_pieces(int curve_index) const {
           {curve_index, Rational(static_cast<int>(i)), Rational(static_cast<int>(i + 1)), {points[i], points[i + 1]}});
     return out;
   }
+  const internal::ExactTask task("a B-spline's Bezier pieces");
   const int p = degree, n = static_cast<int>(points.size());
   for (int j = p; j < n; ++j) {
     if (!(knots[j] < knots[j + 1])) continue;  // empty span
@@ -297,7 +298,8 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces, RunContro
   const long total = static_cast<long>(pieces.size());
   long done = 0;
   for (const auto& piece : pieces) {
-    if (done++ % 256 == 0) poll(control, "load", done - 1, total, "pieces integrated (mass properties)");
+    // Every piece: a high-degree B-spline's piece on long numbers takes seconds.
+    poll(control, "load", done++, total, "pieces integrated (mass properties)");
     if (piece.control.size() == 2) {
       const Rational &x0 = piece.control[0].x, &y0 = piece.control[0].y;
       const Rational &x1 = piece.control[1].x, &y1 = piece.control[1].y;
@@ -337,7 +339,7 @@ MassProperties mass_properties(const std::vector<BezierPiece>& pieces, RunContro
 Boundary make_boundary(std::vector<Curve> curves, const std::string& path, RunControl* control) {
   if (curves.empty()) throw SceneError(path, "[]", "must contain at least one curve");
   const internal::ControlScopeIfGiven scope(control);  // one curve's Bézier pieces poll it
-  const internal::ExactTask task("load (one curve's Bezier pieces)");
+  const internal::ExactTask task("load");
   Boundary b;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const std::string cpath = path + "[" + std::to_string(k) + "]";

@@ -164,8 +164,10 @@ std::vector<Outcome> enumerate_outcomes(const Scene& scene, const VectorQ& p_ext
   std::vector<ModeSystem> families;  // the singular modes holding two or more points
   long total = 1;
   for (int i = 0; i < nc; ++i) total *= 4;
+  const internal::ExactTask task("outcomes of one step");  // for a caller's scope (seat --impulse)
   for (long code = 0; code < total; ++code) {
     poll(control, "solutions", code, total, "contact modes");
+    internal::poll_exact_step();
     const std::vector<ContactMode> modes = contact_modes(code, nc);
     const ModeSystem sys = mode_system(scene, modes, p_ext);
 

@@ -10,7 +10,7 @@ thread_local const RunControl* t_control = nullptr;
 thread_local long t_steps = 0;
 thread_local ControlScope::LastPoll t_last_poll;
 thread_local bool t_loop = false;
-thread_local const char* t_task = "exact step";
+thread_local const char* t_task = "exact arithmetic";
 }  // namespace
 
 void RunControl::note_poll(const char* task, long done, long total, const char* unit) const {
@@ -36,11 +36,11 @@ namespace internal {
 
 void poll_exact_step() {
   if (t_control == nullptr) return;
-  ++t_steps;
   if (t_last_poll.task != nullptr)  // inside a loop that polls: told as its poll
     t_control->check_stop(t_last_poll.task, t_last_poll.done, t_last_poll.total, t_last_poll.unit);
   else
-    t_control->check_stop(t_task, t_steps, 0, "exact steps");
+    t_control->check_stop(t_task, t_steps, 0, "exact steps");  // the steps done before this one
+  ++t_steps;
 }
 
 ExactTask::ExactTask(const char* name) : previous_(t_task), previous_steps_(t_steps) {

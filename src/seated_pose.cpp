@@ -9,6 +9,7 @@
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/polyline_edge.h"
 #include "fixel/internal/quadratic_field.h"
+#include "fixel/progress.h"
 
 namespace fixel {
 
@@ -39,11 +40,18 @@ Q2 sqrt_of(const Rational& r) {
   const Integer p = boost::multiprecision::numerator(r), q = boost::multiprecision::denominator(r);
   Integer m = p * q, k = 1, root;
   if (is_perfect_square(m, root)) return Q2(Rational(root) / Rational(q));
-  for (Integer f = 2; f <= 1000 && f * f <= m; ++f)  // bounded trial division
-    while (m % (f * f) == 0) {
-      m /= f * f;
-      k *= f;
-    }
+  // Bounded trial division; each factor's power at once (mpz_remove), not
+  // one division per power: a decimal's 10^N made N divisions of N digits.
+  Integer rest, power;
+  for (unsigned long f = 2; f <= 1000 && Integer(f) * f <= m; ++f) {
+    internal::poll_exact_step();
+    const Integer factor(f);
+    const mp_bitcnt_t e = mpz_remove(rest.backend().data(), m.backend().data(), factor.backend().data());
+    if (e < 2) continue;
+    mpz_ui_pow_ui(power.backend().data(), f, e / 2);
+    k *= power;
+    m = e % 2 ? rest * f : rest;
+  }
   return Q2(Rational(0), Rational(k) / Rational(q), Rational(m));
 }
 
@@ -104,6 +112,7 @@ std::string QuadraticIrrational::text() const {
 double QuadraticIrrational::approx() const { return internal::approx(*this); }
 
 std::pair<Rational, Rational> internal::bounds(const QuadraticIrrational& x) {
+  poll_exact_step();  // one square root and a few products: on long numbers, seconds
   const Rational pad = Rational(1) / Rational(Integer(1) << 60);
   if (x.b == 0) return {x.a - pad, x.a + pad};
   const Integer p = boost::multiprecision::numerator(x.d), q = boost::multiprecision::denominator(x.d);
@@ -121,6 +130,7 @@ double internal::approx(const QuadraticIrrational& x) {
 }
 
 SeatedPose seated_pose(const Scene& scene) {
+  const internal::ExactTask task("seated pose q*");
   if (!scene.body.boundary)
     throw SceneError("body.boundary", "", "is missing: the seated pose needs the part's outline");
   if (scene.body.dof != 3)

@@ -12,6 +12,7 @@
 #include "fixel/internal/sustained_core.h"
 #include "fixel/internal/sustained_data.h"
 #include "fixel/internal/sustained_filter.h"
+#include "fixel/progress.h"
 #include "fixel/region_target.h"
 #include "fixel/sustained.h"
 
@@ -278,6 +279,7 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
 }  // namespace internal
 
 std::unique_ptr<RegionTarget> sustained_target(const SustainedSet& J) {
+  const internal::ExactTask task("sustained set J (its region target)");
   if (!J.data) throw InputError("J", "", "has no data (default-constructed SustainedSet)");
   return std::make_unique<internal::SustainedTarget>(J.data);
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <random>
 
 #include "fixel/error.h"
@@ -286,7 +288,29 @@ GTEST_TEST(Curve, BSplinePiecesStopInsideACancelledControlScope) {
   EXPECT_NO_THROW(c.bezier_pieces(0));
   const test::CancelledControl cancelled;
   const ControlScope scope(&cancelled.control);
-  EXPECT_EQ(test::stop_message([&] { c.bezier_pieces(0); }).rfind("exact step: interrupted after 1 ", 0), 0u);
+  EXPECT_EQ(
+      test::stop_message([&] { c.bezier_pieces(0); }).rfind("a B-spline's Bezier pieces: interrupted after 0 ", 0), 0u);
 }
+// The mass properties poll their control at every piece: a degree-20
+// B-spline's 40 pieces on long numbers took seconds each, and a poll every
+// 256 pieces let a load run 8-115 s past its limit.
+GTEST_TEST(Curve, MassPropertiesPollEveryPiece) {
+  std::mt19937_64 rng(3);
+  const Curve c = random_bspline(rng, 3, 9, true);
+  const auto pieces = c.bezier_pieces(0);
+  ASSERT_GE(pieces.size(), 3u);
+  RunControl control;
+  control.interval = std::chrono::milliseconds(0);
+  control.start = RunControl::Clock::now() - std::chrono::seconds(1);
+  std::vector<long> done;
+  control.on_progress = [&](const char*, long d, long total, const char*) {
+    EXPECT_EQ(total, static_cast<long>(pieces.size()));
+    done.push_back(d);
+  };
+  mass_properties(pieces, &control);
+  ASSERT_EQ(done.size(), pieces.size());
+  for (std::size_t k = 0; k < done.size(); ++k) EXPECT_EQ(done[k], static_cast<long>(k));
+}
+
 }  // namespace
 }  // namespace fixel

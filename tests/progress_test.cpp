@@ -68,10 +68,10 @@ GTEST_TEST(ControlScope, InsideAScopeAnExactStepStopsWithTheInnermostTaskNamed) 
   const test::CancelledControl c;
   const ControlScope scope(&c.control);
   EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
-            "exact step: interrupted after 1 exact steps; no result");
+            "exact arithmetic: interrupted after 0 exact steps; no result");
   const internal::ExactTask task("building it");
   EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
-            "building it: interrupted after 1 exact steps; no result");
+            "building it: interrupted after 0 exact steps; no result");
 }
 
 GTEST_TEST(ControlScope, APastDeadlineIsATimeLimitStop) {
@@ -145,7 +145,7 @@ GTEST_TEST(ControlScope, AnExactStepInsideALoopThatPollsIsToldAsTheLoopsPoll) {
   const ControlScope later(&control);
   const internal::ExactTask task("sustained set J");
   EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
-            "sustained set J: interrupted after 1 exact steps; no result");
+            "sustained set J: interrupted after 0 exact steps; no result");
 }
 
 GTEST_TEST(ControlScope, OnlyALoopsScopeRecordsItsPolls) {
@@ -154,13 +154,13 @@ GTEST_TEST(ControlScope, OnlyALoopsScopeRecordsItsPolls) {
   const internal::ControlScopeIfGiven scope(&cancelled.control);
   other.poll("elsewhere", 1, 2, "units");  // not the scope's control
   EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
-            "exact step: interrupted after 1 exact steps; no result");
+            "exact arithmetic: interrupted after 0 exact steps; no result");
   RunControl reading;  // a caller's scope (the CLI's): its polls, as a file's reading, name no later stop
   const ControlScope caller(&reading);
   reading.poll("load", 0, 6, "points read");
   reading.cancel = true;
   EXPECT_EQ(test::stop_message([] { internal::poll_exact_step(); }),
-            "exact step: interrupted after 1 exact steps; no result");
+            "exact arithmetic: interrupted after 0 exact steps; no result");
 }
 
 }  // namespace

@@ -496,12 +496,19 @@ GTEST_TEST(SustainedJson, TheSeatDocumentAddsJsKeysToSsOrSaysWhySIsMissing) {
 // Building J polls the calling thread's ControlScope between its exact
 // steps: on numbers of 20,000 digits it took half a minute and ignored
 // --max-seconds.
-GTEST_TEST(SustainedSet, BuildingItStopsInsideACancelledControlScopeNamingJ) {
+GTEST_TEST(SustainedSet, BuildingItStopsInsideACancelledControlScopeNamingTheStep) {
   const Scene polygon = scene_file("polygon");
   EXPECT_EQ(test::stop_message([&] { sustained_set(polygon); }), "(no stop)");
   const test::CancelledControl cancelled;
   const ControlScope scope(&cancelled.control);
-  EXPECT_EQ(test::stop_message([&] { sustained_set(polygon); }).rfind("sustained set J: interrupted after ", 0), 0u);
+  // The seated pose comes first (its square roots and bounds in Q(√d))...
+  EXPECT_EQ(test::stop_message([&] { sustained_set(polygon); }),
+            "seated pose q*: interrupted after 0 exact steps; no result");
+  // ... and with every gap 0 (q* the scene pose, no arithmetic) J's own steps.
+  Scene seated = polygon;
+  for (auto& f : seated.fixels) f.gap = 0;
+  EXPECT_EQ(test::stop_message([&] { sustained_set(seated); }),
+            "sustained set J: interrupted after 0 exact steps; no result");
 }
 }  // namespace
 }  // namespace fixel
