@@ -142,14 +142,7 @@ void bind_region(py::module_& m) {
     const ControlScope scope(run_control(control));
     const Scene& s = checked(scene, "scene");
     const Region& r = checked(region, "region");
-    physics::PushOptions options;
-    options.time = parse_rational(time, "time");
-    if (options.time <= 0) throw InputError("time", time, "must be > 0");
-    if (options.time * options.steps_per_h > physics::kMaxPushSteps)  // the core's limit, named as Python's argument
-      throw InputError("time", time,
-                       "holds each push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +
-                           std::to_string(options.steps_per_h) + " per h)");
-    options.control = run_control(control);
+    const physics::PushOptions options = push_options(time, control);
     if (pushes < 1) throw InputError("pushes", std::to_string(pushes), "must be >= 1");
     if (r.target == "J") {
       const SustainedSet& J = seating.cast<const SustainedSet&>();

@@ -90,14 +90,7 @@ void bind_sustained(py::module_& m) {
                    const std::optional<std::string>& at, const std::string& time, Control* control) {
     const ControlScope scope(run_control(control));  // exact steps inside poll it too
     const Scene& s = checked(scene, "scene");
-    physics::PushOptions options;
-    options.time = parse_rational(time, "time");
-    if (options.time <= 0) throw InputError("time", time, "must be > 0");
-    if (options.time * options.steps_per_h > physics::kMaxPushSteps)  // the core's limit, named as Python's argument
-      throw InputError("time", time,
-                       "holds the push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +
-                           std::to_string(options.steps_per_h) + " per h)");
-    options.control = run_control(control);
+    const physics::PushOptions options = push_options(time, control);
     physics::Wrench w;
     if (at) {
       const auto point = physics::parse_curve_point(s, *at, "at");

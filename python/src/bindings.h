@@ -13,7 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "fixel/error.h"
 #include "fixel/guaranteed.h"
+#include "fixel/physics.h"
 #include "fixel/progress.h"
 #include "fixel/rational.h"
 #include "fixel/region.h"
@@ -53,6 +55,22 @@ struct Control {
 
 /// &control->run, or nullptr for None.
 inline RunControl* run_control(Control* control) { return control ? &control->run : nullptr; }
+
+/// The engine's options for a push held `time` time steps h (Python's
+/// `time` argument, exact text), polling `control`: InputError naming
+/// `time` when it is not > 0 or asks for more engine steps than the core
+/// runs (physics::kMaxPushSteps).
+inline physics::PushOptions push_options(const std::string& time, Control* control) {
+  physics::PushOptions options;
+  options.time = parse_rational(time, "time");
+  if (options.time <= 0) throw InputError("time", time, "must be > 0");
+  if (options.time * options.steps_per_h > physics::kMaxPushSteps)
+    throw InputError("time", time,
+                     "holds a push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +
+                         std::to_string(options.steps_per_h) + " per h)");
+  options.control = run_control(control);
+  return options;
+}
 
 /// G's membership test needs S, so the binding keeps both alive together.
 struct GuaranteedHandle {
