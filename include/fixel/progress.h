@@ -119,9 +119,10 @@ inline void poll(RunControl* control, const char* task, long done, long total, c
 }
 
 /// Makes `control` (or none) the control of the exact steps on the calling
-/// thread that take none of their own, for the life of the scope: building
-/// J and J′ (sustained_set, approach_set) and J′'s wrench tests, one exact
-/// LCP, the Bézier pieces of one B-spline curve. With numbers of thousands
+/// thread that take none of their own, for the life of the scope: the
+/// seated pose, building J and J′ (sustained_set, approach_set) and their
+/// region targets, J′'s wrench tests, one exact LCP, the outcomes of one
+/// impulse, a B-spline curve's Bézier pieces. With numbers of thousands
 /// of digits one such step can take minutes; inside it, cancel and the
 /// deadline are checked (RunControl::check_stop, no progress report) and
 /// end it with StoppedError, e.g. "sustained set J: time limit reached after
