@@ -58,6 +58,10 @@ void write_file(const std::string& path_given, const std::string& field,
       throw InputError(field, path_given, "could not be written completely");
     }
   }
+  // The replacement keeps the earlier file's permissions (a read-only or
+  // group-shared picture stays so); its owner is the writer's, as on any
+  // replacement by rename.
+  if (std::filesystem::exists(status)) std::filesystem::permissions(temporary, status.permissions(), ec);
   std::filesystem::rename(temporary, path, ec);
   if (ec) {
     std::remove(temporary.c_str());

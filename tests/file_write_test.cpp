@@ -63,6 +63,17 @@ GTEST_TEST(WriteFile, AWriteThatFailsHalfWayKeepsTheEarlierFileWhole) {
   EXPECT_FALSE(fs::exists(path + ".fixel-partial"));
 }
 
+GTEST_TEST(WriteFile, ARewrittenFileKeepsItsEarlierPermissions) {
+  const std::string dir = folder("mode");
+  const std::string path = dir + "/a.svg";
+  std::ofstream(path) << "earlier\n";
+  const auto mode = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::group_write;
+  fs::permissions(path, mode);
+  write_file(path, "svg(path)", text);
+  EXPECT_EQ(read(path), "new\n");
+  EXPECT_EQ(fs::status(path).permissions(), mode);
+}
+
 GTEST_TEST(WriteFile, ASymbolicLinkIsWrittenThroughAndStaysALink) {
   const std::string dir = folder("link");
   std::ofstream(dir + "/target.svg") << "earlier\n";
