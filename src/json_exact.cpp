@@ -16,13 +16,14 @@ using json = nlohmann::json;
 // caught (the DOM parser silently keeps the last one).
 class ExactDomBuilder {
  public:
-  explicit ExactDomBuilder(std::string source) : source_(std::move(source)) {}
+  ExactDomBuilder(std::string source, const std::set<std::string>& text_keys)
+      : source_(std::move(source)), text_keys_(text_keys) {}
 
   bool null() { return put(json(nullptr)); }
   bool boolean(bool v) { return put(json(v)); }
-  bool number_integer(json::number_integer_t v) { return put(json(std::to_string(v))); }
-  bool number_unsigned(json::number_unsigned_t v) { return put(json(std::to_string(v))); }
-  bool number_float(json::number_float_t, const json::string_t& raw) { return put(json(raw)); }
+  bool number_integer(json::number_integer_t v) { return number(std::to_string(v)); }
+  bool number_unsigned(json::number_unsigned_t v) { return number(std::to_string(v)); }
+  bool number_float(json::number_float_t, const json::string_t& raw) { return number(raw); }
   bool string(json::string_t& v) { return put(json(v)); }
   bool binary(json::binary_t&) { return put(json(nullptr)); }
   bool start_object(std::size_t) { return open(json::object()); }
@@ -43,6 +44,13 @@ class ExactDomBuilder {
   json result() { return std::move(root_); }
 
  private:
+  // A number becomes its text, so a text field must refuse it here: after
+  // this "name": 5 and "name": "5" look the same.
+  bool number(const std::string& raw) {
+    if (stack_.size() == 1 && stack_.back()->is_object() && text_keys_.count(pending_key_) != 0)
+      throw SceneError(pending_key_, raw, "must be a string, not a number");
+    return put(json(raw));
+  }
   bool put(json value) {
     if (stack_.empty()) {
       root_ = std::move(value);
@@ -81,6 +89,7 @@ class ExactDomBuilder {
 
   static constexpr std::size_t kMaxDepth = 64;
   std::string source_;
+  const std::set<std::string>& text_keys_;
   json root_;
   std::vector<json*> stack_;
   std::vector<std::set<std::string>> keys_;
@@ -89,8 +98,9 @@ class ExactDomBuilder {
 
 }  // namespace
 
-nlohmann::json parse_json_exact(const std::string& text, const std::string& source) {
-  ExactDomBuilder builder(source);
+nlohmann::json parse_json_exact(const std::string& text, const std::string& source,
+                                const std::set<std::string>& text_keys) {
+  ExactDomBuilder builder(source, text_keys);
   // nlohmann's SAX parser keeps its own stack; the builder bounds the depth.
   json::sax_parse(text, &builder, json::input_format_t::json, true, false);
   return builder.result();

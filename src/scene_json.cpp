@@ -234,7 +234,7 @@ int parse_dof(const json& v) {
 
 Scene parse_scene(const std::string& json_text, const std::string& source, RunControl* control) {
   poll(control, "load", 0, 0, "JSON documents parsed");
-  const json root = internal::parse_json_exact(json_text, source);
+  const json root = internal::parse_json_exact(json_text, source, {"name", "description"});
   expect_object(root, "", {"name", "description", "time_step", "body", "fixels", "pusher", "background_impulse"},
                 source);
 

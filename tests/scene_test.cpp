@@ -110,6 +110,17 @@ GTEST_TEST(Scene, RejectsDuplicateKeys) {
                            "scene.json: key \"name\" appears twice in one object");
 }
 
+// Numbers are read as their text, so "name": 5 must be refused before it
+// becomes the text "5".
+GTEST_TEST(Scene, RejectsANumberOrOtherNonTextAsTheNameOrDescription) {
+  expect_error<SceneError>(example2_with(R"("name": "example2")", R"("name": 5)"),
+                           "name: 5 must be a string, not a number");
+  expect_error<SceneError>(example2_with(R"("name": "example2")", R"("name": "example2", "description": 1e3)"),
+                           "description: 1e3 must be a string, not a number");
+  expect_error<SceneError>(example2_with(R"("name": "example2")", R"("name": true)"), "name: true must be a string");
+  EXPECT_EQ(parse_scene(example2_with(R"("name": "example2")", R"("name": "5")"), "scene.json").name, "5");
+}
+
 GTEST_TEST(Scene, RejectsMissingFields) {
   expect_error<SceneError>(example2_with(R"("time_step": "1",)", ""), "time_step: is missing");
   expect_error<SceneError>(example2_with(R"("mass": "1", )", ""), "body.mass: is missing");
