@@ -453,25 +453,27 @@ class ApproachSet:
         self.edge_reason = impl.edge_reason
         self.empty = impl.empty if impl.decided else None
 
-    def why_not(self, w, frame="world"):
+    def why_not(self, w, frame="world", max_seconds=None):
         """"" when w is in J', else the reason (as J's, or the pair that can
         hold the part on the way, or the edge a contact leaves). ``frame``:
         "world" (w = (fx, fy, moment), world frame) or "part" (frame B at
         the seat, as a finger's push at a boundary point: the world-frame
-        wrench held on the way is R(θ*)·w, in Q(√d))."""
-        return self._why_not(w, frame)[0]
+        wrench held on the way is R(θ*)·w, in Q(√d)). ``max_seconds`` and
+        Ctrl-C stop the test between its pairs of fixels (StoppedError,
+        KeyboardInterrupt); one pair's root isolation is not interrupted."""
+        return self._why_not(w, frame, max_seconds)[0]
 
-    def hold(self, w, frame="world"):
+    def hold(self, w, frame="world", max_seconds=None):
         """None, or where a pair can hold the part under w on the way:
         {"fixels": (i, j), "theta": rad (display), "t": tan(theta/2) exact
         text or "t_star", "slide": display float for a pair on parallel
-        edges, else None}. ``frame`` as in why_not."""
-        return self._why_not(w, frame)[1]
+        edges, else None}. ``frame`` and ``max_seconds`` as in why_not."""
+        return self._why_not(w, frame, max_seconds)[1]
 
-    def contains(self, w, frame="world"):
-        """Exact membership of w in J' (``frame`` as in why_not);
-        UnsupportedError when J' is undecided for the scene."""
-        return self.why_not(w, frame) == ""
+    def contains(self, w, frame="world", max_seconds=None):
+        """Exact membership of w in J' (``frame`` and ``max_seconds`` as in
+        why_not); UnsupportedError when J' is undecided for the scene."""
+        return self.why_not(w, frame, max_seconds) == ""
 
     def __contains__(self, w):
         return self.contains(w)
@@ -486,10 +488,11 @@ class ApproachSet:
             state = "empty" if self.empty else f"t* = {self.t_star}"
         return f"<fixel.ApproachSet J' of scene {self.scene.name!r}: {state}>"
 
-    def _why_not(self, w, frame):
+    def _why_not(self, w, frame, max_seconds):
         if frame not in ("world", "part"):
             raise InputError.make("frame", repr(frame), 'must be "world" or "part"')
-        return self._impl.why_not(vector(w, "wrench"), frame == "part")
+        v = vector(w, "wrench")
+        return stoppable(lambda c: self._impl.why_not(v, frame == "part", c), max_seconds)
 
 
 def _approach_from(J):

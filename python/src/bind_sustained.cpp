@@ -52,7 +52,8 @@ void bind_sustained(py::module_& m) {
       .def_readonly("empty", &ApproachSet::empty)
       // (why_not, hold): hold is None or {"fixels", "theta", "t", "slide"} ("t" exact text or "t_star").
       // part_frame: w in frame B at the seat (ApproachSet::why_not_part_frame).
-      .def("why_not", [](const ApproachSet& A, const std::vector<std::string>& w, bool part_frame) {
+      .def("why_not", [](const ApproachSet& A, const std::vector<std::string>& w, bool part_frame, Control* control) {
+        const ControlScope scope(run_control(control));  // the wrench's test polls it per pair
         const VectorQ v = exact_vector(w, 3, "wrench");
         ApproachHold hold;
         hold.fixels = {-1, -1};

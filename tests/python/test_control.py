@@ -247,5 +247,17 @@ def test_j_prime_of_a_given_j_stops_at_max_seconds_naming_j_prime(polygon):
     assert fixel.approach_set(polygon, J, max_seconds=60).decided  # a generous limit changes nothing
 
 
+def test_j_prime_membership_of_one_wrench_stops_at_max_seconds_between_pairs(polygon):
+    A = fixel.approach_set(polygon)
+    w = (-1, -1, 0)  # in J': every pair of fixels is tested, so its loop polls
+    assert A.why_not(w) == ""
+    for test in (A.why_not, A.hold, A.contains):
+        with pytest.raises(
+            fixel.StoppedError, match=r"^approach-aware J' \(a wrench's test\): time limit reached after .*; no result$"
+        ):
+            test(w, max_seconds=PAST)
+    assert A.contains(w, max_seconds=60) and A.hold(w, max_seconds=60) is None  # a generous limit changes nothing
+
+
 def test_ctrl_c_stops_one_long_exact_step(long_gap):
     assert _interrupted(lambda: fixel.sustained_set(long_gap, max_seconds=20)) < 10
