@@ -359,6 +359,8 @@ Boundary make_boundary(std::vector<Curve> curves, const std::string& path, RunCo
     }
     b.pieces.insert(b.pieces.end(), pieces.begin(), pieces.end());
   }
+  // Counted as done, so that a stop in the closure check below says so.
+  poll(control, "load", static_cast<long>(curves.size()), static_cast<long>(curves.size()), "curves checked");
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const std::size_t next = (k + 1) % curves.size();
     const Vec2 end = curves[k].point(curves[k].u_end()), start = curves[next].point(curves[next].u_begin());

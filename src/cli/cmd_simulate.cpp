@@ -30,9 +30,14 @@ int run_simulate(const ImpulseArgs& a) {
     first = count_outcomes(enumerate_outcomes(scene, p, run_control()));
   } catch (const StoppedError& e) {
     const std::string how = e.reason() == StopReason::kInterrupted ? "interrupted" : "time limit reached";
+    std::string inner = e.what();
+    const std::string no_result = "; no result";  // said once, at the end
+    if (inner.size() >= no_result.size() &&
+        inner.compare(inner.size() - no_result.size(), no_result.size(), no_result) == 0)
+      inner.resize(inner.size() - no_result.size());
     throw StoppedError(e.reason(),
                        "simulate: " + how + " after its " + std::to_string(a.steps) +
-                           " step(s), while counting step 1's outcomes (" + e.what() + ")",
+                           " step(s), while counting step 1's outcomes (" + inner + ")" + no_result,
                        e.done(), e.total());
   }
   end_progress();
