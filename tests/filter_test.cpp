@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <regex>
 
 #include "../bench/random_parts.h"  // the physics studies' seeded random parts
 #include "filter_test_util.h"
@@ -250,6 +251,74 @@ GTEST_TEST(Filter, SustainedAndGuaranteedSetsOfSeededRandomPartsAreIdenticalJson
   EXPECT_GT(with_j_prime, 0);  // and some J′, so its region ran on a non-empty set
 }
 
+// Every non-integer JSON number replaced by "#": the display values, which
+// are rounded in the caller's rounding mode (exact values are strings).
+std::string display_masked(const std::string& json) {
+  static const std::regex display_number(R"(-?[0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)");
+  std::string out;
+  auto begin = std::sregex_iterator(json.begin(), json.end(), display_number);
+  std::size_t at = 0;
+  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    const std::size_t pos = static_cast<std::size_t>(m.position(0));
+    const bool in_string = std::count(json.begin(), json.begin() + static_cast<std::ptrdiff_t>(pos), '"') % 2 == 1;
+    out += json.substr(at, pos - at);
+    out += (!in_string && (m[1].matched || m[2].matched)) ? std::string("#") : m.str(0);
+    at = pos + m.length(0);
+  }
+  return out + json.substr(at);
+}
+
+// The caller's rounding mode changes no decision and no exact value, and is
+// not changed: the filters set the mode they need and restore the caller's
+// (issue 12: no rounding-mode change may leak). Every analysis that filters
+// runs here under each mode: S and a simulation (Lemke), the region, G's
+// region, J, J' and their regions, and a design's ranking. Display values
+// (JSON numbers with a fraction or exponent) may differ in their last
+// digits, as docs/library.md says; counts and every exact string may not.
+GTEST_TEST(Filter, EveryAnalysisGivesTheSameAnswerUnderEachCallerRoundingModeAndRestoresIt) {
+  const Scene example2 = test::scene_file("example2"), blob = test::scene_file("blob32");
+  const Scene part = test::scene_file("nonunique_part"), polygon = test::scene_file("polygon");
+  auto all = [&] {
+    const SeatingSet S = seating_set(example2);
+    const VectorQ p = test::vec({Rational(-1), Rational(-1), Rational(-1)});
+    std::string out = seat_json(example2, S, seat_report(example2, S, p, nullptr, true)) +
+                      simulation_json(example2, simulate(example2, {p}, 3));
+    RegionOptions o;
+    o.resolution = Rational(1, 256);
+    out += region_json_of(blob, seating_set(blob), o);
+    const SeatingSet S_part = seating_set(part);
+    const GuaranteedSet G = guaranteed_set(part, S_part);
+    RegionOptions og = o;
+    og.guaranteed = &G;
+    out += region_json_of(part, S_part, og);
+    const SustainedSet J = sustained_set(polygon);
+    const ApproachSet A = approach_set(polygon, J);
+    out += masked(sustained_json(polygon, J, std::nullopt, &A, std::nullopt));
+    out += masked(region_json(polygon, compute_region(polygon, *sustained_target(J), o)));
+    out += masked(region_json(polygon, compute_region(polygon, *approach_target(A), o)));
+    DesignOptions d;
+    d.resolution = Rational(1, 32);
+    d.top = 3;
+    d.jobs = 2;
+    out +=
+        masked(design_json(polygon, design(polygon, boundary_candidates(polygon, std::nullopt), d), d, std::nullopt));
+    return out;
+  };
+  const int caller = std::fegetround();
+  const std::string nearest = display_masked(all());
+  EXPECT_NE(nearest.find("\"arc_length\": #"), std::string::npos);  // display values are masked ...
+  EXPECT_NE(nearest.find("\"cone_tests\": "), std::string::npos);   // ... counts are not
+  for (int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
+    ASSERT_EQ(std::fesetround(mode), 0);
+    const std::string under_mode = display_masked(all());
+    EXPECT_EQ(std::fegetround(), mode) << "the caller's mode was changed";
+    std::fesetround(caller);
+    EXPECT_EQ(under_mode, nearest) << "mode " << mode;
+  }
+  EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+}
+
 GTEST_TEST(Filter, SeatingJsonAndSimulationsOfRandomScenesAreIdenticalWithAndWithoutFilters) {
   std::mt19937_64 rng(5);
   int done = 0;
@@ -331,10 +400,51 @@ GTEST_TEST(Filter, OutTestsOfConesMeetingSBetweenTheirGeneratorsAreCertifiedAndA
             << missed_certified << "/" << missed << "\n";
 }
 
-// Region endpoints at dyadic parameters: a polyline whose edge directions
-// are exactly parallel makes every direction-extreme comparison an exact
-// zero; dyadic coordinates are exact in double, so those zeros are
-// certified without the exact path, while thirds need it.
+// Region endpoints exactly at dyadic parameters. The house (a square with
+// a roof) held frictionlessly by B1 = (−1/2, −1), B2 = (1/2, −1) and
+// L = (−1, −1/2): J is the open cone of W_n (its jam cones are faces), and
+// on the right roof u = 2 + t, pushed along d = (−1, −1), −w = W_n λ with
+// λ = (2t, 1 − 2t, 1) (by hand, design_test.cpp's house): IN exactly for t
+// in (0, 1/2). Both ends are subdivision nodes at resolution 1/64, so the
+// cells ending there touch a wrench on the target's boundary, which no
+// enclosure certifies: the exact path must decide them (partial), and
+// IN is [2 + 1/64, 2 + 31/64].
+GTEST_TEST(Filter, ARegionEndExactlyAtADyadicNodeFallsThroughToTheExactPath) {
+  const Scene house = parse_scene(R"({"name": "house", "time_step": "1",
+    "body": {"dof": 3, "mass": "1",
+             "boundary": [{"type": "polyline", "points": [["-1","-1"], ["1","-1"], ["1","0"], ["0","1"], ["-1","0"], ["-1","-1"]]}]},
+    "fixels": [{"point": ["-1/2", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "0"},
+               {"point": ["1/2", "-1"], "normal": ["0", "1"], "mu": "0", "gap": "0"},
+               {"point": ["-1", "-1/2"], "normal": ["1", "0"], "mu": "0", "gap": "0"}],
+    "pusher": {"mu": "0"}})");
+  const SustainedSet J = sustained_set(house);
+  ASSERT_FALSE(J.empty);
+  RegionOptions o;
+  o.resolution = Rational(1, 64);
+  auto region_of = [&] { return compute_region(house, *sustained_target(J), o); };
+  reset_filter_stats();
+  const Region filtered = [&] {
+    ForceExactScope on(false);
+    return region_of();
+  }();
+  EXPECT_GE(filter_stats().at(FilterSite::kRegionTest).fallbacks, 1);
+  std::vector<std::pair<Rational, Rational>> in;
+  for (const auto& r : filtered.intervals)
+    if (r.status == RegionStatus::kIn) in.emplace_back(r.u0, r.u1);
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].first, Rational(129, 64));
+  EXPECT_EQ(in[0].second, Rational(159, 64));
+  const Region exact = [&] {
+    ForceExactScope on(true);
+    return region_of();
+  }();
+  EXPECT_EQ(masked(region_json(house, filtered)), masked(region_json(house, exact)));
+}
+
+// A polyline whose edge directions are exactly parallel makes every
+// direction-extreme comparison an exact zero; dyadic coordinates are exact
+// in double, so those zeros are certified without the exact path, while
+// thirds need it.
 GTEST_TEST(Filter, ParallelDirectionsAreCertifiedWhenDyadicAndFallBackOtherwise) {
   ForceExactScope filtered(false);
   Vec2 first, last;

@@ -57,6 +57,9 @@ GTEST_TEST(LazyPiece, AxisParallelLegsOfWholePiecesAreExactZeros) {
 // The subdivision's lazy pieces: halving enclosures keeps them around the
 // exact control points, and the exact points made from the boundary piece
 // at depth 12 equal those of twelve exact halvings.
+// Rational containment of a double interval: no tolerance.
+bool holds(const internal::FI& x, const Rational& q) { return Rational(x.inf()) <= q && q <= Rational(x.sup()); }
+
 GTEST_TEST(LazyPiece, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
   const BezierPiece root{0, Rational(1, 3), Rational(2), {{0, 0}, {Rational(1, 3), 2}, {3, Rational(5, 7)}, {4, 0}}};
   ForceExactScope filtered(false);
@@ -71,9 +74,8 @@ GTEST_TEST(LazyPiece, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
   }
   ASSERT_EQ(lazy.enclosures().size(), exact.control.size());
   for (std::size_t k = 0; k < exact.control.size(); ++k) {
-    const double x = to_double(exact.control[k].x), y = to_double(exact.control[k].y);
-    EXPECT_TRUE(lazy.enclosures()[k].x.inf() <= x && x <= lazy.enclosures()[k].x.sup()) << k;
-    EXPECT_TRUE(lazy.enclosures()[k].y.inf() <= y && y <= lazy.enclosures()[k].y.sup()) << k;
+    EXPECT_TRUE(holds(lazy.enclosures()[k].x, exact.control[k].x)) << k;
+    EXPECT_TRUE(holds(lazy.enclosures()[k].y, exact.control[k].y)) << k;
   }
   EXPECT_EQ(lazy.u0(), exact.u0);
   EXPECT_EQ(lazy.u1(), exact.u1);
@@ -83,9 +85,6 @@ GTEST_TEST(LazyPiece, LazyPiecesEncloseAndEqualRepeatedExactHalving) {
     EXPECT_EQ(made.control[k].y, exact.control[k].y) << k;
   }
 }
-
-// Rational containment of a double interval: no tolerance.
-bool holds(const internal::FI& x, const Rational& q) { return Rational(x.inf()) <= q && q <= Rational(x.sup()); }
 
 // The legs of a lazy piece are halved on their own (de Casteljau on the
 // hodograph). At depth 20 of a cubic with non-dyadic control points each

@@ -163,9 +163,29 @@ GTEST_TEST(SeatedPose, CertifiedEnclosureOnACurvedEdgeHoldsTheExactSeat) {
   EXPECT_TRUE(holds(q.enclosure[1], Rational(-1, 5)));
   EXPECT_TRUE(holds(q.cos_sin_enclosure[0], Rational(24, 25)));
   EXPECT_TRUE(holds(q.cos_sin_enclosure[1], Rational(7, 25)));
-  // J is computed on the enclosure and agrees with the exact one where it decides.
+  // J is computed on the enclosure and agrees, where it decides, with the
+  // exact J of the polyline twin: the same square (the B-spline edge is the
+  // straight bottom edge), the same fixels and gaps, an exact seat.
   const SustainedSet J = sustained_set(scene);
   EXPECT_FALSE(J.cone.exact);
+  const Scene twin = parse_scene(square_scene("\"0\"", "3/50 3/10 1/50", "-12/25", "-3/10", "33/50"));
+  const SustainedSet J_exact = sustained_set(twin);
+  ASSERT_TRUE(J_exact.cone.exact);
+  std::mt19937_64 rng(11);
+  int decided = 0, in = 0;
+  for (int k = 0; k < 200; ++k) {
+    const VectorQ w =
+        v3(random_rational(rng, -2, 2, 4), random_rational(rng, -2, 2, 4), random_rational(rng, -2, 2, 4));
+    try {
+      const bool member = J.contains(w);
+      EXPECT_EQ(member, J_exact.contains(w)) << w.transpose();
+      ++decided;
+      in += member;
+    } catch (const UnsupportedError&) {  // the enclosure cannot decide this w
+    }
+  }
+  EXPECT_GT(decided, 150);
+  EXPECT_GT(in, 10);
 }
 
 GTEST_TEST(SeatedPose, SaysSoWhenNoSeatIsNearTheScenePose) {
@@ -354,12 +374,51 @@ GTEST_TEST(SustainedSet, PiecesAreDisjointAndTheirUnionIsJ) {
   EXPECT_GT(in, 10);
 }
 
+// Whether fixels i and j can hold the part at rest under w (gaps 0: the
+// scene pose is the seat): −w = Σ a_k g_k, a ≥ 0, over the four edges
+// g = W_n,c ± μ W_t,c of their friction cones, by Carathéodory one triple
+// of edges at a time, each an exact 3×3 solve (independent of J's cones).
+bool pair_holds(const Scene& scene, int i, int j, const Rational& mu, const VectorQ& w) {
+  std::vector<VectorQ> edges;
+  for (int c : {i, j}) {
+    const Vec2 r = scene.lever_arm(c), n = scene.fixels[c].n_A, t = scene.tangent(c);
+    const VectorQ wn = v3(n.x, n.y, r.x * n.y - r.y * n.x), wt = v3(t.x, t.y, r.x * t.y - r.y * t.x);
+    edges.push_back(wn + mu * wt);
+    edges.push_back(wn - mu * wt);
+  }
+  for (int skip = 0; skip < 4; ++skip) {
+    MatrixQ G(3, 3);
+    for (int k = 0, col = 0; k < 4; ++k)
+      if (k != skip) G.col(col++) = edges[k];
+    const auto lu = internal::exact_lu(G);
+    if (!lu.isInvertible()) continue;
+    const VectorQ a = lu.solve(VectorQ(-w));
+    if (a[0] >= 0 && a[1] >= 0 && a[2] >= 0) return true;
+  }
+  return false;
+}
+
 GTEST_TEST(SustainedSet, EmptyWhenAPairHoldsEveryInwardPushAndSaysWhich) {
-  // With high friction the two bottom fixels hold every push that drives
-  // the part into its seat.
-  const SustainedSet J = sustained_set(square("\"3\""));
+  // With μ = 3 the pairs are tested in order (0, 1), (0, 2), (1, 2), and
+  // the first, the left fixel with the left bottom one, already holds
+  // every push that drives the part into its seat: J is empty and says so.
+  const Rational mu(3);
+  const Scene scene = square("\"3\"");
+  const SustainedSet J = sustained_set(scene);
   EXPECT_TRUE(J.empty);
-  EXPECT_FALSE(J.empty_reason.empty());
+  EXPECT_NE(J.empty_reason.find("fixels[0] and fixels[1] with friction"), std::string::npos) << J.empty_reason;
+  // The named pair holds inward pushes, checked on its own friction cones.
+  std::mt19937_64 rng(5);
+  const MatrixQ Wn = normal_matrix(scene);
+  for (int k = 0; k < 100; ++k) {
+    const VectorQ w = random_inward_wrench(rng, Wn);
+    EXPECT_TRUE(pair_holds(scene, 0, 1, mu, w)) << w.transpose();
+  }
+  // With μ = 1/10 the same pair does not hold them all.
+  const Scene low = square();
+  int held = 0;
+  for (int k = 0; k < 100; ++k) held += pair_holds(low, 0, 1, Rational(1, 10), random_inward_wrench(rng, Wn));
+  EXPECT_LT(held, 100);
 }
 
 GTEST_TEST(SustainedSet, CoreWithoutThePublicFormHasTheSameEmptinessAndRegion) {

@@ -58,8 +58,10 @@ def test_the_house_ranks_its_mirror_pair_first_with_equal_exact_scores():
     assert [l.triple for l in d.layouts] == [(0, 1, 2), (0, 1, 3)]
     assert d.layouts[0].score == d.layouts[1].score
     assert isinstance(d.layouts[0].score, Fraction)
-    # By hand: IN only on the right roof for t in (0, 1/2), 1/2 of 5 units of parameter.
-    assert Fraction(1, 2) / 5 - Fraction(4, 64) / 5 <= d.layouts[0].score <= Fraction(1, 10)
+    # By hand: IN only on the right roof for t in (0, 1/2); at resolution 1/64
+    # the cells touching t = 0 and t = 1/2 are partial, so IN is [1/64, 31/64]:
+    # 15/32 of the outline's 5 units of parameter, a score of 3/32.
+    assert d.layouts[0].score == Fraction(3, 32)
     assert d.layouts[0].fixels[2].point == (Fraction(-1), Fraction(-1, 2))
 
 

@@ -1,4 +1,7 @@
-"""Property tests: random exact impulses, membership checked independently."""
+"""Property tests: random exact impulses against the H-form that `fixel seat
+--json` prints (the same core, but evaluated here in Fractions), S of
+Example 2 derived here from the physics, and G's lost fraction recounted by
+enumerating outcomes."""
 
 from fractions import Fraction as F
 
@@ -84,3 +87,27 @@ def test_membership_means_a_seating_outcome(cases, name, lam):
     p = [S.apex[k] + sum(lam[j] * r[k] for j, r in enumerate(S.rays)) for k in range(3)]
     scene = fixel.Scene.load(SCENE_DIR / name)
     assert S.contains(p) == any(o.seated for o in fixel.solutions(scene, p))
+
+
+def test_the_lost_fraction_of_g_is_the_share_of_grid_impulses_with_a_non_seating_outcome():
+    """Second method for G's lost fraction (docs/theory.md, "Lost fraction"):
+    at the 140 grid points apex + t·Σ w_j r_j (w on the simplex grid of step
+    1/6, t in {1/4, 1/2, 1, 2, 4}) enumerate every one-step outcome; the
+    share with a non-seating one must be G.lost_fraction(), and those points
+    exactly the ones G leaves out."""
+    scene = fixel.Scene.load(SCENE_DIR / "nonunique.json")
+    S = fixel.seating_set(scene)
+    G = fixel.guaranteed_set(scene, S)
+    assert len(S.rays) == 3
+    points = lost = 0
+    for k0 in range(7):
+        for k1 in range(7 - k0):
+            w = (F(k0, 6), F(k1, 6), F(6 - k0 - k1, 6))
+            for t in (F(1, 4), F(1, 2), F(1), F(2), F(4)):
+                p = [S.apex[c] + t * sum(w[j] * S.rays[j][c] for j in range(3)) for c in range(3)]
+                every_outcome_seats = all(o.seated for o in fixel.solutions(scene, p))
+                assert G.contains(p) == every_outcome_seats, p
+                points += 1
+                lost += not every_outcome_seats
+    assert points == 140 and 0 < lost < points
+    assert G.lost_fraction() == F(lost, points)
