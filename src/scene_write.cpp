@@ -56,12 +56,20 @@ std::string write_scene(const Scene& s, bool with_derived) {
   body["dof"] = s.body.dof;
   // A value the outline gave (uniform density) is left out, so that reading
   // the file derives it again, exactly, and says so ("from_area", info's
-  // warning on a defaulted mass).
-  const bool outline = s.body.boundary != nullptr && !with_derived;
-  if (!(outline && s.body.mass_from_area)) body["mass"] = to_string(s.body.mass);
-  if (s.body.dof == 3 && !(outline && s.body.inertia_from_area)) body["inertia"] = to_string(s.body.inertia);
-  body["velocity"] = texts(s.body.velocity);
-  if (!(outline && s.body.center_of_mass_from_area)) body["center_of_mass"] = pair(s.body.p_AoCm_A);
+  // warning on a defaulted mass). Only while it still is what reading would
+  // derive: a value set in code after loading (the flags are plain fields)
+  // is written.
+  const Body& b = s.body;
+  const MassProperties* derived = b.boundary != nullptr && !with_derived ? &b.boundary->mass : nullptr;
+  const bool omit_mass = derived && b.mass_from_area && b.mass == derived->area;
+  const bool omit_com = derived && b.center_of_mass_from_area && b.p_AoCm_A.x == derived->centroid.x &&
+                        b.p_AoCm_A.y == derived->centroid.y;
+  const bool omit_inertia = derived && b.dof == 3 && b.inertia_from_area && derived->area != 0 &&
+                            b.inertia == b.mass / derived->area * derived->polar_moment_about(b.p_AoCm_A);
+  if (!omit_mass) body["mass"] = to_string(b.mass);
+  if (b.dof == 3 && !omit_inertia) body["inertia"] = to_string(b.inertia);
+  body["velocity"] = texts(b.velocity);
+  if (!omit_com) body["center_of_mass"] = pair(b.p_AoCm_A);
   if (s.body.boundary) {
     ordered curves = ordered::array();
     for (const auto& c : s.body.boundary->curves) curves.push_back(curve(c));

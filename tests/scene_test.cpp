@@ -477,6 +477,34 @@ GTEST_TEST(WriteScene, EveryBundledSceneReadsBackTheSameAndWritesTheSameText) {
   EXPECT_FALSE(explicit_values.body.mass_from_area);
 }
 
+// The "derived" flags are plain fields: a mass, inertia or centre of mass
+// set in code after loading is written (it was left out, and reading the
+// file gave the outline's values back).
+GTEST_TEST(WriteScene, AMassInertiaOrCentreOfMassSetAfterLoadingIsWrittenNotDerivedAgain) {
+  const Scene loaded = test::scene_file("polygon");
+  ASSERT_TRUE(loaded.body.mass_from_area && loaded.body.inertia_from_area && loaded.body.center_of_mass_from_area);
+  Scene scene = loaded;
+  scene.body.mass = Rational(2);
+  scene.body.inertia = Rational(7, 3);
+  scene.body.p_AoCm_A = {Rational(1, 7), Rational(-1, 9)};
+  const Scene again = parse_scene(write_scene(scene), "edited");
+  EXPECT_EQ(again.body.mass, Rational(2));
+  EXPECT_EQ(again.body.inertia, Rational(7, 3));
+  EXPECT_EQ(again.body.p_AoCm_A.x, Rational(1, 7));
+  EXPECT_EQ(again.body.p_AoCm_A.y, Rational(-1, 9));
+  EXPECT_FALSE(again.body.mass_from_area || again.body.inertia_from_area || again.body.center_of_mass_from_area);
+  // Only the mass changed: the inertia the outline gave for mass 5 is no
+  // longer what reading derives for mass 2, so it is written too; the
+  // centre of mass is still the centroid and stays derived.
+  Scene mass_only = loaded;
+  mass_only.body.mass = Rational(2);
+  const Scene back = parse_scene(write_scene(mass_only), "mass only");
+  EXPECT_EQ(back.body.mass, Rational(2));
+  EXPECT_EQ(back.body.inertia, loaded.body.inertia);
+  EXPECT_FALSE(back.body.inertia_from_area);
+  EXPECT_TRUE(back.body.center_of_mass_from_area);
+}
+
 // Friction intervals, off_boundary, a velocity and b0 survive the trip (the
 // Python dict view once dropped the intervals' upper ends).
 GTEST_TEST(WriteScene, FrictionIntervalsAndEveryOptionalFieldSurvive) {

@@ -37,7 +37,9 @@ Scene read_scene(std::istream& in, const std::string& source, RunControl* contro
 /// written (the defaults included), every number an exact string, friction
 /// intervals as ["lo", "hi"]. The mass, inertia and centre of mass that the
 /// outline gave (uniform density) are left out, so that parse_scene derives
-/// them again, exactly, and keeps the flags saying so; with
+/// them again, exactly, and keeps the flags saying so (a value flagged
+/// derived but no longer what reading would derive, as one set in code
+/// after loading, is written); with
 /// `with_derived` they are written too (the values again, the flags not).
 /// Invalid UTF-8 in a name or description set in code becomes U+FFFD.
 std::string write_scene(const Scene& scene, bool with_derived = false);
