@@ -144,7 +144,7 @@ void bind_region(py::module_& m) {
     const Region& r = checked(region, "region");
     const physics::PushOptions options = push_options(time, control);
     if (pushes < 1) throw InputError("pushes", std::to_string(pushes), "must be >= 1");
-    if (r.target == "J") {
+    if (r.target == "J" || r.target == "J'") {  // J' refines J: the same held push is validated
       const SustainedSet& J = seating.cast<const SustainedSet&>();
       physics::RegionValidation v;
       {

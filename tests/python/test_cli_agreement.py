@@ -183,13 +183,18 @@ def _without_seconds(doc):
 
 
 @pytest.mark.parametrize(
-    "push, args",
-    [("step", ["--validate", "2", "--time", "10"]), ("sustained", ["--push", "sustained", "--validate", "3"])],
+    "push, approach, args",
+    [
+        ("step", False, ["--validate", "2", "--time", "10"]),
+        ("sustained", False, ["--push", "sustained", "--validate", "3"]),
+        ("sustained", True, ["--push", "sustained", "--approach", "--validate", "2"]),
+    ],
+    ids=["step", "sustained", "approach"],
 )
-def test_region_validate_agrees(push, args):
+def test_region_validate_agrees(push, approach, args):
     # The same engine runs on the same seeded points: the same counts, push for push.
     scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
-    r = fixel.region(scene, push=push)
+    r = fixel.region(scene, push=push, approach=approach)
     mine = r.validate(int(args[args.index("--validate") + 1]), time=10 if push == "step" else 20)
     cli = cli_json("region", SCENE_DIR / "polygon.json", *args, "--quiet")
     assert _without_seconds(mine) == _without_seconds(cli)
