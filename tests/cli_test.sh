@@ -364,11 +364,22 @@ for cmd in "region $src/data/scenes/polygon.json" "region $src/data/scenes/polyg
   if [ "$rc" -ne 2 ] || [ -n "$out" ]; then echo "FAIL: $cmd --svg into a missing folder -> exit $rc, stdout '$out'"; fail=1; fi
 done
 expect 2 '--svg: '"$tmp"'/no/x.svg cannot be written: no such folder' -- "$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/no/x.svg"
-# A picture that cannot be written keeps the earlier one whole (the temporary file is blocked here).
+# A picture that cannot be written keeps the earlier one whole (a file-size
+# limit of 8 KiB makes the write fail half-way, as a full disk would).
 "$fixel" region "$src/data/scenes/polygon.json" --svg "$tmp/kept.svg" > /dev/null 2>&1
-cp "$tmp/kept.svg" "$tmp/kept_before.svg"; mkdir "$tmp/kept.svg.fixel-partial"
-expect 2 'kept.svg.fixel-partial cannot be created' -- "$fixel" region "$src/data/scenes/polygon.json" --push sustained --svg "$tmp/kept.svg"
+cp "$tmp/kept.svg" "$tmp/kept_before.svg"
+out=$( (trap '' XFSZ; ulimit -f 8; "$fixel" region "$src/data/scenes/polygon.json" --push sustained --svg "$tmp/kept.svg") 2>&1 >/dev/null); rc=$?
+case "$out" in
+  *"kept.svg could not be written completely (File too large)"*) [ "$rc" -eq 2 ] || { echo "FAIL: a failed --svg exited $rc"; fail=1; } ;;
+  *) echo "FAIL: a failed --svg said: $out (exit $rc)"; fail=1 ;;
+esac
 cmp -s "$tmp/kept.svg" "$tmp/kept_before.svg" || { echo "FAIL: a failed --svg changed the earlier picture"; fail=1; }
+ls -A "$tmp" | grep -q '^\.fixel-' && { echo "FAIL: a failed --svg left its temporary file"; fail=1; }
+# /dev/stdout is the stream itself: appended to a log, it keeps the log and the report.
+echo KEEP > "$tmp/log.txt"
+"$fixel" seat "$src/data/scenes/example2.json" --svg /dev/stdout >> "$tmp/log.txt" 2>/dev/null
+{ grep -q '^KEEP$' "$tmp/log.txt" && grep -q '<svg' "$tmp/log.txt" && grep -q 'Seating set' "$tmp/log.txt"; } ||
+  { echo "FAIL: --svg /dev/stdout >> log lost the log, the picture or the report"; fail=1; }
 
 # Scene checks (issue 16 §4): fixels on the outline, friendlier normals, info, stdin, batches, b0.
 python3 - "$src/data/scenes/polygon.json" "$tmp" <<'PY'
@@ -586,7 +597,7 @@ if [ -w /dev/full ] && [ -c /dev/full ]; then
 fi
 expect 2 'is larger than 256 MiB' -- "$fixel" info /dev/zero
 mkfifo "$tmp/fifo"
-expect 2 '--scene-out: '"$tmp"'/fifo cannot be written: it exists and is not a regular file' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --scene-out "$tmp/fifo"
+expect 2 '--scene-out: '"$tmp"'/fifo cannot be written: it is not a regular file (a FIFO, device or stream)' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --scene-out "$tmp/fifo"
 sed 's/"time_step": "1"/"time_step": "1e-400"/' "$src/data/scenes/polygon.json" > "$tmp/tiny_h.json"
 expect 2 'time_step: 1/10000000000000000000000000000000000000... is too small for the engine' -- "$fixel" push "$tmp/tiny_h.json" --at 0:1/2
 python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); d["body"]["center_of_mass"]=["1e308","-1e308"]; json.dump(d,open(sys.argv[2],"w"))' "$src/data/scenes/polygon.json" "$tmp/com308.json"

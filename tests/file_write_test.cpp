@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -104,7 +106,8 @@ GTEST_TEST(WriteFile, ADeviceOrFifoIsWrittenDirectlyOrRefused) {
       write_file("/dev/full", "svg(path)", text);
       ADD_FAILURE() << "/dev/full took the text";
     } catch (const InputError& e) {
-      EXPECT_EQ(std::string(e.what()), "svg(path): /dev/full could not be written completely");
+      EXPECT_EQ(std::string(e.what()),
+                "svg(path): /dev/full could not be written completely (No space left on device)");
     }
   }
   const std::string fifo = folder("fifo") + "/pipe";
@@ -116,6 +119,112 @@ GTEST_TEST(WriteFile, ADeviceOrFifoIsWrittenDirectlyOrRefused) {
   reader.join();
   EXPECT_EQ(got, "new\n");
   EXPECT_TRUE(fs::is_fifo(fifo));  // not replaced by a regular file
+}
+
+// No file other than the one named is touched: the temporary file has a
+// fresh name made with O_EXCL, so a link planted under the old fixed name
+// (FILE.fixel-partial) or any predictable one redirects nothing.
+GTEST_TEST(WriteFile, APlantedLinkBesideTheFileRedirectsNothingAndNoTemporaryIsLeft) {
+  const std::string dir = folder("planted");
+  std::ofstream(dir + "/victim") << "victim\n";
+  fs::create_symlink(dir + "/victim", dir + "/a.svg.fixel-partial");
+  write_file(dir + "/a.svg", "svg(path)", text);
+  EXPECT_EQ(read(dir + "/a.svg"), "new\n");
+  EXPECT_FALSE(fs::is_symlink(dir + "/a.svg"));
+  EXPECT_EQ(read(dir + "/victim"), "victim\n");
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename().string().rfind(".fixel-", 0) == 0;
+  EXPECT_EQ(entries, 0);
+}
+
+GTEST_TEST(WriteFile, ANameOfTheLongestLegalLengthIsWritten) {
+  const std::string dir = folder("long");
+  const std::string name = dir + "/" + std::string(250, 'b');  // NAME_MAX is 255
+  write_file(name, "svg(path)", text);
+  EXPECT_EQ(read(name), "new\n");
+}
+
+// As a shell redirect does: the link's target is created, the link kept.
+GTEST_TEST(WriteFile, ADanglingLinkIsWrittenThroughToItsNewTarget) {
+  const std::string dir = folder("dangling");
+  fs::create_symlink("target.svg", dir + "/link.svg");  // relative to the link's folder
+  write_file(dir + "/link.svg", "svg(path)", text);
+  EXPECT_TRUE(fs::is_symlink(dir + "/link.svg"));
+  EXPECT_EQ(read(dir + "/target.svg"), "new\n");
+  fs::create_symlink("nowhere/t.svg", dir + "/lost.svg");
+  try {
+    write_file(dir + "/lost.svg", "svg(path)", text);
+    ADD_FAILURE() << "a link into a missing folder was written";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "svg(path): " + dir + "/lost.svg cannot be written: no such folder " + dir + "/nowhere");
+  }
+}
+
+// /dev/stdout is this process's standard output, whatever it is redirected
+// to: written into the stream, never reopened (which would truncate a log
+// that `>>` appends to, or replace the file `>` made).
+GTEST_TEST(WriteFile, StandardOutputIsWrittenIntoTheStreamItself) {
+  testing::internal::CaptureStdout();
+  std::cout << "before\n";
+  write_file("/dev/stdout", "svg(path)", text);
+  std::cout << "after\n";
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "before\nnew\nafter\n");
+  EXPECT_THROW(write_file("/dev/stdout", "save_scene(path)", text, SpecialFile::kRefuse), InputError);
+}
+
+// Runs `f` as an unprivileged user when this is root (root may write any
+// file); its exit status.
+template <typename F>
+int as_unprivileged(F f) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (geteuid() == 0 && (setgid(65534) != 0 || setuid(65534) != 0)) _exit(100);
+    _exit(f());
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 101;
+}
+
+// A read-only file is refused, as the command line's early check refuses
+// it; a writable file in a folder that takes no new file is written in
+// place, as a shell redirect would write it.
+GTEST_TEST(WriteFile, AReadOnlyFileIsRefusedAndAWritableOneInAReadOnlyFolderIsWrittenInPlace) {
+  const std::string dir = folder("modes");
+  fs::permissions(dir, fs::perms::all);
+  const std::string read_only = dir + "/ro.svg";
+  std::ofstream(read_only) << "keep\n";
+  fs::permissions(read_only, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  const int refused = as_unprivileged([&] {
+    try {
+      write_file(read_only, "svg(path)", text);
+      return 1;
+    } catch (const InputError& e) {
+      return std::string(e.what()) == "svg(path): " + read_only + " cannot be written: it is read-only" ? 0 : 2;
+    }
+  });
+  EXPECT_EQ(refused, 0);
+  EXPECT_EQ(read(read_only), "keep\n");
+
+  const std::string locked = dir + "/locked";
+  fs::create_directories(locked);
+  const std::string writable = locked + "/w.svg";
+  std::ofstream(writable) << "earlier\n";
+  fs::permissions(writable, fs::perms::all);
+  fs::permissions(locked, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec);
+  const int written = as_unprivileged([&] {
+    try {
+      write_file(writable, "svg(path)", text);
+      return 0;
+    } catch (const InputError&) {
+      return 1;
+    }
+  });
+  EXPECT_EQ(written, 0);
+  EXPECT_EQ(read(writable), "new\n");
+  fs::permissions(locked, fs::perms::all);
 }
 
 }  // namespace

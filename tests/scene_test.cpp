@@ -3,8 +3,12 @@
 #include "fixel/seating.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -539,19 +543,30 @@ GTEST_TEST(SaveScene, AFailedSaveLeavesTheEarlierFileWholeAndNamesThePath) {
   const Scene polygon = test::scene_file("polygon");
   save_scene(polygon, path);
   expect_same_scene(polygon, load_scene(path), "saved");
-  EXPECT_FALSE(std::filesystem::exists(path + ".fixel-partial"));
-  // The temporary file cannot be made: the earlier file stays as it was.
-  std::filesystem::create_directory(path + ".fixel-partial");
-  try {
-    save_scene(test::scene_file("example2"), path);
-    ADD_FAILURE() << "no throw";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  // The write fails half-way (a file-size limit of 1 KiB, as a full disk
+  // would): the earlier file stays as it was, and the error names the path.
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);  // EFBIG instead of the signal
+    const rlimit limit{1024, 1024};
+    if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(3);
+    try {
+      save_scene(test::scene_file("example2_rounded"), path);
+      _exit(1);
+    } catch (const InputError& e) {
+      _exit(std::string(e.what()) == "save_scene(path): " + path + " could not be written completely (File too large)"
+                ? 0
+                : 2);
+    }
   }
+  int status = -1;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
   expect_same_scene(polygon, load_scene(path), "kept");
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().rfind(".fixel-", 0), std::string::npos) << e.path();
   EXPECT_THROW(save_scene(polygon, dir + "/no such folder/scene.json"), InputError);
   // Through a symbolic link: the link stays, its target gets the scene.
-  std::filesystem::remove(path + ".fixel-partial");
   std::filesystem::create_symlink(path, dir + "/link.json");
   save_scene(test::scene_file("example2"), dir + "/link.json");
   EXPECT_TRUE(std::filesystem::is_symlink(dir + "/link.json"));

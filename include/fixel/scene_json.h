@@ -44,11 +44,12 @@ Scene read_scene(std::istream& in, const std::string& source, RunControl* contro
 /// Invalid UTF-8 in a name or description set in code becomes U+FFFD.
 std::string write_scene(const Scene& scene, bool with_derived = false);
 
-/// Writes write_scene(scene) to the file `path`: first to a temporary file
-/// beside it, then renamed over it, so an error leaves any earlier file
-/// whole; a symbolic link is written through (its target replaced), and an
-/// existing path that is not a regular file (a FIFO, a device) is refused.
-/// Throws InputError naming the path when it cannot be written.
+/// Writes write_scene(scene) to the file `path`: first to a new file of a
+/// fresh name beside it, then renamed over it, so an error leaves any
+/// earlier file whole; a symbolic link is written through (its target
+/// replaced or made), a read-only file is refused, and a path that is not
+/// a regular file (a FIFO, a device, /dev/stdout) is refused. Throws
+/// InputError(field "save_scene(path)", path) when it cannot be written.
 void save_scene(const Scene& scene, const std::string& path);
 
 /// Parses an impulse given as "px,py[,pθ]" and checks its length against dof.

@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "fixel/error.h"
+#include "fixel/internal/file_write.h"
 
 namespace fixel::cli {
 namespace {
@@ -82,16 +83,9 @@ void end_progress() {
 }
 
 void check_writable(const std::string& path, const std::string& flag, bool renamed_over) {
-  if (path.empty()) return;
-  const std::filesystem::path p(path);
-  const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) throw InputError(flag, path, "cannot be written: no such folder");
-  if (std::filesystem::is_directory(p, ec)) throw InputError(flag, path, "cannot be written: it is a folder");
-  const bool exists = std::filesystem::exists(p, ec);
-  if (access(exists ? path.c_str() : dir.c_str(), W_OK) != 0) throw InputError(flag, path, "cannot be written");
-  if (renamed_over && exists && !std::filesystem::is_regular_file(p, ec))
-    throw InputError(flag, path, "cannot be written: it exists and is not a regular file (a FIFO or device)");
+  if (path.empty()) return;  // not asked for
+  internal::check_writable(path, flag,
+                           renamed_over ? internal::SpecialFile::kRefuse : internal::SpecialFile::kWriteDirectly);
 }
 
 // The region shrinks as the pusher's μ grows (docs/theory.md §10), so an

@@ -1,5 +1,7 @@
 """The Python API beyond the CLI: round trips, approx views, progress, plots, files."""
 
+import resource
+import signal
 import threading
 from fractions import Fraction as F
 
@@ -57,10 +59,18 @@ def test_save_refuses_a_missing_folder_and_keeps_an_earlier_file(polygon, exampl
     path = tmp_path / "scene.json"
     polygon.save(path)
     before = path.read_text()
-    (tmp_path / "scene.json.fixel-partial").mkdir()  # the temporary file cannot be made
-    with pytest.raises(fixel.InputError, match="scene.json"):
-        example2.save(path)
+    # The write fails half-way (a file-size limit, as a full disk would).
+    soft, hard = resource.getrlimit(resource.RLIMIT_FSIZE)
+    handler = signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    try:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (256, hard))
+        with pytest.raises(fixel.InputError, match="scene.json could not be written completely"):
+            example2.save(path)
+    finally:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (soft, hard))
+        signal.signal(signal.SIGXFSZ, handler)
     assert path.read_text() == before
+    assert [p.name for p in tmp_path.iterdir()] == ["scene.json"]  # no temporary file left
     with pytest.raises(fixel.InputError):
         polygon.save(tmp_path / "no such folder" / "scene.json")
     with pytest.raises(TypeError, match="path"):

@@ -8,20 +8,32 @@
 
 namespace fixel::internal {
 
-/// What to do with a path that exists and is not a regular file (a FIFO, a
+/// What to do with a path that is not a regular file (a FIFO, a
 /// device such as /dev/stdout): write into it directly (nothing there to
 /// keep), or refuse it (a file the caller will read back, as a scene).
 enum class SpecialFile { kWriteDirectly, kRefuse };
 
-/// Writes `path` with `write`: into `path.fixel-partial`, renamed over
-/// `path` once written and flushed, so that an error (a full disk, an
-/// exception from `write`) leaves an earlier file at `path` whole. A
-/// symbolic link is written through (its target replaced). Throws
-/// InputError(field, path, reason) when it cannot be written: "cannot be
-/// written" (a folder; no such folder; the temporary file cannot be
-/// created, and then the earlier file is not touched) or "could not be
-/// written completely".
+/// Writes `path` with `write`. The whole text is made first, then written
+/// to a new file of a fresh name in the same folder (`.fixel-<random>.partial`,
+/// created exclusively, so no planted link is followed) and renamed over
+/// `path`: an error (a full disk, an exception from `write`) leaves an
+/// earlier file at `path` whole and no temporary file. The replacement keeps
+/// the earlier file's permissions. A symbolic link is written through (its
+/// target made or replaced, also when it dangles). A read-only file is
+/// refused. When the folder takes no new file but the file itself is
+/// writable, it is written in place (as a shell redirect would). A FIFO or
+/// device, or a path under /dev or /proc, is written into directly (or
+/// refused); /dev/stdout and /dev/stderr are this process's streams,
+/// written into std::cout and std::cerr. Throws InputError(field, path,
+/// reason): "cannot be written: ..." (an empty path, a folder, no such
+/// folder, read-only, ...) or "could not be written completely (...)".
 void write_file(const std::string& path, const std::string& field, const std::function<void(std::ostream&)>& write,
                 SpecialFile special = SpecialFile::kWriteDirectly);
+
+/// The checks of write_file that need no writing, and that a new file can
+/// be made in the folder: run before a long computation, so that a bad
+/// output path is refused first. Throws as write_file does.
+void check_writable(const std::string& path, const std::string& field,
+                    SpecialFile special = SpecialFile::kWriteDirectly);
 
 }  // namespace fixel::internal
