@@ -37,18 +37,22 @@ void require_determined_fixture(const Scene& scene) {
                        "so the fixture does not determine the motion");
 }
 
-ContactMatrices contact_matrices(const Scene& scene) {
-  check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
-  require_determined_fixture(scene);
-  const int dof = scene.body.dof, nc = scene.num_contacts();
+void require_single_friction(const Scene& scene) {
   // The one-step model is not monotone in μ: an interval has no single
   // robust answer there (docs/theory.md §10), only in the sustained set.
-  for (int i = 0; i < nc; ++i)
+  for (int i = 0; i < scene.num_contacts(); ++i)
     if (scene.fixels[i].mu_hi)
       throw UnsupportedError("fixels[" + std::to_string(i) + "].mu",
                              "[" + to_string(scene.fixels[i].mu) + ", " + to_string(*scene.fixels[i].mu_hi) + "]",
                              "is an interval: only the sustained-push analysis (seat --sustained, region --push "
                              "sustained) accepts friction intervals; the one-step model needs one value");
+}
+
+ContactMatrices contact_matrices(const Scene& scene) {
+  check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
+  require_determined_fixture(scene);
+  require_single_friction(scene);
+  const int dof = scene.body.dof, nc = scene.num_contacts();
   ContactMatrices W;
   W.M = MatrixQ::Zero(dof, dof);
   W.M(0, 0) = scene.body.mass;

@@ -4,6 +4,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/lcp.h"
+#include "fixel/sustained.h"
 
 namespace fixel {
 
@@ -23,23 +24,30 @@ SceneInfo scene_info(const Scene& scene) {
     info.warnings.push_back("body.mass is not given: it defaults to the enclosed area, " + to_string(b.mass) +
                             " kg (density 1 kg/m²); give \"mass\" for the real part");
   // The analyses that would refuse the scene, said here rather than only
-  // when one of them is run.
+  // when one of them is run, with their own reason.
   try {
     require_determined_fixture(scene);
+    require_single_friction(scene);
   } catch (const InputError& e) {
     info.warnings.push_back(
         "the one-step analyses (seat, region, sample, simulate, solutions, push-plan, dump) refuse this scene: " +
         std::string(e.what()));
   }
-  if (b.dof == 3 && scene.num_contacts() != 3)
-    info.warnings.push_back(
-        "the sustained-push analyses (seat --sustained, region --push sustained) refuse this "
-        "scene: they need exactly 3 fixels, and it has " +
-        std::to_string(scene.num_contacts()));
+  const std::string sustained =
+      "the sustained-push analyses (seat --sustained, region --push sustained, dump --sustained, push --at) refuse "
+      "this scene: ";
+  bool sustained_fixture = true;
+  try {
+    require_sustained_fixture(scene);
+  } catch (const InputError& e) {
+    info.warnings.push_back(sustained + e.what());
+    sustained_fixture = false;
+  }
   try {
     info.seated = seated_pose(scene);
   } catch (const InputError& e) {
     info.seated_unavailable = e.what();
+    if (sustained_fixture) info.warnings.push_back(sustained + e.what());
   }
   return info;
 }

@@ -215,15 +215,20 @@ void fill_public(SustainedSet& J, const Data<NT>& d) {
 using internal::IV;
 using internal::Q2;
 
+void require_sustained_fixture(const Scene& scene) {
+  if (scene.body.dof != 3)
+    throw SceneError("body.dof", std::to_string(scene.body.dof),
+                     "is a point mass: the sustained-push set needs a rigid body (dof 3)");
+  const int nc = scene.num_contacts();
+  if (nc != 3)
+    throw SceneError("fixels", std::to_string(nc) + " fixels", "are not 3: the sustained-push set needs exactly 3");
+}
+
 namespace {
 
 void check_scene(const Scene& scene) {
   check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
-  if (scene.body.dof != 3)
-    throw SceneError("body.dof", "2", "is a point mass: the sustained-push set needs a rigid body (dof 3)");
-  const int nc = scene.num_contacts();
-  if (nc != 3)
-    throw SceneError("fixels", std::to_string(nc) + " fixels", "are not 3: the sustained-push set needs exactly 3");
+  require_sustained_fixture(scene);
 }
 
 // J's data at the seated pose, in the body frame; over Q(√d) the pieces'

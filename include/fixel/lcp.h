@@ -20,6 +20,10 @@ namespace fixel {
 /// without it, e.g. a part with no fixels for fixture design.)
 void require_determined_fixture(const Scene& scene);
 
+/// The one-step analyses need one friction value per fixel: throws
+/// UnsupportedError naming the first fixel whose μ is an interval.
+void require_single_friction(const Scene& scene);
+
 /// W_n (dof × n_c): column i is the normal wrench of fixel i.
 MatrixQ normal_wrench_matrix(const Scene& scene);
 

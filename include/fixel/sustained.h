@@ -86,6 +86,11 @@ struct SustainedSet {
 /// checked (0 when q* is irrational or J is empty).
 int check_strong_stability(const Scene& scene, SustainedSet& J);
 
+/// The sustained-push analyses need a rigid body (dof 3) with exactly 3
+/// fixels: throws SceneError naming the field otherwise (as sustained_set
+/// does first). They also need the seated pose q* (seated_pose's errors).
+void require_sustained_fixture(const Scene& scene);
+
 /// Computes q* and J. Throws what seated_pose throws, SceneError when W_n*
 /// is singular (a degenerate seat), and InputError for dof != 3. With
 /// `check_stability` false the independent contact-mode check of strong
