@@ -6,7 +6,8 @@ namespace fixel {
 
 namespace {
 // A message stays readable whatever the input: an exact value of 10,000
-// digits is shown by its ends (InputError::value() keeps all of it).
+// digits is shown by its ends (InputError::value() keeps all of it). Only
+// past 864 bytes: a long file path is shown whole.
 // Cuts fall between UTF-8 characters (a continuation byte is 10xxxxxx).
 bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
@@ -20,7 +21,7 @@ std::string shortened(const std::string& text, std::size_t head, std::size_t tai
 
 std::string compose(const std::string& field, const std::string& value, const std::string& reason) {
   std::string out = shortened(field, 200, 40) + ":";
-  if (!value.empty()) out += " " + shortened(value, 120, 40);
+  if (!value.empty()) out += " " + shortened(value, 600, 200);
   if (!reason.empty()) out += " " + shortened(reason, 600, 200);
   return out;
 }

@@ -32,9 +32,18 @@ GTEST_TEST(InputError, AValueOfThousandsOfDigitsIsShownByItsEndsAndKeptWhole) {
   const InputError e("body.mass", value, "is too large");
   const std::string message = e.what();
   EXPECT_EQ(e.value(), value);
-  EXPECT_LT(message.size(), 300u);
-  EXPECT_EQ(message.rfind("body.mass: 1" + std::string(119, '0') + "…[", 0), 0u) << message;
-  EXPECT_NE(message.find("…[9842 bytes]…" + std::string(39, '0') + "7 is too large"), std::string::npos) << message;
+  EXPECT_LT(message.size(), 900u);
+  EXPECT_EQ(message.rfind("body.mass: 1" + std::string(599, '0') + "…[", 0), 0u) << message;
+  EXPECT_NE(message.find("…[9202 bytes]…" + std::string(199, '0') + "7 is too large"), std::string::npos) << message;
+}
+
+// A long file path is what the user needs whole, to find the file.
+GTEST_TEST(InputError, AValueOfUpTo864BytesIsShownWhole) {
+  const std::string path = "/" + std::string(863, 'p');
+  EXPECT_EQ(std::string(InputError("--svg", path, "cannot be written").what()),
+            "--svg: " + path + " cannot be written");
+  const std::string longer = path + "q";
+  EXPECT_NE(std::string(InputError("--svg", longer, "cannot be written").what()).find(" bytes]…"), std::string::npos);
 }
 
 GTEST_TEST(InputError, AShortenedMessageCutsBetweenCharacters) {
