@@ -95,7 +95,8 @@ namespace {
 // The push on the picture: an arrow along its force's line of action at the
 // start, ending where that line enters the part (a finger's contact), or at
 // the line's point nearest the centre of mass when it misses the outline.
-// None for a zero force (a pure moment, said in the caption).
+// None for a zero force (a pure moment, said in the caption); the caller
+// also leaves out a line far off the part.
 std::optional<std::array<std::array<double, 2>, 2>> push_arrow(const Wrench& w, double cx, double cy,
                                                                const std::vector<std::array<double, 2>>& outline,
                                                                double length) {
@@ -139,8 +140,18 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
     for (const auto& v : poly.outline) grow(place(s.pose, v));
   for (const auto& f : fixels) grow(f);
   std::optional<std::array<std::array<double, 2>, 2>> arrow;
+  // A line of action far from the part (a near-pure moment) is not drawn:
+  // fitting it in would shrink the part to a dot. The caption gives it.
+  double line_distance = 0;
+  bool off_picture = false;
   if (w) {
-    arrow = push_arrow(*w, cx, cy, poly.outline, 0.2 * std::max({x1 - x0, y1 - y0, 1e-12}));
+    const double extent = std::max({x1 - x0, y1 - y0, 1e-12});
+    arrow = push_arrow(*w, cx, cy, poly.outline, 0.2 * extent);
+    line_distance = std::abs(w->m) / std::hypot(w->fx, w->fy);
+    if (arrow && !(line_distance <= 2 * extent)) {
+      arrow.reset();
+      off_picture = true;
+    }
     if (arrow)
       for (const auto& q : *arrow) grow(q);
   }
@@ -209,6 +220,9 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
     if (arrow)
       out << caption(first + 48) << "magenta: the push (" << w->fx << ", " << w->fy << ", " << w->m
           << "), along its force's line of action";
+    else if (off_picture)
+      out << caption(first + 48) << "the push (" << w->fx << ", " << w->fy << ", " << w->m
+          << "): its line of action passes " << line_distance << " m from the centre of mass, off the picture";
     else
       out << caption(first + 48) << "the push (" << w->fx << ", " << w->fy << ", " << w->m << ") is a pure moment";
     out << "</text>\n";

@@ -484,6 +484,20 @@ GTEST_TEST(Physics, ThePushSvgDrawsTheForceEndingWhereItsLineEntersThePart) {
   const std::string pure((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
   EXPECT_EQ(pure.find("<line"), std::string::npos);
   EXPECT_NE(pure.find("the push (0, 0, 1) is a pure moment"), std::string::npos);
+  // A near-pure moment: its line passes 10^6 m away. Fitting it in would
+  // shrink the part to a dot, so it is told, not drawn.
+  const Wrench far{1e-6, 0, 1};
+  write_push_svg(path, sq, r, &far);
+  std::ifstream far_in(path);
+  const std::string far_svg((std::istreambuf_iterator<char>(far_in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(far_svg.find("<line"), std::string::npos);
+  EXPECT_NE(far_svg.find("its line of action passes 1e+06 m from the centre of mass, off the picture"),
+            std::string::npos);
+  std::vector<double> xs;  // the part still spans the picture (640 px wide, 20 px margins)
+  for (auto it = std::sregex_iterator(far_svg.begin(), far_svg.end(), dot); it != std::sregex_iterator(); ++it)
+    xs.push_back(std::stod((*it)[1]));
+  ASSERT_EQ(xs.size(), 3u);
+  EXPECT_GT(*std::max_element(xs.begin(), xs.end()) - *std::min_element(xs.begin(), xs.end()), 100);
 }
 
 }  // namespace
