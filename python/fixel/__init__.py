@@ -164,7 +164,7 @@ class SeatingSet:
     """S = {apex + Σ λ_k rays_k : λ ≥ 0} = {p : a·p ≥ c for every (a, c) in halfspaces}."""
 
     def __init__(self, scene, impl):
-        self.scene = scene
+        self._scene = scene
         self._impl = impl
         self.dof = impl.dof
         self.apex = fracs(impl.apex)
@@ -173,6 +173,9 @@ class SeatingSet:
         self.velocity_after = fracs(impl.velocity_after)
         self.tangential_velocity = fracs(impl.tangential_velocity)
         self.sliding = tuple(impl.sliding)
+
+    # Read-only: the set is of this scene (pickling rebuilds it from it).
+    scene = property(lambda self: self._scene, doc="The Scene this set was built from (read-only).")
 
     def contains(self, p):
         """Exact membership (boundary points are members)."""
@@ -214,10 +217,12 @@ class GuaranteedSet:
     """G ⊂ S: the impulses whose every one-step outcome seats the part."""
 
     def __init__(self, seating, impl):
-        self.seating = seating
+        self._seating = seating
         self._impl = impl
         self.num_pieces = impl.num_pieces
         self.non_seating = [(tuple(modes), fixel) for modes, fixel in impl.non_seating]
+
+    seating = property(lambda self: self._seating, doc="The SeatingSet G refines (read-only).")
 
     def contains(self, p):
         """Exact membership: every one-step outcome at impulse p seats the part."""
@@ -346,8 +351,10 @@ class SustainedSet:
     None (unknown) when J's pieces are not decided (``pieces_decided``
     False), as the CLI's null."""
 
+    scene = property(lambda self: self._scene, doc="The Scene J was built from (read-only).")
+
     def __init__(self, scene, impl):
-        self.scene = scene
+        self._scene = scene
         self._impl = impl
         self.empty = impl.empty if impl.pieces_decided else None
         self.empty_reason = impl.empty_reason
@@ -440,9 +447,11 @@ class ApproachSet:
     known to be empty), and ``J``, the SustainedSet it refines. When not
     ``decided``, ``t_star``, ``on_edges`` and ``empty`` are None (unknown)."""
 
+    scene = property(lambda self: self._J.scene, doc="The Scene J' was built from (read-only).")
+    J = property(lambda self: self._J, doc="The SustainedSet J' refines (read-only).")
+
     def __init__(self, J, impl):
-        self.J = J
-        self.scene = J.scene
+        self._J = J
         self._impl = impl
         self.decided = impl.decided
         self.undecided_reason = impl.undecided_reason

@@ -295,6 +295,23 @@ def test_sustained_and_approach_sets_pickle_as_the_same_exact_sets(polygon):
     assert any(J.contains(w) for w in ([-1, -1, 0], [0, -1, 0]))  # the comparison sees members too
 
 
+def test_a_sets_scene_is_read_only_so_its_pickle_is_rebuilt_from_its_own_scene(polygon, example2):
+    # Pickling rebuilds a set from its scene: a writable .scene let a
+    # pickle give another scene's set, silently.
+    S = fixel.seating_set(polygon)
+    J = fixel.sustained_set(polygon)
+    A = fixel.approach_set(polygon, J)
+    G = fixel.guaranteed_set(example2)
+    for obj, name, other in ((S, "scene", example2), (J, "scene", example2), (A, "scene", example2),
+                             (A, "J", None), (G, "seating", None)):  # fmt: skip
+        with pytest.raises(AttributeError):
+            setattr(obj, name, other)
+    assert A.J is J and A.scene is polygon and G.seating.scene is example2
+    import pickle
+
+    assert pickle.loads(pickle.dumps(S)).apex == S.apex
+
+
 def test_sustained_set_agrees_with_the_cli_and_decides_exactly():
     path = SCENE_DIR / "polygon.json"
     scene = fixel.Scene.load(path)
