@@ -480,6 +480,21 @@ for cmd in "region $src/data/scenes/blob.json --json --pusher-mu 1/10" "seat $sr
 done
 expect 0 'fixel: filters (certified/exact fallbacks): lemke 0/0 lemke tie 0/0 ray test ' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --json
 expect 0 'ray test 0/0 out test 0/0 orientation 0/0 cone 0/0 membership 0/0 jam test 0/0 region test 0/0 in magnitudes 0/0 feasibility 0/0 design bound 0/0 approach 0/0 (exact only)' -- env FIXEL_FILTER_STATS=1 "$fixel" region "$src/data/scenes/blob.json" --exact-only
+# Every site obeys --exact-only: with it no filter certifies a decision,
+# without it some do, in each analysis that filters.
+for cmd in "seat $src/data/scenes/polygon.json --sustained --wrench -1,-1,0" \
+           "region $src/data/scenes/polygon.json --push sustained --approach --resolution 1/64" \
+           "seat $src/data/scenes/nonunique.json --guaranteed" \
+           "design $src/data/scenes/polygon.json --top 1 --resolution 1/32" \
+           "simulate $src/data/scenes/example2.json --impulse -1,-1,-1 --steps 3"; do
+  # shellcheck disable=SC2086
+  filtered=$(env FIXEL_FILTER_STATS=1 "$fixel" $cmd 2>&1 >/dev/null | grep 'fixel: filters')
+  # shellcheck disable=SC2086
+  exact=$(env FIXEL_FILTER_STATS=1 "$fixel" $cmd --exact-only 2>&1 >/dev/null | grep 'fixel: filters')
+  echo "$filtered" | grep -Eq ' [1-9][0-9]*/' || { echo "FAIL: $cmd certified nothing by its filters: $filtered"; fail=1; }
+  case "$exact" in *"(exact only)") ;; *) echo "FAIL: $cmd --exact-only: $exact"; fail=1 ;; esac
+  echo "$exact" | grep -Eq ' [1-9][0-9]*/' && { echo "FAIL: $cmd --exact-only still certified by filters: $exact"; fail=1; }
+done
 
 # Issue 16 (smaller defects): guaranteed-set rows with a zero left side are
 # dropped (true for every p) or make the set empty; never printed. This scene

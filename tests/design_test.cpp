@@ -269,7 +269,7 @@ GTEST_TEST(Design, ALayoutWithAnIrrationalNormalIsRoundedAndMarkedOffBoundary) {
   EXPECT_FALSE(scene.fixels[1].off_boundary);
   EXPECT_TRUE(scene.fixels[2].off_boundary);
   EXPECT_GT(angle_error, 0);
-  EXPECT_LT(angle_error, 1e-6);
+  EXPECT_LT(angle_error, 1e-7);  // cli.md: "within about 10⁻⁷ rad" (t rounded to 2⁻²⁴: at most 6e-8)
   EXPECT_EQ(scene.fixels[2].n_A.x * scene.fixels[2].n_A.x + scene.fixels[2].n_A.y * scene.fixels[2].n_A.y, 1);
   EXPECT_EQ(scene.name, "house-layout-3");
   EXPECT_NE(scene.description.find("fixel 2 has irrational length"), std::string::npos) << scene.description;
@@ -412,11 +412,22 @@ GTEST_TEST(Design, FewerThanThreeCandidatesIsNoLayoutWithAReason) {
   EXPECT_NE(r.no_layout.find("only 2 candidates"), std::string::npos) << r.no_layout;
 }
 
+// The polygon is one polyline with its corners at u = 0, 1, ..., 5 and a
+// perimeter of 5/2 + 3/2 + √41/4 + √41/4 + 3/2 = 11/2 + √41/2 ≈ 8.70 m:
+// spacing 1/2 puts the candidates at arc lengths 1/4, 3/4, ... below it,
+// (k + 1/2)/2 < 8.70 for k = 0..16: 17 of them, none at a corner.
 GTEST_TEST(Design, BoundaryCandidatesAvoidCornersAndFollowTheSpacing) {
   const Scene part = scene_file("polygon");
   const auto c = boundary_candidates(part, Rational(1, 2));
-  EXPECT_GT(c.size(), 10u);
-  for (const auto& d : c) EXPECT_FALSE(is_zero(d.normal));
+  EXPECT_EQ(c.size(), 17u);
+  for (const auto& d : c) {
+    EXPECT_FALSE(is_zero(d.normal));
+    EXPECT_NE(boost::multiprecision::denominator(d.u), 1) << "a candidate at the corner u = " << d.u;
+  }
+  // The first lies 1/4 m along the bottom edge from (−1, −1): u = 1/4 ÷ 5/2
+  // = 1/10, rounded to 1/1024 (placement only).
+  EXPECT_EQ(c[0].point.y, -1);
+  EXPECT_EQ(c[0].u, Rational(102, 1024));
   const auto d24 = boundary_candidates(part, std::nullopt);
   EXPECT_LE(d24.size(), 24u);
   EXPECT_GE(d24.size(), 20u);
