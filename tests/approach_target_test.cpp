@@ -207,7 +207,7 @@ TEST(ApproachTarget, ItsInStretchesLieInsideJsInStretches) {
   }
 }
 
-TEST(ApproachTarget, TheExactRegionIsRefusedWithAReason) {
+TEST(ApproachTarget, TheExactRegionIsRefusedAsUnsupportedAndAnEmptySetAsBadInput) {
   const auto& p = turned_parts().front();
   RegionOptions options;
   options.exact = true;

@@ -11,6 +11,15 @@ expect() {
     echo "FAIL: $* -> exit $rc (want $code), output:"; echo "$out" | head -5; echo "  (wanted: $pattern)"; fail=1
   fi
 }
+# The same, the pattern a whole line (a count such as '"seated": 2' must not
+# also match 20).
+expect_line() {
+  local code="$1" pattern="$2"; shift 3
+  local out; out=$("$@" 2>&1); local rc=$?
+  if [ "$rc" -ne "$code" ] || ! grep -qxF -- "$pattern" <<<"$out"; then
+    echo "FAIL: $* -> exit $rc (want $code), output:"; echo "$out" | head -5; echo "  (wanted the line: $pattern)"; fail=1
+  fi
+}
 
 expect 0 '"contains": true' -- "$fixel" seat "$src/data/scenes/example2.json" --json --impulse -1,-1,-1
 expect 0 '"161/202"' -- "$fixel" seat "$src/data/scenes/example2.json" --json --impulse -1,-1,-1
@@ -21,7 +30,7 @@ expect 0 'wrote' -- "$fixel" dump "$src/data/scenes/example2.json" --off "$tmp/o
 expect 0 'passed, 0 failed' -- "$fixel" verify
 expect 0 '"seated": true' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1 --json
 expect 0 'SEATED' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1
-expect 0 '"non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique.json" --impulse 29157/10540,-71119/105400,-1169839/263500 --json
+expect_line 0 '  "non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique.json" --impulse 29157/10540,-71119/105400,-1169839/263500 --json
 expect 0 '1 seating, 0 non-seating' -- "$fixel" solutions "$src/data/scenes/example2.json" --impulse -1,-1,-1
 expect 2 '--steps: 0 must be >= 1' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1,-1 --steps 0
 expect 2 'has 2 components but the scene has dof 3' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse -1,-1
@@ -105,7 +114,7 @@ expect 2 'the boundary crosses itself' -- "$fixel" push "$tmp/bow.json" --wrench
 expect 2 '--wrench: missing or --at is required' -- "$fixel" push "$tmp/square.json"
 expect 2 'body.boundary: is missing' -- "$fixel" push "$src/data/scenes/example2.json" --wrench -1,-1,-1
 expect 0 '"validation": {' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
-expect 0 '"seated": 2' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
+expect 0 '"seated": 2,' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 2 --time 5 --json
 expect 0 'validation (Box2D 2.4' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 1 --time 5
 expect 2 '--validate: -1 must be >= 1' -- "$fixel" region "$src/data/scenes/polygon.json" --validate -1
 # Options the contract nests ([--validate N [--time T]], [--exact [--digits D]]) are refused alone, not ignored.
@@ -174,7 +183,7 @@ if "$fixel" region "$src/data/scenes/blob32.json" --exact --json | grep -q '"sta
 fi
 expect 2 '--digits: -1 must be in [0, 1000]' -- "$fixel" region "$P" --exact --digits -1
 # Whole-number options are decimal (formats.md: "010" is ten); CLI11 alone read 010 as octal, 0x10 as hex, "" as 0.
-expect 0 '"digits": 10' -- "$fixel" region "$P" --exact --json --digits 010
+expect 0 '"digits": 10,' -- "$fixel" region "$P" --exact --json --digits 010
 expect 2 '--digits: 0x10 is not a whole decimal number' -- "$fixel" region "$P" --exact --digits 0x10
 expect 2 "--digits: '' is not a whole decimal number" -- "$fixel" region "$P" --exact --digits ''
 # Root isolation uses neither --resolution nor --cone: refused, not ignored.
@@ -340,7 +349,7 @@ expect 0 "no sustained_piece_*.off: J's pieces are undecided here" -- "$fixel" d
 grep -q "midpoints of their certified enclosures" "$tmp/dr/sustained_cone.json" || { echo "FAIL: sidecar says nothing of the enclosures"; fail=1; }
 # design --svg draws corner intervals (it once failed on a zero-length one); verify --json counts.
 expect 0 'wrote' -- "$fixel" design "$src/data/scenes/polygon.json" --spacing 1/2 --top 3 --svg "$tmp/ds.svg" --quiet
-expect 0 '"passed_count": 15' -- "$fixel" verify --json
+expect 0 '"passed_count": 15,' -- "$fixel" verify --json
 if command -v rsvg-convert > /dev/null; then
   rsvg-convert -w 1100 "$tmp/rr.svg" -o "$tmp/rr.png" || { echo "FAIL: svg does not rasterise"; fail=1; }
   head -c 8 "$tmp/rr.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "FAIL: not a PNG"; fail=1; }
@@ -422,7 +431,7 @@ expect 0 '"status"' -- "$fixel" region "$src/data/scenes/polygon.json" "$src/dat
 expect 2 '"error"' -- "$fixel" region "$src/data/scenes/polygon.json" "$src/data/scenes/example2.json" --json --resolution 1/16
 expect 2 '--svg: x.svg draws one scene' -- "$fixel" region "$src/data/scenes/polygon.json" "$src/data/scenes/blob.json" --svg x.svg
 expect 0 'background_impulse b0 = (29157/10540' -- "$fixel" seat "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
-expect 0 '"non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --json
+expect_line 0 '  "non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --json
 expect 0 'b0 + p' -- "$fixel" simulate "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
 # fixel design (docs/design.md): the house part of tests/design_test.cpp, an empty fixels list, four listed
 # candidates; the mirror pair ties and keeps the candidates' order, and the two {B, L, R} triples are singular.
@@ -434,7 +443,7 @@ cat > "$tmp/house.json" <<'JSON'
 JSON
 echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}, {"curve": 0, "u": "9/2"}, {"curve": 0, "u": "3/2"}]}' > "$tmp/house_c.json"
 expect 0 '"triple": [' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
-expect 0 '"singular": 2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
+expect 0 '"singular": 2,' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --json
 expect 0 '#1 fixels [0] curve 0 u=1/4 [1] curve 0 u=3/4 [2] curve 0 u=9/2' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/house_c.json" --mu 0 --resolution 1/64 --jobs 2
 # Two candidates at one point (u = 1/4 written twice) would put two fixels there; a missing file says why.
 echo '{"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"}, {"curve": 0, "u": "0.25"}]}' > "$tmp/house_dup.json"
@@ -468,7 +477,7 @@ expect 0 'never scored (pair bound below the K-th score)' -- "$fixel" design "$s
 expect 0 'dropped: 105 with W_n singular (never scored), 1 of the 59 scored without form closure;' -- "$fixel" design "$src/data/scenes/polygon.json" --quiet
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive
-expect 0 '"bounded": 0' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive --json
+expect 0 '"bounded": 0,' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive --json
 # --exact-only turns the interval filters off: the same output byte for byte
 # (wall time masked), and the filter counters show which path ran.
 mask() { sed -E 's/"seconds": [0-9.e+-]+/"seconds": X/'; }

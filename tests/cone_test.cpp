@@ -54,7 +54,7 @@ GTEST_TEST(ConeFacets, FlatConeGetsItsPlaneAsTwoOppositeFacets) {
   EXPECT_FALSE(in_cone(f, vec({0, 1, 0})));
 }
 
-GTEST_TEST(ConeFacets, SingleRayAndZeroRaysAreHandled) {
+GTEST_TEST(ConeFacets, ASingleRayIsAHalfLineAndTheZeroRayTheOrigin) {
   const auto ray = cone_facet_normals({vec({0, 2, 0})}, 3);
   EXPECT_TRUE(in_cone(ray, vec({0, 5, 0})));
   EXPECT_FALSE(in_cone(ray, vec({0, -5, 0})));
@@ -64,7 +64,7 @@ GTEST_TEST(ConeFacets, SingleRayAndZeroRaysAreHandled) {
   EXPECT_FALSE(in_cone(origin, vec({0, 0, 1})));
 }
 
-GTEST_TEST(ConeFacets, PlanarConesWork) {
+GTEST_TEST(ConeFacets, APlanarConeHasTwoFacetsAndAConeOverAHalfPlaneOrMoreNone) {
   const auto f = cone_facet_normals({vec({1, 0}), vec({1, 1})}, 2);
   EXPECT_EQ(f.size(), 2u);
   EXPECT_TRUE(in_cone(f, vec({2, 1})));

@@ -200,7 +200,8 @@ GTEST_TEST(Boundary, RejectsUnclosedClockwiseAndFlatLoops) {
   EXPECT_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {2, 0}, {0, 0}})}), SceneError);
   // Two curves that do not join.
   EXPECT_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {1, 1}}), polyline({{1, 2}, {0, 0}})}), SceneError);
-  EXPECT_NO_THROW(make_boundary({polyline({{0, 0}, {1, 0}, {1, 1}}), polyline({{1, 1}, {0, 0}})}));
+  // Two curves that do join: the triangle (0, 0), (1, 0), (1, 1), area 1/2.
+  EXPECT_EQ(make_boundary({polyline({{0, 0}, {1, 0}, {1, 1}}), polyline({{1, 1}, {0, 0}})}).mass.area, Rational(1, 2));
 }
 
 GTEST_TEST(Boundary, RejectsDegenerateAndDiscontinuousBSplines) {

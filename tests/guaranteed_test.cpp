@@ -383,6 +383,17 @@ GTEST_TEST(GuaranteedSet, AStoppedControlStopsTheConstructionWithItsCount) {
   ASSERT_EQ(with.pieces.size(), without.pieces.size());
   EXPECT_EQ(with.non_seating.size(), without.non_seating.size());
   EXPECT_EQ(with.dimensions, without.dimensions);
+  // The same G, row for row: a control that never fires changes nothing.
+  auto same_rows = [](const std::vector<Halfspace>& a, const std::vector<Halfspace>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].a != b[i].a || a[i].c != b[i].c) return false;
+    return true;
+  };
+  for (std::size_t k = 0; k < with.pieces.size(); ++k) {
+    EXPECT_TRUE(same_rows(with.pieces[k].closed, without.pieces[k].closed)) << "piece " << k;
+    EXPECT_TRUE(same_rows(with.pieces[k].strict, without.pieces[k].strict)) << "piece " << k;
+  }
 }
 
 }  // namespace

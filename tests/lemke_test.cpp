@@ -66,7 +66,7 @@ GTEST_TEST(Lemke, SolvesPaperExample2AndItsNormalImpulsesAreTheEq27Values) {
   EXPECT_EQ(r.z[0], Rational(161, 202));
 }
 
-GTEST_TEST(Lemke, OneByOneProblems) {
+GTEST_TEST(Lemke, OneByOneProblemsAreSolvedOrEndOnARayExactlyWhenNoSolutionExists) {
   auto solve = [](int B, int b) { return solve_lcp_lemke(mat({{B}}), vec({b})); };
   const auto a = solve(1, -1);
   ASSERT_EQ(a.status, LemkeStatus::kSolved);
@@ -79,7 +79,7 @@ GTEST_TEST(Lemke, OneByOneProblems) {
   EXPECT_EQ(solve(0, 3).z[0], Rational(0));
 }
 
-GTEST_TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
+GTEST_TEST(Lemke, AnInfeasibleProblemEndsOnARay) {
   // w1 = −z2 − 1 can never be ≥ 0; B is skew (copositive-plus), so Lemke's
   // ray is a certificate of infeasibility.
   const MatrixQ B = mat({{0, -1}, {1, 0}});
@@ -88,7 +88,7 @@ GTEST_TEST(Lemke, RayTerminationOnAnInfeasibleProblem) {
   EXPECT_EQ(solve_lcp_lemke(mat({{-1, 0}, {0, -1}}), vec({-1, -1})).status, LemkeStatus::kRayTermination);
 }
 
-GTEST_TEST(Lemke, TiesInTheRatioTestWithManyZeroEntriesOfB) {
+GTEST_TEST(Lemke, TiesInTheRatioTestStillEndWithASolution) {
   // b has zeros and equal negative entries: both the first pivot and later
   // ratio tests tie; the lexicographic rule must still end with a solution.
   const MatrixQ B = mat({{1, 2, 0, 0}, {0, 1, 2, 0}, {0, 0, 1, 2}, {2, 0, 0, 1}});

@@ -24,6 +24,17 @@ GTEST_TEST(SeatReport, ImpulseVerdictsAgreeWithTheSetsTheyCameFrom) {
   EXPECT_EQ(*r.lost_fraction, lost_fraction(S, G));
   ASSERT_TRUE(r.impulse->y.has_value());  // Example 2 slides at every fixel
   EXPECT_EQ(*r.impulse->y, seating_system(scene, S).y(p));
+  // And the paper's values: p = (−1, −1, −1) is in S and guaranteed (for
+  // Example 2 no non-seating set meets S, so G = S and nothing is lost), and
+  // y = linear − threshold of the paper's eq. (27) table, entry by entry.
+  EXPECT_TRUE(r.impulse->in_S);
+  EXPECT_EQ(r.impulse->guaranteed, std::optional<bool>(true));
+  EXPECT_EQ(*r.lost_fraction, 0);
+  ASSERT_EQ(r.impulse->y->size(), 12);
+  for (int k = 0; k < 12; ++k)
+    EXPECT_EQ((*r.impulse->y)[k],
+              parse_rational(paper::kExample2LinearExact[k]) - parse_rational(paper::kExample2ThresholdExact[k]))
+        << k;
 }
 
 GTEST_TEST(SeatReport, WithoutGOrStableItComputesNeither) {

@@ -147,7 +147,7 @@ GTEST_TEST(WrenchCone, Fig6SegmentConeHoldsTheDenselySampledFrictionCone) {
   }
 }
 
-GTEST_TEST(WrenchCone, RepeatedControlPointsAreFine) {
+GTEST_TEST(WrenchCone, RepeatedControlPointsStillGiveAConeHoldingEveryPushWhereTheTangentLives) {
   const BezierPiece piece{0, Rational(0), Rational(1), {{0, 0}, {0, 0}, {1, 1}, {2, 1}}};
   const auto cone = segment_wrench_cone(piece, {0, 0}, EdgeFamily::kNormal, 0, ConeMethod::kTight);
   ASSERT_TRUE(cone);

@@ -21,7 +21,7 @@ def polygon():
 
 
 @pytest.mark.parametrize("name", ["example1.json", "example2.json", "blob.json", "nonunique_part.json"])
-def test_to_dict_round_trip(name):
+def test_to_dict_and_from_dict_give_back_the_same_scene(name):
     scene = fixel.Scene.load(SCENE_DIR / name)
     d = scene.to_dict()
     again = fixel.Scene.from_dict(d)
@@ -98,14 +98,14 @@ def test_approx_views_are_doubles(example2):
     assert a.apex.dtype == np.float64 and a.rays.shape == (3, 3) and a.normals.shape[1] == 3
 
 
-def test_exact_helper():
+def test_the_exact_helper_converts_numbers_without_rounding():
     assert fixel.exact(0.1) == F(3602879701896397, 36028797018963968)
     assert fixel.exact("0.1") == F(1, 10) and fixel.exact(3) == 3
     with pytest.raises(TypeError):
         fixel.exact(None)
 
 
-def test_region_objects(polygon):
+def test_a_region_holds_exact_intervals_stats_and_counts(polygon):
     r = fixel.region(polygon, resolution="1/64")
     assert r.intervals and all(isinstance(i, fixel.RegionInterval) for i in r.intervals)
     assert all(type(i.u0) is F and type(i.u1) is F for i in r.intervals)
@@ -121,7 +121,7 @@ def test_region_objects(polygon):
     assert isinstance(r.stats, fixel.RegionStats) and type(r.stats.partial_length) is F
 
 
-def test_region_resolution_length(polygon):
+def test_resolution_length_gives_each_piece_its_own_width_as_the_cli_does(polygon):
     # Per-piece widths from the speed bound: the edges of the house are 5/2,
     # 3/2, sqrt(41)/4 (twice) and 3/2 long; L = 1/4 halves them 4, 3, 3, 3, 3 times.
     r = fixel.region(polygon, resolution_length="1/4")
@@ -187,9 +187,11 @@ def test_gil_released_during_region():
     assert len(ticks) > 10  # about 600 with the GIL released, 1 if it were held
 
 
-def test_guaranteed_region(polygon):
+def test_the_guaranteed_region_is_the_clis(polygon):
     r = fixel.region(polygon, resolution="1/16", guaranteed=True)
-    assert r.intervals
+    cli = cli_json("region", SCENE_DIR / "polygon.json", "--guaranteed", "--resolution", "1/16")
+    assert r.to_json()["intervals"] == cli["intervals"]
+    assert r.counts()["in"] > 0  # G is not empty here, so the comparison sees IN stretches
 
 
 def test_a_guaranteed_set_given_alone_brings_its_own_seating_set(polygon):
@@ -209,15 +211,17 @@ def test_a_guaranteed_set_given_alone_brings_its_own_seating_set(polygon):
         fixel.region(polygon, resolution="1/16", guaranteed=G, seating=fixel.seating_set(polygon))
 
 
-def test_files(tmp_path, polygon):
+def test_svg_and_off_files_are_written_for_regions_and_sets(tmp_path, polygon):
     r = fixel.region(polygon, resolution="1/64")
     fixel.to_svg(tmp_path / "r.svg", r)
-    assert (tmp_path / "r.svg").read_text().startswith("<svg") or "<svg" in (tmp_path / "r.svg").read_text()
+    assert "<svg" in (tmp_path / "r.svg").read_text()
     paths = fixel.to_off(polygon, r.seating, tmp_path / "off", length=2)
     assert any(p.endswith("seating_set.off") for p in paths)
     G = fixel.guaranteed_set(polygon, r.seating)
     paths = fixel.to_off(polygon, r.seating, tmp_path / "offg", guaranteed=G)
-    assert any("guaranteed_" in p for p in paths) or G.num_pieces == 0
+    cli = cli_json("seat", SCENE_DIR / "polygon.json", "--guaranteed")["guaranteed_set"]
+    assert G.num_pieces == len(cli["pieces"]) > 0
+    assert sum("guaranteed_" in p and p.endswith(".off") for p in paths) == G.num_pieces
     fixel.to_svg(tmp_path / "g.svg", G, impulse=G.seating.apex)
     assert "<svg" in (tmp_path / "g.svg").read_text()
     assert fixel.__version__.count(".") == 2
@@ -226,7 +230,7 @@ def test_files(tmp_path, polygon):
         fixel.to_off(polygon, other, tmp_path / "bad", guaranteed=G)
 
 
-def test_plots(polygon):
+def test_the_plot_helpers_draw_the_region_and_the_wrench_sphere(polygon):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -253,7 +257,7 @@ def test_tqdm_bar_after_one_second(capsys):
     assert "fixel.region" not in capsys.readouterr().err  # quick runs show nothing
 
 
-def test_point_mass_scene():
+def test_a_point_mass_scene_gives_a_two_dimensional_seating_set():
     scene = fixel.Scene.load(SCENE_DIR / "example1.json")
     S = fixel.seating_set(scene)
     assert scene.dof == 2 and len(S.apex) == 2
@@ -277,7 +281,7 @@ def test_concurrent_calls_agree():
     assert parallel == serial
 
 
-def test_pickle_round_trip(example2):
+def test_a_scene_and_its_seating_set_pickle_as_the_same_exact_objects(example2):
     import pickle
 
     S = fixel.seating_set(example2)

@@ -39,7 +39,7 @@ def S(example2):
         (("1/0", "-1", "-1"), fixel.ParseError),
     ],
 )
-def test_contains_rejects(S, bad, exc):
+def test_contains_refuses_a_vector_of_the_wrong_length_or_type(S, bad, exc):
     with pytest.raises(exc):
         S.contains(bad)
 
@@ -100,7 +100,7 @@ def test_scene_errors_match_cli(tmp_path, change, exc, field):
         assert from_file.value.field == field
 
 
-def test_scene_errors_other(tmp_path):
+def test_other_scene_errors_name_their_field(tmp_path):
     with pytest.raises(fixel.InputError) as e:
         fixel.Scene.load(tmp_path / "missing.json")
     assert str(e.value) == cli_error("seat", tmp_path / "missing.json")
@@ -119,7 +119,7 @@ def test_scene_errors_other(tmp_path):
         fixel.seating_set("example2.json")
 
 
-def test_singular_scene(tmp_path):
+def test_a_singular_scene_is_a_scene_error_naming_the_fixel(tmp_path):
     d = json.loads((SCENE_DIR / "example2.json").read_text())
     d["fixels"][2] = dict(d["fixels"][1])
     scene = fixel.Scene.from_dict(d)  # loads: the rank of W_n is the analyses' rule
@@ -128,7 +128,7 @@ def test_singular_scene(tmp_path):
     assert "makes W_n singular" in str(e.value)
 
 
-def test_region_bad_options():
+def test_bad_region_options_are_refused_naming_the_option():
     scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
     with pytest.raises(fixel.InputError) as e:
         fixel.region(scene, push="sustained", guaranteed=True)
@@ -170,7 +170,7 @@ def test_exact_region_refuses_the_options_it_would_ignore():
     assert fixel.region(scene).resolution == F(1, 1024)  # None means 1/1024
 
 
-def test_simulate_and_solutions_bad_input(example2):
+def test_simulate_and_solutions_refuse_bad_input_naming_it(example2):
     with pytest.raises(fixel.InputError):
         fixel.simulate(example2, P, steps=0)
     with pytest.raises(TypeError):
@@ -219,7 +219,7 @@ def test_numpy_integers_count_as_ints():
         fixel.sample(polygon, 8.0)
 
 
-def test_unsupported_eq27_with_sticking_contact(example2):
+def test_eq27_is_unsupported_when_a_contact_sticks(example2):
     # Gaps (1/10, 0, 0): ν⁺ is along fixel 0's normal, so fixel 0 sticks.
     d = example2.to_dict()
     d["fixels"][1]["gap"] = d["fixels"][2]["gap"] = "0"

@@ -120,7 +120,7 @@ def test_guaranteed_agrees(path):
     ]
 
 
-def test_region_without_boundary_same_error():
+def test_a_region_without_an_outline_gives_the_clis_error():
     path = [p for p in SCENES if p.name == "example2.json"][0]
     message = cli_error("region", path)
     with pytest.raises(fixel.SceneError) as e:

@@ -70,7 +70,7 @@ PAPER_LINEAR = [0, 0, 0, 0.8911, 0.2871, 0.8020, 0.0891, 0.0287, 0.0802, 0, 0, 0
 PAPER_THRESHOLD = [-0.2, -0.5, -0.5, 0.0941, -0.0752, 0.1347, 0.0094, -0.0075, 0.0135, -0.1, -0.25, -0.25]
 
 
-def test_example2_table_exactly(example2):
+def test_example2s_eq27_table_is_the_papers_exactly(example2):
     S = fixel.seating_set(example2)
     names, linear, threshold = S.eq27(P)
     _, _, want_linear, want_threshold = derive(example2.to_dict(), P)
@@ -86,7 +86,7 @@ def test_example2_table_exactly(example2):
     assert threshold[3] == F(19, 202)
 
 
-def test_example2_seating_set(example2):
+def test_example2s_seating_set_is_the_papers(example2):
     S = fixel.seating_set(example2)
     apex, generators, linear, threshold = derive(example2.to_dict(), P)
     assert S.apex == tuple(apex)

@@ -36,13 +36,13 @@ def in_h_form(h, p):
 
 
 @given(name=st.sampled_from(DOF3), p=st.tuples(fractions, fractions, fractions))
-def test_random_impulse_membership(cases, name, p):
+def test_a_random_impulse_is_in_s_exactly_when_it_meets_every_halfspace(cases, name, p):
     S, h = cases[name]
     assert S.contains(p) == in_h_form(h, p)
 
 
 @given(name=st.sampled_from(DOF3), lam=st.lists(weights, min_size=4, max_size=4))
-def test_near_boundary_membership(cases, name, lam):
+def test_impulses_exactly_on_facets_are_members_as_the_h_form_says(cases, name, lam):
     """apex + Σ λ_k r_k with some λ exactly 0: points on facets, exactly."""
     S, h = cases[name]
     p = [S.apex[k] + sum(lam[j % 4] * r[k] for j, r in enumerate(S.rays)) for k in range(3)]
@@ -52,7 +52,7 @@ def test_near_boundary_membership(cases, name, lam):
 
 
 @given(p=st.tuples(fractions, fractions, fractions))
-def test_example2_v_form_from_physics(example2, p):
+def test_example2s_s_derived_here_from_the_physics_is_the_cores(example2, p):
     """Example 2: S = apex + cone(−g_i) with apex and g_i derived in the test."""
     apex, generators, linear, threshold = derive(example2.to_dict(), list(p))
     rays = [[-x for x in g] for g in generators]
