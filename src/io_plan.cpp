@@ -29,10 +29,10 @@ json window_json(const Magnitudes& m) {
 }
 
 std::string width_text(const Magnitudes& m) {
-  const double w = relative_width(m);
   if (m.empty) return "";
-  if (!std::isfinite(w)) return " (unbounded above: any harder push also lands)";
-  return " (relative width " + internal::decimal(100 * w, 3) + "%: (max - min) / min)";
+  if (!m.hi) return " (unbounded above: any harder push also lands)";
+  if (m.lo == 0) return " (from 0: a relative width (max - min) / min is not defined)";
+  return " (relative width " + internal::decimal(100 * relative_width(m), 3) + "%: (max - min) / min)";
 }
 
 }  // namespace
@@ -50,6 +50,7 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
               {"status", to_string(plan.in_S)},
               {"magnitudes", window_json(plan.magnitudes_S)}};
   if (plan.sample_impulse) {
+    one["sample_push"] = exact_json(VectorQ(*plan.sample_impulse - scene.background_impulse));
     one["sample_impulse"] = exact_json(*plan.sample_impulse);
     one["sample_outcomes"] = {{"total", plan.sample_outcomes.total}, {"seating", plan.sample_outcomes.seating}};
     if (plan.sample_in_G) one["sample_in_G"] = *plan.sample_in_G;
@@ -76,11 +77,25 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
 
 namespace {
 
-// The direction of a normal of any length, as a unit vector (display).
+// Whether q is the square of a rational, and its root.
+bool rational_sqrt(const Rational& q, Rational& root) {
+  if (q < 0) return false;
+  const Integer n = boost::multiprecision::numerator(q), d = boost::multiprecision::denominator(q);
+  const Integer rn = boost::multiprecision::sqrt(n), rd = boost::multiprecision::sqrt(d);
+  if (rn * rn != n || rd * rd != d) return false;
+  root = Rational(rn) / Rational(rd);
+  return true;
+}
+
+// The direction of a normal of any length, as a unit vector: exact when its
+// length is rational, else decimals marked ≈ (display).
 std::string unit_text(const Vec2& n) {
-  const double x = to_double(n.x), y = to_double(n.y), length = std::hypot(x, y);
+  Rational length;
+  if (rational_sqrt(n.x * n.x + n.y * n.y, length) && length != 0)
+    return "(" + internal::readable(Rational(n.x / length)) + ", " + internal::readable(Rational(n.y / length)) + ")";
+  const double x = to_double(n.x), y = to_double(n.y), approx_length = std::hypot(x, y);
   std::ostringstream out;
-  out << std::setprecision(6) << "(≈ " << x / length << ", ≈ " << y / length << ")";
+  out << std::setprecision(6) << "(≈ " << x / approx_length << ", ≈ " << y / approx_length << ")";
   return out.str();
 }
 
@@ -97,15 +112,21 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
                         "for the whole fan"
                       : "")
       << "\n";
-  out << "  wrench direction g = " << internal::readable(plan.wrench_direction) << " (force, moment about Cm)\n";
+  out << "  wrench direction g = " << internal::readable(plan.wrench_direction)
+      << " (force in N*s, moment about the centre of mass in N*m*s, frame A; a direction: its length comes from the "
+         "curve's parametrization, and |p| below is the size of the force part)\n";
   out << "  one-step: can seat: " << to_string(plan.in_S);
   if (plan.in_S == RegionStatus::kIn)
     out << ", |p| in " << plan.magnitudes_S.describe_readable() << " N*s" << width_text(plan.magnitudes_S);
   out << "\n";
   if (plan.sample_impulse) {
     const OutcomeCount& c = plan.sample_outcomes;
-    out << "    at p = " << internal::readable(*plan.sample_impulse) << " N*s (inside the window): " << c.total
-        << " one-step outcome(s), " << c.seating << " seat" << (c.total > 1 ? " (see `fixel solutions`)" : "");
+    const VectorQ push = *plan.sample_impulse - scene.background_impulse;
+    out << "    at p = " << internal::readable(push) << " N*s (|p| inside the window)";
+    if (!scene.background_impulse.isZero())
+      out << ", with the scene's b0 the impulse b0 + p = " << internal::readable(*plan.sample_impulse) << " N*s";
+    out << ": " << c.total << " one-step outcome(s), " << c.seating << " seat"
+        << (c.total > 1 ? " (see `fixel solutions`)" : "");
     if (plan.sample_in_G) out << "; " << (*plan.sample_in_G ? "in G" : "not in G");
     out << "\n";
   }

@@ -31,15 +31,24 @@ constexpr double kValidatedRotation = 0.2;
 std::string seat_rotation_note(const SeatedPose& q) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(5);
-  if (std::abs(q.approx[2]) >= kValidatedRotation)
+  // The commands named here are whole ones: this note ends the reports of
+  // seat --sustained, push-plan and region, which take neither option.
+  const std::string validate =
+      "validate in Box2D with `fixel region SCENE --push sustained --validate N` or `fixel push SCENE --at K:U`";
+  if (std::abs(q.approx[2]) >= kValidatedRotation) {
     out << "warning: |theta*| = " << std::abs(q.approx[2]) << " rad >= " << kValidatedRotation
         << " rad: J is decided at q* only; in Box2D, pushes in J failed more often on the way to such seats "
-           "(docs/physics.md). Use the approach-aware J' (--approach), and validate with `fixel region --push "
-           "sustained --validate N`.\n";
-  else
+           "(docs/physics.md). ";
+    if (q.exact)
+      out << "Use the approach-aware J' (`fixel region SCENE --push sustained --approach`), and " << validate << ".\n";
+    else
+      out << "J' needs an exact seat, which this scene's curved contact does not give: " << validate << ".\n";
+  } else {
     out << "note: |theta*| = " << std::abs(q.approx[2])
         << " rad; J (and J') are decided in the model linearised at q*: far from the seat the part can still escape "
-           "(docs/physics.md, \"Where J and J' fail\"); validate with --validate N.\n";
+           "(docs/physics.md, \"Where J and J' fail\"); "
+        << validate << ".\n";
+  }
   return out.str();
 }
 
@@ -242,9 +251,14 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
       << (q.at_scene_pose ? ", the scene pose (every gap is 0)"
                           : (q.exact ? ", exact in a quadratic field" : ", enclosed (curved contacts)"))
       << "\n";
-  if (!q.exact)
-    out << "  certified enclosure (contacts on curved pieces): theta in [" << q.enclosure[2][0] << ", "
-        << q.enclosure[2][1] << "] rad; tests it cannot decide are reported as undecided/partial\n";
+  if (!q.exact) {
+    // Enough digits that the two ends differ (the stream's fixed 5 showed
+    // [-0.30031, -0.30031]): the enclosure's width is the point.
+    std::ostringstream ends;
+    ends << std::setprecision(17) << "[" << q.enclosure[2][0] << ", " << q.enclosure[2][1] << "]";
+    out << "  certified enclosure (contacts on curved pieces): theta in " << ends.str()
+        << " rad; tests it cannot decide are reported as undecided/partial\n";
+  }
   if (q.exact && !q.at_scene_pose)
     out << "  exact: x = " << (*q.exact)[0].text() << ", y = " << (*q.exact)[1].text()
         << ",\n         cos theta = " << (*q.exact)[2].text() << ", sin theta = " << (*q.exact)[3].text() << "\n";
@@ -260,7 +274,8 @@ std::string sustained_text(const Scene& scene, const SustainedSet& J, const std:
   } else {
     out << "J: " << J.pieces.size() << " convex cone piece(s); any push magnitude works (J is a cone).\n";
     out << "strongly stable at the seat for every w in J: " << (J.strongly_stable ? "yes" : "no")
-        << " (theorem; contact-mode enumeration checked " << J.stability_checks << " wrench(es))\n";
+        << " (theorem, docs/theory.md 10.3; contact-mode enumeration checked " << J.stability_checks << " wrench(es)"
+        << (J.stability_checks == 0 ? ": it runs only at a rational seat, and this one is not" : "") << ")\n";
   }
   out << "cone {w : -w in int cone(W_n*)}: rays (fx, fy, m) ~";
   for (const auto& r : J.cone.rays)

@@ -183,7 +183,7 @@ SeatedPose seated_pose_curved(const Scene& scene) {
     const auto [k, s] = locate(b, {to_double(fx.p_AoF_A.x), to_double(fx.p_AoF_A.y)}, d2);
     if (d2 > 1e-12 * size2)
       throw SceneError(fixel_path(i) + ".point", "(" + to_string(fx.p_AoF_A.x) + ", " + to_string(fx.p_AoF_A.y) + ")",
-                       "is not on the part's boundary (distance " + std::to_string(std::sqrt(d2)) + ")");
+                       "is not on the part's boundary (distance " + std::to_string(std::sqrt(d2)) + " m)");
     load_piece(b, k, cs[i]);
     const Rational fxq = fx.p_AoF_A.x - fx.gap * fx.n_A.x, fyq = fx.p_AoF_A.y - fx.gap * fx.n_A.y;
     cs[i].f = {to_double(fxq), to_double(fyq)};

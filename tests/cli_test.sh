@@ -349,7 +349,7 @@ expect 0 "no sustained_piece_*.off: J's pieces are undecided here" -- "$fixel" d
 grep -q "midpoints of their certified enclosures" "$tmp/dr/sustained_cone.json" || { echo "FAIL: sidecar says nothing of the enclosures"; fail=1; }
 # design --svg draws corner intervals (it once failed on a zero-length one); verify --json counts.
 expect 0 'wrote' -- "$fixel" design "$src/data/scenes/polygon.json" --spacing 1/2 --top 3 --svg "$tmp/ds.svg" --quiet
-expect 0 '"passed_count": 15,' -- "$fixel" verify --json
+expect 0 '"passed_count": 16,' -- "$fixel" verify --json
 if command -v rsvg-convert > /dev/null; then
   rsvg-convert -w 1100 "$tmp/rr.svg" -o "$tmp/rr.png" || { echo "FAIL: svg does not rasterise"; fail=1; }
   head -c 8 "$tmp/rr.png" | od -An -tx1 | grep -q "89 50 4e 47 0d 0a 1a 0a" || { echo "FAIL: not a PNG"; fail=1; }
@@ -359,6 +359,17 @@ fi
 expect 0 'one-step: can seat: in, |p| in [' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10
 expect 0 'one-step outcome(s)' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10
 expect 0 '"relative_width"' -- "$fixel" push-plan "$src/data/scenes/blob.json" --at 0:10 --json
+# A window from 0 up to a finite end is not "unbounded above" (it said so);
+# the sample is the push p, and with b0 the impulse b0 + p is named as such.
+expect 0 '|p| in (0, 96997/41752 ≈ 2.32317] N*s (from 0: a relative width (max - min) / min is not defined)' -- "$fixel" push-plan "$src/data/scenes/nonunique_part.json" --at 0:5
+expect 0 'at p = (0, -96997/83504, 0) ≈ (0, -1.16159, 0) N*s (|p| inside the window), with the scene'"'"'s b0 the impulse b0 + p = (29157/10540, -6990573/3806800, -1169839/263500)' -- "$fixel" push-plan "$src/data/scenes/nonunique_part.json" --at 0:5
+expect 0 '"sample_push": [' -- "$fixel" push-plan "$src/data/scenes/nonunique_part.json" --at 0:5 --json
+# An exact unit normal is printed exactly; notes name whole commands that exist.
+expect 0 'push along the inward normal (0, 1)' -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:1/2
+expect 0 'validate in Box2D with `fixel region SCENE --push sustained --validate N`' -- "$fixel" seat "$src/data/scenes/polygon.json" --sustained
+expect 0 "J' needs an exact seat" -- "$fixel" seat "$src/data/scenes/example2_rounded.json" --sustained
+expect 0 'theta in [-0.3003104513' -- "$fixel" seat "$src/data/scenes/example2_rounded.json" --sustained
+expect 0 'checked 0 wrench(es): it runs only at a rational seat' -- "$fixel" seat "$src/data/scenes/polygon.json" --sustained
 expect 0 'sustained push: seats and stays: in' -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
 expect 0 "approach-aware J': in (no pair" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:19/8
 expect 0 "approach-aware J': out: fixels[0] and fixels[2] can hold" -- "$fixel" push-plan "$src/data/scenes/polygon.json" --at 0:17/8
