@@ -168,7 +168,7 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
   const std::string of_scored =
       c.bounded ? " of the " + std::to_string(c.no_form_closure + c.j_empty + c.regions) + " scored" : "";
   s << "dropped: " << c.singular << " with W_n singular (never scored), " << c.no_form_closure << of_scored
-    << " without form closure; pruned: " << c.j_empty << " with J empty (score 0, no region); " << c.regions
+    << " without form closure, " << c.j_empty << " with J empty (score 0, no region); " << c.regions
     << " regions computed; ";
   if (c.bounded) s << c.bounded << " never scored (pair bound below the K-th score); ";
   s << c.jobs << " threads, " << std::fixed << std::setprecision(2) << c.seconds << " s\n";
@@ -194,7 +194,7 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
     }
     s << "\n   sustained " << score_text(l.sustained_score)
       << (l.sustained_empty && *l.sustained_empty ? " (J empty)" : "") << ", one-step " << score_text(l.step_score)
-      << std::setprecision(4) << ", J width " << l.j_width << "\n";
+      << std::setprecision(4) << ", J width " << l.j_width << " (of all wrench directions)\n";
     if (!l.note.empty()) s << "   note: " << l.note << "\n";
   }
   if (shipped)

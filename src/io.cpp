@@ -195,7 +195,8 @@ static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, cons
   out << "Seating set S of scene \"" << scene.name << "\" (dof " << S.dof << ", " << scene.num_contacts()
       << " fixels; the one-step model: one impulse, one backward-Euler step of h = "
       << internal::readable(scene.time_step) << " s)\n";
-  out << "  units: impulses in N*s (px, py) and N*m*s (ptheta); velocities in m/s and rad/s; frame A\n";
+  out << (S.dof == 3 ? "  units: impulses in N*s (px, py) and N*m*s (ptheta); velocities in m/s and rad/s; frame A\n"
+                     : "  units: impulses in N*s (px, py); velocities in m/s; frame A\n");
   out << "  seating velocity nu+ = " << text(S.nu_plus) << "\n";
   for (int i = 0; i < scene.num_contacts(); ++i)
     out << "  fixel " << i << ": v_t = " << internal::readable(S.tangential_velocity[i]) << " m/s"

@@ -158,7 +158,7 @@ std::string region_text(const Scene& scene, const Region& region) {
   if (region.exact)
     out << ": root isolation" << (region.digits ? ", digits " + std::to_string(region.digits) : "");
   else if (region.resolution)
-    out << ", resolution " << to_string(*region.resolution);
+    out << ", resolution " << to_string(*region.resolution) << " of curve parameter";
   else if (region.resolution_length)
     out << ", resolution length " << internal::readable(*region.resolution_length)
         << " m (each sub-piece left partial is at most this long)";

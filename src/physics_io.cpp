@@ -76,11 +76,11 @@ std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r) 
   if (r.time_to_seat) out << " at t = " << *r.time_to_seat << " s";
   if (r.outcome == Outcome::kJammed) out << " (open: fixel " << list(r.open_fixels) << ")";
   out << "\n";
-  out << "final pose (x, y, theta): (" << r.final_pose.x << ", " << r.final_pose.y << ", " << r.final_pose.theta
+  out << "final pose (x m, y m, theta rad): (" << r.final_pose.x << ", " << r.final_pose.y << ", " << r.final_pose.theta
       << ") after " << r.time_end << " s\n";
-  out << "final gaps:";
+  out << "final gaps (m):";
   for (double g : r.final_gaps) out << " " << g;
-  out << "  (seated below " << r.gap_tolerance << ")\n";
+  out << "  (seated below " << r.gap_tolerance << " m)\n";
   out << "contacts at the end: " << list(r.contacts_at_rest) << "\n";
   out << "engine: dt " << r.dt << " s, " << r.steps << " steps, length scale " << r.length_scale
       << " units/m, part size " << r.part_size << " m; the push's time scale " << r.time_scale << " s\n";

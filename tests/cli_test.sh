@@ -485,7 +485,7 @@ expect 4 'the pair bound applies up to 1024, so every one of the 11655753980 tri
 # The pair bound: same best layout as scoring every triple, most triples never scored.
 expect 0 'never scored (pair bound below the K-th score)' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 # The singular triples are never scored, so they are not counted "of the scored".
-expect 0 'dropped: 105 with W_n singular (never scored), 1 of the 59 scored without form closure;' -- "$fixel" design "$src/data/scenes/polygon.json" --quiet
+expect 0 'dropped: 105 with W_n singular (never scored), 1 of the 59 scored without form closure, 4 with J empty (score 0, no region);' -- "$fixel" design "$src/data/scenes/polygon.json" --quiet
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive
 expect 0 '"bounded": 0,' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive --json

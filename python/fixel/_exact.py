@@ -63,7 +63,8 @@ def _text(x, field):
         x, (numbers.Rational, decimal.Decimal)
     ):
         raise TypeError(
-            f"{field}: {x!r} is a float, which is not exact (0.1 is stored as "
+            f"{field}: {x!r} is a float, which is not exact input: fixel refuses every float, even one whose "
+            "binary value is exact (0.1 is stored as "
             "3602879701896397/36028797018963968); pass a Fraction, an int or a string "
             "such as '1/10' or '0.1', or fixel.exact(x) for the float's exact binary value"
         )
@@ -117,6 +118,10 @@ def vector(p, field):
             else:
                 raise _Slow
     except (_Slow, ValueError):
+        slow = True
+    else:
+        slow = False
+    if slow:  # outside the except block: an error here is not chained to _Slow
         return [text(x, f"{field}[{i}]") for i, x in enumerate(p)]  # names the entry on error
     return out
 

@@ -118,6 +118,12 @@ class Region:
             f"(in {c['in']}, out {c['out']}, partial {c['partial']}), {len(self.corners)} corners listed>"
         )
 
+    @property
+    def meaning(self):
+        """What IN means here, naming the model, as every report says it
+        (e.g. "one-step: can seat", "sustained push: seats and stays")."""
+        return self._impl.meaning
+
     def counts(self):
         """Number of intervals per status: {"in": .., "out": .., "partial": ..}."""
         out = {"in": 0, "out": 0, "partial": 0}

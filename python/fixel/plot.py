@@ -47,8 +47,11 @@ def region(ax, scene, region, samples_per_unit=48, fixels=True, linewidth=3):
     cx, cy = map(float, _fractions(d["body"]["center_of_mass"]))
     ax.plot([cx], [cy], "+", color="black", markersize=10, markeredgewidth=2)
     ax.set_aspect("equal")
+    # Labelled by model, as every report is: "in" alone would not say in what.
+    meaning = region._impl.meaning
     for status, colour in COLOURS.items():
-        ax.plot([], [], color=colour, linewidth=linewidth, label=status)
+        label = f"in: {meaning}" if status == "in" else ("partial (undecided)" if status == "partial" else status)
+        ax.plot([], [], color=colour, linewidth=linewidth, label=label)
     return ax
 
 

@@ -88,6 +88,7 @@ RegionOptions region_options(const std::string& resolution, const std::string& c
 
 void bind_region(py::module_& m) {
   py::class_<Region, RegionPtr>(m, "Region")
+      .def_property_readonly("meaning", [](const Region& r) { return in_meaning(r); })
       .def_property_readonly("intervals",
                              [](const Region& r) {
                                py::list out;

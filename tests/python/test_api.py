@@ -243,6 +243,10 @@ def test_the_plot_helpers_draw_the_region_and_the_wrench_sphere(polygon):
     assert fixel.plot.region(a, polygon, r) is a
     assert fixel.plot.wrench_sphere(b, polygon, r) is b
     assert a.lines and b.lines
+    # The legend names the model, as every report does.
+    labels = [line.get_label() for line in a.lines]
+    assert r.meaning == "one-step: can seat" and "in: one-step: can seat" in labels
+    assert fixel.region(polygon, push="sustained", resolution="1/16").meaning == "sustained push: seats and stays"
     plt.close(fig)
 
 

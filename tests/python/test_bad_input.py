@@ -305,3 +305,10 @@ def test_an_endless_iterator_is_read_no_further_than_a_vector_can_be_long(S):
     with pytest.raises(fixel.InputError, match="has more than 10000 entries"):
         S.contains(iter(int, 1))
     assert S.contains(iter([-1, -1, -1])) == S.contains((-1, -1, -1))
+
+
+def test_a_float_is_refused_with_one_clear_error_not_chained_to_an_internal_one():
+    S = fixel.seating_set(fixel.Scene.load(SCENE_DIR / "polygon.json"))
+    with pytest.raises(TypeError, match=r"^p\[0\]: -0.5 is a float, which is not exact input") as e:
+        S.contains((-0.5, -1, 0))
+    assert e.value.__context__ is None and e.value.__cause__ is None
