@@ -180,6 +180,9 @@ void check_design(const Scene& part, const DesignOptions& o) {
   if (o.mu_hi && *o.mu_hi < o.mu)
     throw InputError("DesignOptions.mu", to_string(o.mu) + "," + to_string(*o.mu_hi), "has lo > hi");
   if (o.pusher_mu < 0) throw InputError("DesignOptions.pusher_mu", to_string(o.pusher_mu), "must be >= 0");
+  if (o.pusher_mu_lo && (*o.pusher_mu_lo < 0 || *o.pusher_mu_lo > o.pusher_mu))
+    throw InputError("DesignOptions.pusher_mu", to_string(*o.pusher_mu_lo) + "," + to_string(o.pusher_mu),
+                     "must be 0 <= lo <= hi");
   if (o.gap < 0) throw InputError("DesignOptions.gap", to_string(o.gap), "must be >= 0");
   if (o.top <= 0) throw InputError("DesignOptions.top", std::to_string(o.top), "must be > 0");
   if (o.jobs < 0 || o.jobs > kMaxJobs)

@@ -232,6 +232,10 @@ Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candid
   const bool step = o.push == DesignPush::kStep;
   double worst = 0;
   Scene s = layout_scene(part, candidates, layout.fixels, o, step, &worst);
+  if (o.pusher_mu_lo && *o.pusher_mu_lo < o.pusher_mu) {  // the scene keeps the interval it was judged over
+    s.pusher_mu = *o.pusher_mu_lo;
+    s.pusher_mu_hi = o.pusher_mu;
+  }
   std::vector<int> rounded;
   for (int k = 0; k < 3; ++k) {
     Fixel& f = s.fixels[static_cast<std::size_t>(k)];

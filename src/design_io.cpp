@@ -134,7 +134,8 @@ std::string design_json(const Scene& part, const DesignResult& r, const DesignOp
   doc["push"] = push_name(o);
   doc["resolution"] = to_string(o.resolution);
   doc["mu"] = o.mu_hi ? json::array({to_string(o.mu), to_string(*o.mu_hi)}) : json(to_string(o.mu));
-  doc["pusher_mu"] = to_string(o.pusher_mu);
+  doc["pusher_mu"] =
+      o.pusher_mu_lo ? json::array({to_string(*o.pusher_mu_lo), to_string(o.pusher_mu)}) : json(to_string(o.pusher_mu));
   doc["gap"] = to_string(o.gap);
   doc["candidates"] = json::array();
   for (const auto& c : r.candidates) doc["candidates"].push_back(candidate_json(c));
@@ -161,7 +162,10 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
   std::ostringstream s;
   s << "part " << part.name << ": " << r.stats.candidates << " candidates, " << r.stats.triples << " triples\n";
   s << "push " << push_name(o) << ", resolution " << to_string(o.resolution) << ", fixel mu " << mu_text(o)
-    << ", pusher mu " << to_string(o.pusher_mu) << ", gap " << to_string(o.gap) << " (one-step score)\n";
+    << ", pusher mu "
+    << (o.pusher_mu_lo ? to_string(*o.pusher_mu_lo) + ".." + to_string(o.pusher_mu) + " (judged at the upper end)"
+                       : to_string(o.pusher_mu))
+    << ", gap " << to_string(o.gap) << " (one-step score)\n";
   const DesignStats& c = r.stats;
   // With the bound, the counts after "singular" are of the triples scored;
   // the singular ones are never scored.

@@ -485,6 +485,13 @@ expect 4 'the pair bound applies up to 1024, so every one of the 11655753980 tri
 # The pair bound: same best layout as scoring every triple, most triples never scored.
 expect 0 'never scored (pair bound below the K-th score)' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 # The singular triples are never scored, so they are not counted "of the scored".
+# A pusher friction interval is judged at its upper end (the same layouts
+# and scores as 1/10 alone) and kept in the layout's scene.
+a=$("$fixel" design "$src/data/scenes/polygon.json" --pusher-mu 1/20,1/10 --top 2 --json --scene-out "$tmp/pmu.json" | grep '"score"')
+b=$("$fixel" design "$src/data/scenes/polygon.json" --pusher-mu 1/10 --top 2 --json | grep '"score"')
+[ -n "$a" ] && [ "$a" = "$b" ] || { echo "FAIL: design with a pusher interval ranks differently from its upper end"; fail=1; }
+python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['pusher']['mu'] == ['1/20', '1/10']" "$tmp/pmu.json" ||
+  { echo "FAIL: design --scene-out lost the pusher friction interval"; fail=1; }
 expect 0 'dropped: 105 with W_n singular (never scored), 1 of the 59 scored without form closure, 4 with J empty (score 0, no region);' -- "$fixel" design "$src/data/scenes/polygon.json" --quiet
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1
 expect 0 '#1 fixels [0] curve 0 u=37/512 [14] curve 0 u=713/256 [22] curve 0 u=4749/1024' -- "$fixel" design "$src/data/scenes/polygon.json" --top 1 --exhaustive

@@ -298,6 +298,26 @@ GTEST_TEST(Design, FrictionShrinksTheScoreButKeepsTheMirrorTie) {
   EXPECT_LT(r.layouts[0].score, frictionless_score);
 }
 
+// A pusher friction interval is judged at its upper end, and a layout's
+// scene keeps the whole interval (it was written as the upper end alone).
+GTEST_TEST(Design, APusherFrictionIntervalIsJudgedAtItsUpperEndAndKeptInTheLayoutsScene) {
+  const Scene part = house();
+  DesignOptions upper = frictionless();
+  upper.pusher_mu = Rational(1, 10);
+  DesignOptions ranged = upper;
+  ranged.pusher_mu_lo = Rational(1, 20);
+  const DesignResult a = design(part, house_candidates(part), ranged), b = design(part, house_candidates(part), upper);
+  ASSERT_EQ(a.layouts.size(), b.layouts.size());
+  for (std::size_t k = 0; k < a.layouts.size(); ++k) EXPECT_EQ(a.layouts[k].score, b.layouts[k].score);
+  ASSERT_FALSE(a.layouts.empty());
+  const Scene scene = design_scene(part, a.candidates, a.layouts[0], 1, ranged);
+  EXPECT_EQ(scene.pusher_mu, Rational(1, 20));
+  EXPECT_EQ(scene.pusher_mu_hi, std::optional<Rational>(Rational(1, 10)));
+  EXPECT_FALSE(design_scene(part, b.candidates, b.layouts[0], 1, upper).pusher_mu_hi.has_value());
+  ranged.pusher_mu_lo = Rational(1, 5);  // above the upper end
+  EXPECT_THROW(design(part, house_candidates(part), ranged), InputError);
+}
+
 GTEST_TEST(Design, TheRankingIsTheSameWithOneAndTwoThreads) {
   const Scene part = scene_file("polygon");
   const auto cands = boundary_candidates(part, std::nullopt);

@@ -48,6 +48,10 @@ struct DesignOptions {
   /// Pusher friction (the upper end of an interval: the region shrinks as
   /// it grows, docs/theory.md §10.4).
   Rational pusher_mu = Rational(0);
+  /// With a pusher friction interval [pusher_mu_lo, pusher_mu]: its lower
+  /// end. Layouts are judged at pusher_mu; a layout's scene keeps the
+  /// interval.
+  std::optional<Rational> pusher_mu_lo;
   /// Gap given to every fixel for the one-step score (the sustained score
   /// is for the seat: gap 0).
   Rational gap = Rational(0);

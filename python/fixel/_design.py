@@ -114,11 +114,9 @@ def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive=
     lo, hi = _mu_pair(mu, "mu")
     if pusher_mu is None:
         pusher_mu = scene.to_dict().get("pusher", {}).get("mu", "0")
-        if isinstance(pusher_mu, list):
-            pusher_mu = pusher_mu[-1]
-    else:
-        plo, phi = _mu_pair(pusher_mu, "pusher_mu")
-        pusher_mu = phi if phi is not None else plo
+    # Judged at the upper end; the lower end goes into a layout's scene.
+    plo, phi = _mu_pair(pusher_mu, "pusher_mu")
+    pusher_mu, pusher_mu_lo = (phi, plo) if phi is not None else (plo, None)
     top = whole(top, "top")
     jobs = None if jobs is None else whole(jobs, "jobs")
     if not isinstance(exhaustive, bool):
@@ -129,6 +127,7 @@ def _options(scene, push, resolution, mu, pusher_mu, gap, top, jobs, exhaustive=
         "mu": lo,
         "mu_hi": hi,
         "pusher_mu": text(pusher_mu, "pusher_mu"),
+        "pusher_mu_lo": pusher_mu_lo,
         "gap": text(gap, "gap"),
         "top": top,
         "jobs": 0 if jobs is None else jobs,
@@ -197,12 +196,14 @@ def design_scene(part, design, rank=1):
     scene = _part(part)
     doc = design.document
     lo, hi = _mu_pair(doc["mu"], "mu")
+    plo, phi = _mu_pair(doc["pusher_mu"], "pusher_mu")
     options = {
         "push": doc["push"],
         "resolution": doc["resolution"],
         "mu": lo,
         "mu_hi": hi,
-        "pusher_mu": doc["pusher_mu"],
+        "pusher_mu": phi if phi is not None else plo,
+        "pusher_mu_lo": plo if phi is not None else None,
         "gap": doc["gap"],
     }
     layout = design.layouts[rank - 1]

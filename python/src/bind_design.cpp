@@ -43,7 +43,7 @@ std::string text_item(const py::dict& d, const char* key, const char* fallback) 
   return py::str(d[key]);
 }
 
-// {"push", "resolution", "mu", "mu_hi", "pusher_mu", "gap", "top", "jobs", "bound"}.
+// {"push", "resolution", "mu", "mu_hi", "pusher_mu", "pusher_mu_lo", "gap", "top", "jobs", "bound"}.
 DesignOptions options_of(const py::dict& d) {
   DesignOptions o;
   const std::string push = text_item(d, "push", "sustained");
@@ -53,6 +53,8 @@ DesignOptions options_of(const py::dict& d) {
   o.mu = parse_rational(text_item(d, "mu", "1/10"), "mu");
   if (d.contains("mu_hi") && !d["mu_hi"].is_none()) o.mu_hi = parse_rational(py::str(d["mu_hi"]), "mu");
   o.pusher_mu = parse_rational(text_item(d, "pusher_mu", "0"), "pusher_mu");
+  if (d.contains("pusher_mu_lo") && !d["pusher_mu_lo"].is_none())
+    o.pusher_mu_lo = parse_rational(py::str(d["pusher_mu_lo"]), "pusher_mu");
   o.gap = parse_rational(text_item(d, "gap", "0"), "gap");
   o.top = d.contains("top") ? d["top"].cast<int>() : 5;
   o.jobs = d.contains("jobs") && !d["jobs"].is_none() ? d["jobs"].cast<int>() : 0;

@@ -60,6 +60,12 @@ DesignOptions design_options(const Scene& part, const DesignArgs& a) {
     for (const auto& f : part.fixels) o.mu = std::max(o.mu, f.mu_upper());
   }
   o.pusher_mu = a.pusher_mu.empty() ? part.pusher_mu_upper() : parse_pusher_mu(a.pusher_mu);
+  // An interval's lower end goes into the layout's scene (--scene-out).
+  if (a.pusher_mu.empty()) {
+    if (part.pusher_mu_hi) o.pusher_mu_lo = part.pusher_mu;
+  } else if (const auto both = parse_rational_list(a.pusher_mu, "--pusher-mu"); both.size() == 2) {
+    o.pusher_mu_lo = both[0];
+  }
   o.gap = parse_rational(a.gap, "--gap");
   o.top = a.top;
   o.jobs = a.jobs;

@@ -65,6 +65,15 @@ def test_the_house_ranks_its_mirror_pair_first_with_equal_exact_scores():
     assert d.layouts[0].fixels[2].point == (Fraction(-1), Fraction(-1, 2))
 
 
+def test_a_pusher_friction_interval_is_judged_at_its_upper_end_and_kept_in_the_layouts_scene():
+    ranged = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=0, pusher_mu=("1/20", "1/10"), **SMALL)
+    upper = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=0, pusher_mu="1/10", **SMALL)
+    assert [l.score for l in ranged.layouts] == [l.score for l in upper.layouts]
+    assert ranged.document["pusher_mu"] == ["1/20", "1/10"]
+    assert fixel.design_scene(HOUSE, ranged).to_dict()["pusher"]["mu"] == ["1/20", "1/10"]
+    assert fixel.design_scene(HOUSE, upper).to_dict()["pusher"]["mu"] == "1/10"
+
+
 def test_a_layout_as_a_scene_gives_its_score_through_the_region():
     d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=("1/20", "1/10"), pusher_mu="1/50", **SMALL)
     scene = fixel.design_scene(HOUSE, d)
