@@ -5,9 +5,10 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
 #include <sstream>
@@ -22,13 +23,14 @@ namespace {
 
 std::string reason_of(int error) { return std::strerror(error); }
 
-// The file a path names after following its symbolic links, also when the
-// last link dangles (its target is then created, as a shell redirect
-// would). Bounded like the kernel's own limit on a chain of links.
-fs::path followed(const fs::path& given) {
+// The file a path names after following its symbolic links by their text,
+// for a path whose target does not exist yet (a dangling link: its target
+// is made, as a shell redirect would). Bounded like the kernel's chain.
+fs::path followed_text(const fs::path& given, const std::string& field, const std::string& shown) {
   fs::path path = given;
   std::error_code ec;
-  for (int hops = 0; hops < 40 && fs::is_symlink(path, ec); ++hops) {
+  for (int hops = 0; fs::is_symlink(path, ec); ++hops) {
+    if (hops == 40) throw InputError(field, shown, "cannot be written: too many levels of symbolic links");
     const fs::path target = fs::read_symlink(path, ec);
     if (ec) break;
     path = target.is_absolute() ? target : path.parent_path() / target;
@@ -36,16 +38,11 @@ fs::path followed(const fs::path& given) {
   return path;
 }
 
-// A path that opens one of this process's standard streams: written into
-// that stream. Reopening it would truncate a redirected log, or write at
-// offsets the shell's descriptor does not know.
-std::ostream* standard_stream(const std::string& path) {
-  if (path == "/dev/stdout" || path == "/dev/fd/1" || path == "/proc/self/fd/1") return &std::cout;
-  if (path == "/dev/stderr" || path == "/dev/fd/2" || path == "/proc/self/fd/2") return &std::cerr;
-  return nullptr;
+// Whether `st` is the file behind descriptor `fd`.
+bool same_file(const struct stat& st, int fd) {
+  struct stat other {};
+  return ::fstat(fd, &other) == 0 && other.st_dev == st.st_dev && other.st_ino == st.st_ino;
 }
-
-bool in_special_tree(const std::string& path) { return path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0; }
 
 // Writes all of `text` to `fd`; the errno of the failure, or 0.
 int write_all(int fd, const std::string& text) {
@@ -61,9 +58,11 @@ int write_all(int fd, const std::string& text) {
   return 0;
 }
 
-// Writes `text` into `path` itself (truncating it); the errno, or 0.
+// Writes `text` into the existing `path` itself (truncating it); the
+// errno, or 0. Without O_CREAT, which protected_regular refuses for
+// another user's file in a sticky folder.
 int write_in_place(const std::string& path, const std::string& text) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
   if (fd < 0) return errno;
   int error = write_all(fd, text);
   if (::close(fd) != 0 && error == 0) error = errno;
@@ -85,34 +84,50 @@ int make_temporary(const fs::path& folder, std::string& name) {
   return -1;
 }
 
-}  // namespace
+// A refusal of permission, as opposed to a full disk or another failure:
+// only then is FILE itself written in place, as a shell redirect would.
+bool refused(int error) { return error == EACCES || error == EPERM || error == EROFS; }
 
-namespace {
-
-// Where a write of `path_given` goes, checked before anything is computed
-// or written: throws the errors that need no writing to find.
+// Where a write of `path_given` goes, found before anything is computed or
+// written; throws the errors that need no writing to find.
 struct Target {
-  fs::path path;  // after following symbolic links
+  fs::path path;  // the file itself, every symbolic link followed
   fs::path folder;
-  fs::file_status status;
   bool exists = false;
-  bool special = false;  // a FIFO, device or stream: written into, not renamed over
+  struct stat st {};
+  std::ostream* stream = nullptr;  // fixel's own standard output or error
+  bool special = false;            // a FIFO, device or socket: written into, not renamed over
 };
 
 Target target_of(const std::string& path_given, const std::string& field, SpecialFile special) {
   if (path_given.empty()) throw InputError(field, "", "cannot be written: the path is empty");
-  std::error_code ec;
-  if (fs::is_directory(path_given, ec)) throw InputError(field, path_given, "cannot be written: it is a folder");
   Target t;
-  t.path = followed(path_given);
-  t.status = fs::status(t.path, ec);
-  t.exists = fs::exists(t.status);
-  t.special = (t.exists && !fs::is_regular_file(t.status)) || in_special_tree(path_given) ||
-              in_special_tree(t.path.string()) || standard_stream(path_given) != nullptr;
-  if (t.special && special == SpecialFile::kRefuse)
-    throw InputError(field, path_given, "cannot be written: it is not a regular file (a FIFO, device or stream)");
-  if (t.special) return t;
+  // The kernel resolves the path (magic links such as /dev/stdout included).
+  if (::stat(path_given.c_str(), &t.st) == 0) {
+    t.exists = true;
+    if (S_ISDIR(t.st.st_mode)) throw InputError(field, path_given, "cannot be written: it is a folder");
+    // Whatever the name (/dev/stdout, /dev/fd/1, a link to either), the file
+    // behind fixel's own output is written through its stream: reopened, a
+    // redirected log would be truncated or replaced.
+    if (same_file(t.st, STDOUT_FILENO)) t.stream = &std::cout;
+    if (same_file(t.st, STDERR_FILENO)) t.stream = &std::cerr;
+    t.special = t.stream != nullptr || !S_ISREG(t.st.st_mode);
+    if (t.special && special == SpecialFile::kRefuse)
+      throw InputError(field, path_given, "cannot be written: it is not a regular file (a FIFO, device or stream)");
+    if (t.special) return t;
+    char resolved[PATH_MAX];
+    if (::realpath(path_given.c_str(), resolved) == nullptr)
+      throw InputError(field, path_given, "cannot be written: " + reason_of(errno));
+    t.path = resolved;
+  } else if (errno == ELOOP) {
+    throw InputError(field, path_given, "cannot be written: too many levels of symbolic links");
+  } else if (errno == EACCES) {
+    throw InputError(field, path_given, "cannot be written: a folder on its path cannot be searched");
+  } else {
+    t.path = followed_text(path_given, field, path_given);
+  }
   t.folder = t.path.has_parent_path() ? t.path.parent_path() : fs::path(".");
+  std::error_code ec;
   if (!fs::is_directory(t.folder, ec))
     throw InputError(field, path_given, "cannot be written: no such folder " + t.folder.string());
   if (t.exists && ::access(t.path.c_str(), W_OK) != 0)
@@ -131,9 +146,6 @@ void check_writable(const std::string& path_given, const std::string& field, Spe
 void write_file(const std::string& path_given, const std::string& field,
                 const std::function<void(std::ostream&)>& write, SpecialFile special) {
   const Target t = target_of(path_given, field, special);
-  const fs::path& path = t.path;
-  const bool exists = t.exists;
-  const auto& status = t.status;
 
   // The whole text first: an exception from `write` then leaves no file.
   std::ostringstream buffer;
@@ -141,32 +153,47 @@ void write_file(const std::string& path_given, const std::string& field,
   if (!buffer) throw InputError(field, path_given, "could not be written completely");
   const std::string text = buffer.str();
 
-  if (std::ostream* stream = standard_stream(path_given)) {
-    *stream << text;
-    stream->flush();
-    if (!*stream) throw InputError(field, path_given, "could not be written completely");
+  if (t.stream != nullptr) {
+    *t.stream << text;
+    t.stream->flush();
+    if (!*t.stream) throw InputError(field, path_given, "could not be written completely");
     return;
   }
-  if (t.special) {  // nothing there to keep: written into
-    const int error = write_in_place(path.string(), text);
+  if (t.special) {  // nothing there to keep: written into, by the name given (the kernel resolves it)
+    const int error = write_in_place(path_given, text);
     if (error != 0) throw InputError(field, path_given, "could not be written completely (" + reason_of(error) + ")");
     return;
   }
-  const fs::path& folder = t.folder;
+  const std::string path = t.path.string();
+  // The folder takes no new file (or, in a sticky folder, FILE may not be
+  // replaced) but FILE itself may be written: in place, as a shell redirect
+  // would. Then no earlier copy is kept, and a failure says so.
+  auto in_place = [&](int why) {
+    const int error = write_in_place(path, text);
+    if (error == 0) return;
+    throw InputError(field, path_given,
+                     "could not be written completely (" + reason_of(error) +
+                         "): written in place, since the folder refused a new file (" + reason_of(why) +
+                         "), so the earlier file is lost");
+  };
   std::string temporary;
-  const int fd = make_temporary(folder, temporary);
+  const int fd = make_temporary(t.folder, temporary);
   if (fd < 0) {
     const int error = errno;
-    // The folder takes no new file, but the file itself may be written:
-    // in place, as a shell redirect would (no earlier copy is kept then).
-    if (exists && write_in_place(path.string(), text) == 0) return;
+    if (t.exists && refused(error)) return in_place(error);
     throw InputError(field, path_given,
-                     "cannot be written: " + reason_of(error) + " (in folder " + folder.string() + ")");
+                     "cannot be written: " + reason_of(error) + " (making a file in " + t.folder.string() + ")");
   }
   int error = write_all(fd, text);
-  // The replacement keeps the earlier file's permissions (a group-shared
-  // picture stays so); its owner is the writer, as on any rename.
-  if (error == 0 && exists) ::fchmod(fd, static_cast<mode_t>(status.permissions()) & 07777);
+  // The replacement keeps the earlier file's permissions and group (a
+  // group-shared picture stays so, when the writer is in that group); its
+  // owner is the writer, as on any replacement by rename.
+  if (error == 0 && t.exists) {
+    ::fchmod(fd, t.st.st_mode & 07777);
+    if (::fchown(fd, static_cast<uid_t>(-1), t.st.st_gid) != 0) {
+      // not in that group: the writer's own, as a new file
+    }
+  }
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) {
     ::unlink(temporary.c_str());
@@ -175,6 +202,7 @@ void write_file(const std::string& path_given, const std::string& field,
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     error = errno;
     ::unlink(temporary.c_str());
+    if (t.exists && refused(error)) return in_place(error);
     throw InputError(field, path_given, "cannot be written: " + reason_of(error));
   }
 }

@@ -113,8 +113,9 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
                       : "")
       << "\n";
   out << "  wrench direction g = " << internal::readable(plan.wrench_direction)
-      << " (force in N*s, moment about the centre of mass in N*m*s, frame A; a direction: its length comes from the "
-         "curve's parametrization, and |p| below is the size of the force part)\n";
+      << " (force, moment about the centre of mass, frame A: N*s and N*m*s for the one-step impulse, N and N*m for "
+         "a held push; a direction: its length comes from the curve's parametrization, and |p| below is the size of "
+         "the force part)\n";
   out << "  one-step: can seat: " << to_string(plan.in_S);
   if (plan.in_S == RegionStatus::kIn)
     out << ", |p| in " << plan.magnitudes_S.describe_readable() << " N*s" << width_text(plan.magnitudes_S);

@@ -224,7 +224,8 @@ void write_push_svg(const std::string& path, const Scene& scene, const PushResul
       out << caption(first + 48) << "the push (" << w->fx << ", " << w->fy << ", " << w->m
           << "): its line of action passes " << line_distance << " m from the centre of mass, off the picture";
     else
-      out << caption(first + 48) << "the push (" << w->fx << ", " << w->fy << ", " << w->m << ") is a pure moment";
+      out << caption(first + 48) << "the push (" << w->fx << ", " << w->fy << ", " << w->m << ") is "
+          << (w->m == 0 ? "zero" : "a pure moment");
     out << "</text>\n";
   }
   out << "</svg>\n";

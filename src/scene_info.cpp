@@ -34,7 +34,7 @@ SceneInfo scene_info(const Scene& scene) {
         std::string(e.what()));
   }
   const std::string sustained =
-      "the sustained-push analyses (seat --sustained, region --push sustained, dump --sustained, push --at) refuse "
+      "the sustained-push analyses (seat --sustained, region --push sustained, dump --sustained) refuse "
       "this scene: ";
   bool sustained_fixture = true;
   try {

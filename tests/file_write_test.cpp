@@ -2,6 +2,7 @@
 // so that a failed write keeps the earlier file whole.
 #include "fixel/internal/file_write.h"
 
+#include <grp.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -20,6 +21,7 @@ namespace fixel {
 namespace {
 
 namespace fs = std::filesystem;
+using internal::check_writable;
 using internal::SpecialFile;
 using internal::write_file;
 
@@ -174,16 +176,20 @@ GTEST_TEST(WriteFile, StandardOutputIsWrittenIntoTheStreamItself) {
 }
 
 // Runs `f` as an unprivileged user when this is root (root may write any
-// file); its exit status.
+// file); its exit status, or kCannotRun when that user cannot be taken or
+// cannot reach `dir` (a private TMPDIR, an unmapped uid).
+constexpr int kCannotRun = 77;
 template <typename F>
-int as_unprivileged(F f) {
+int as_unprivileged(const std::string& dir, F f) {
   const pid_t pid = fork();
+  if (pid < 0) return kCannotRun;
   if (pid == 0) {
-    if (geteuid() == 0 && (setgid(65534) != 0 || setuid(65534) != 0)) _exit(100);
+    if (geteuid() == 0 && (setgroups(0, nullptr) != 0 || setgid(65534) != 0 || setuid(65534) != 0)) _exit(kCannotRun);
+    if (access(dir.c_str(), X_OK) != 0) _exit(kCannotRun);
     _exit(f());
   }
-  int status = 0;
-  waitpid(pid, &status, 0);
+  int status = -1;
+  if (waitpid(pid, &status, 0) != pid) return kCannotRun;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 101;
 }
 
@@ -196,7 +202,7 @@ GTEST_TEST(WriteFile, AReadOnlyFileIsRefusedAndAWritableOneInAReadOnlyFolderIsWr
   const std::string read_only = dir + "/ro.svg";
   std::ofstream(read_only) << "keep\n";
   fs::permissions(read_only, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
-  const int refused = as_unprivileged([&] {
+  const int refused = as_unprivileged(dir, [&] {
     try {
       write_file(read_only, "svg(path)", text);
       return 1;
@@ -204,6 +210,7 @@ GTEST_TEST(WriteFile, AReadOnlyFileIsRefusedAndAWritableOneInAReadOnlyFolderIsWr
       return std::string(e.what()) == "svg(path): " + read_only + " cannot be written: it is read-only" ? 0 : 2;
     }
   });
+  if (refused == kCannotRun) GTEST_SKIP() << "cannot run as another user that reaches " << dir;
   EXPECT_EQ(refused, 0);
   EXPECT_EQ(read(read_only), "keep\n");
 
@@ -212,9 +219,11 @@ GTEST_TEST(WriteFile, AReadOnlyFileIsRefusedAndAWritableOneInAReadOnlyFolderIsWr
   const std::string writable = locked + "/w.svg";
   std::ofstream(writable) << "earlier\n";
   fs::permissions(writable, fs::perms::all);
-  fs::permissions(locked, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                              fs::perms::others_read | fs::perms::others_exec);
-  const int written = as_unprivileged([&] {
+  // No one may make a file in it, its owner included (so the in-place path
+  // runs also when this test is not root).
+  fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  const int written = as_unprivileged(dir, [&] {
     try {
       write_file(writable, "svg(path)", text);
       return 0;
@@ -224,7 +233,74 @@ GTEST_TEST(WriteFile, AReadOnlyFileIsRefusedAndAWritableOneInAReadOnlyFolderIsWr
   });
   EXPECT_EQ(written, 0);
   EXPECT_EQ(read(writable), "new\n");
+  int temporaries = 0;
+  for (const auto& e : fs::directory_iterator(locked)) temporaries += e.path().filename().string() != "w.svg";
+  EXPECT_EQ(temporaries, 0);
   fs::permissions(locked, fs::perms::all);
+}
+
+// In a sticky folder (as /tmp) another user's writable file may be written
+// but not replaced: the rename is refused, so it is written in place, as a
+// shell redirect writes it (it was an error after the whole computation).
+GTEST_TEST(WriteFile, AnotherUsersWritableFileInAStickyFolderIsWrittenInPlace) {
+  if (geteuid() != 0) GTEST_SKIP() << "needs root, to own a file another user then writes";
+  const std::string dir = folder("sticky");
+  fs::permissions(dir, fs::perms::all | fs::perms::sticky_bit);
+  const std::string shared = dir + "/shared.svg";
+  std::ofstream(shared) << "earlier\n";
+  fs::permissions(shared, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                              fs::perms::group_write | fs::perms::others_read | fs::perms::others_write);
+  const int written = as_unprivileged(dir, [&] {
+    try {
+      check_writable(shared, "svg(path)");    // the early check lets it through ...
+      write_file(shared, "svg(path)", text);  // ... and the write succeeds
+      return 0;
+    } catch (const InputError&) {
+      return 1;
+    }
+  });
+  if (written == kCannotRun) GTEST_SKIP() << "cannot run as another user that reaches " << dir;
+  EXPECT_EQ(written, 0);
+  EXPECT_EQ(read(shared), "new\n");
+}
+
+// /dev/stdout under any name (a link to it, /dev//stdout) is fixel's own
+// output: written into its stream, never reopened or replaced.
+GTEST_TEST(WriteFile, StandardOutputUnderAnyNameIsWrittenIntoTheStream) {
+  const std::string dir = folder("stdout_names");
+  fs::create_symlink("/dev/stdout", dir + "/to_stdout");
+  for (const std::string& name : {dir + "/to_stdout", std::string("/dev//stdout"), std::string("/dev/fd/1")}) {
+    testing::internal::CaptureStdout();
+    std::cout << "before\n";
+    write_file(name, "svg(path)", text);
+    std::cout << "after\n";
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), "before\nnew\nafter\n") << name;
+  }
+  EXPECT_TRUE(fs::is_symlink(dir + "/to_stdout"));  // not replaced by a file
+}
+
+// As a shell says: a loop of links is an error, not replaced by a file.
+GTEST_TEST(WriteFile, ALoopOfSymbolicLinksIsAnErrorAndStaysALoop) {
+  const std::string dir = folder("loop");
+  fs::create_symlink(dir + "/b", dir + "/a");
+  fs::create_symlink(dir + "/a", dir + "/b");
+  try {
+    write_file(dir + "/a", "svg(path)", text);
+    ADD_FAILURE() << "a loop of links was written";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "svg(path): " + dir + "/a cannot be written: too many levels of symbolic links");
+  }
+  EXPECT_TRUE(fs::is_symlink(dir + "/a") && fs::is_symlink(dir + "/b"));
+}
+
+// A regular file is written by rename wherever it lives, /dev/shm included
+// (only a path that is not a regular file is written into directly).
+GTEST_TEST(WriteFile, ARegularFileUnderDevIsARegularFile) {
+  if (!fs::is_directory("/dev/shm") || access("/dev/shm", W_OK) != 0) GTEST_SKIP() << "no writable /dev/shm";
+  const std::string path = "/dev/shm/fixel_file_write_test_" + std::to_string(getpid()) + ".json";
+  write_file(path, "save_scene(path)", text, SpecialFile::kRefuse);
+  EXPECT_EQ(read(path), "new\n");
+  fs::remove(path);
 }
 
 }  // namespace

@@ -69,7 +69,7 @@ GTEST_TEST(SceneInfo, WarnsWhenTheAnalysesRefuseTheSceneWithTheirOwnError) {
   const std::string one_step =
       "the one-step analyses (seat, region, sample, simulate, solutions, push-plan, dump) refuse this scene: ";
   const std::string sustained =
-      "the sustained-push analyses (seat --sustained, region --push sustained, dump --sustained, push --at) refuse "
+      "the sustained-push analyses (seat --sustained, region --push sustained, dump --sustained) refuse "
       "this scene: ";
   // The warning is the analysis' own error, word for word.
   auto error_of = [](auto analysis) {

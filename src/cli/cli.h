@@ -48,6 +48,10 @@ void end_progress();
 // `renamed_over`: the file is written beside and renamed over the path
 // (save_scene), so an existing FIFO or device there is refused too.
 void check_writable(const std::string& path, const std::string& flag, bool renamed_over = false);
+/// Throws InputError naming `flag` unless files can be made in the folder
+/// `path`: an existing folder that is writable, or one that can be made
+/// (its nearest existing ancestor is a writable folder).
+void check_output_folder(const std::string& path, const std::string& flag);
 
 /// A pusher μ, or an interval "lo,hi", judged at its upper end.
 Rational parse_pusher_mu(const std::string& text);

@@ -74,6 +74,8 @@ struct DumpArgs {
 
 int run_dump(const DumpArgs& a) {
   arm_run_control(a.run);
+  check_output_folder(a.off_dir, "--off");  // before anything is computed, as for every output
+  const Rational length = parse_rational(a.length_text, "--length");
   const Scene scene = read_scene(a.scene_path);
   if (a.sustained) {
     const SustainedSet J = sustained_set(scene);
@@ -85,7 +87,6 @@ int run_dump(const DumpArgs& a) {
   const SeatingSet S = seating_set(scene);
   std::optional<GuaranteedSet> G;
   if (a.guaranteed) G = guaranteed_set(scene, S, run_control());
-  const Rational length = parse_rational(a.length_text, "--length");
   for (const auto& path : dump_off(scene, S, a.off_dir, length, G ? &*G : nullptr))
     std::cout << "wrote " << path << "\n";
   return 0;

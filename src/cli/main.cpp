@@ -1,5 +1,6 @@
 // The fixel command line: parses arguments, runs the chosen subcommand, and
 // turns the library's typed errors into messages and exit codes.
+#include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <map>
@@ -72,6 +73,10 @@ void maybe_print_filter_stats() {
 
 int main(int argc, char** argv) {
   using namespace fixel::cli;
+  // Past a file-size limit (ulimit -f) a write fails with EFBIG, which the
+  // writers report and clean up after, instead of the signal killing fixel
+  // with a temporary file left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"fixel: exact one-push part seating against a fixture (Egan, Berard & Trinkle)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("fixel 0.1.0"));

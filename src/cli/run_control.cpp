@@ -88,6 +88,19 @@ void check_writable(const std::string& path, const std::string& flag, bool renam
                            renamed_over ? internal::SpecialFile::kRefuse : internal::SpecialFile::kWriteDirectly);
 }
 
+void check_output_folder(const std::string& path, const std::string& flag) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = path.empty() ? fs::path(".") : fs::path(path);
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec)) throw InputError(flag, path, "is not a folder");
+  // The folder, or the nearest ancestor that exists (the rest is made).
+  while (!fs::exists(p, ec) && p.has_parent_path() && p.parent_path() != p) p = p.parent_path();
+  if (!fs::exists(p, ec)) p = ".";
+  if (!fs::is_directory(p, ec)) throw InputError(flag, path, "cannot be made: " + p.string() + " is not a folder");
+  if (access(p.c_str(), W_OK | X_OK) != 0)
+    throw InputError(flag, path, "cannot be written: no permission to make files in " + p.string());
+}
+
 // The region shrinks as the pusher's μ grows (docs/theory.md §10), so an
 // interval is judged at its upper end.
 Rational parse_pusher_mu(const std::string& text) {

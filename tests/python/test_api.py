@@ -136,17 +136,17 @@ def test_resolution_length_gives_each_piece_its_own_width_as_the_cli_does(polygo
         fixel.region(polygon, resolution_length="1/4", exact=True)
 
 
-# blob32's region at resolution 2^-200 runs for about 2 s (it took 0.2 s
-# at the default resolution before the filters, now 2 ms), stopped at 0.6 s:
-# long enough for the ticks below on any machine.
-FINE = "1/%d" % 2**200
+# blob32's region with the paper's cone at resolution 2^-60 runs for
+# minutes (the default region took 0.2 s before the filters, now 2 ms),
+# stopped at 0.6 s: long enough for the ticks below on any machine.
+LONG = dict(cone="paper", resolution="1/%d" % 2**60)
 
 
 def test_the_progress_callback_ticks_while_the_core_runs(polygon):
     events = []
     blob32 = fixel.Scene.load(SCENE_DIR / "blob32.json")
     with pytest.raises(fixel.StoppedError):
-        fixel.region(blob32, resolution=FINE, max_seconds=0.6, progress=lambda stage, t: events.append((stage, t)))
+        fixel.region(blob32, **LONG, max_seconds=0.6, progress=lambda stage, t: events.append((stage, t)))
     assert events[0] == ("start", 0.0) and events[-1][0] == "done"  # "done" also when stopped
     running = [t for stage, t in events[1:-1]]
     assert all(stage == "running" for stage, _ in events[1:-1])
@@ -181,7 +181,7 @@ def test_gil_released_during_region():
     t = threading.Thread(target=count)
     t.start()
     with pytest.raises(fixel.StoppedError):
-        fixel.region(scene, resolution=FINE, max_seconds=0.6)
+        fixel.region(scene, **LONG, max_seconds=0.6)
     done.set()
     t.join()
     assert len(ticks) > 10  # about 600 with the GIL released, 1 if it were held

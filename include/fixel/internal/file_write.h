@@ -18,15 +18,16 @@ enum class SpecialFile { kWriteDirectly, kRefuse };
 /// created exclusively, so no planted link is followed) and renamed over
 /// `path`: an error (a full disk, an exception from `write`) leaves an
 /// earlier file at `path` whole and no temporary file. The replacement keeps
-/// the earlier file's permissions. A symbolic link is written through (its
-/// target made or replaced, also when it dangles). A read-only file is
-/// refused. When the folder takes no new file but the file itself is
-/// writable, it is written in place (as a shell redirect would). A FIFO or
-/// device, or a path under /dev or /proc, is written into directly (or
-/// refused); /dev/stdout and /dev/stderr are this process's streams,
-/// written into std::cout and std::cerr. Throws InputError(field, path,
-/// reason): "cannot be written: ..." (an empty path, a folder, no such
-/// folder, read-only, ...) or "could not be written completely (...)".
+/// the earlier file's permissions (and group, when allowed). A symbolic
+/// link is written through (its target made or replaced, also when it
+/// dangles); a loop is an error. A read-only file is refused. When the
+/// folder refuses a new file (or the rename) for lack of permission but the
+/// file itself is writable, it is written in place (as a shell redirect
+/// would). A path that is not a regular file (a FIFO, a device) is written
+/// into directly (or refused); one that is this process's standard output
+/// or error, by any name, is written into std::cout or std::cerr. Throws
+/// InputError(field, path, reason): "cannot be written: ..." or "could not
+/// be written completely (...)".
 void write_file(const std::string& path, const std::string& field, const std::function<void(std::ostream&)>& write,
                 SpecialFile special = SpecialFile::kWriteDirectly);
 
