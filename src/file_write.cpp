@@ -59,10 +59,12 @@ int write_all(int fd, const std::string& text) {
 }
 
 // Writes `text` into the existing `path` itself (truncating it); the
-// errno, or 0. Without O_CREAT, which protected_regular refuses for
-// another user's file in a sticky folder.
-int write_in_place(const std::string& path, const std::string& text) {
+// errno, or 0, and whether it was opened (then its earlier text is gone).
+// Without O_CREAT, which protected_regular refuses for another user's file
+// in a sticky folder.
+int write_in_place(const std::string& path, const std::string& text, bool* opened = nullptr) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (opened != nullptr) *opened = fd >= 0;
   if (fd < 0) return errno;
   int error = write_all(fd, text);
   if (::close(fd) != 0 && error == 0) error = errno;
@@ -113,7 +115,9 @@ Target target_of(const std::string& path_given, const std::string& field, Specia
     if (same_file(t.st, STDERR_FILENO)) t.stream = &std::cerr;
     t.special = t.stream != nullptr || !S_ISREG(t.st.st_mode);
     if (t.special && special == SpecialFile::kRefuse)
-      throw InputError(field, path_given, "cannot be written: it is not a regular file (a FIFO, device or stream)");
+      throw InputError(field, path_given,
+                       t.stream != nullptr ? "cannot be written: it is fixel's own standard output or error"
+                                           : "cannot be written: it is not a regular file (a FIFO or device)");
     if (t.special) return t;
     char resolved[PATH_MAX];
     if (::realpath(path_given.c_str(), resolved) == nullptr)
@@ -123,6 +127,8 @@ Target target_of(const std::string& path_given, const std::string& field, Specia
     throw InputError(field, path_given, "cannot be written: too many levels of symbolic links");
   } else if (errno == EACCES) {
     throw InputError(field, path_given, "cannot be written: a folder on its path cannot be searched");
+  } else if (errno == ENAMETOOLONG || errno == ENOTDIR) {
+    throw InputError(field, path_given, "cannot be written: " + reason_of(errno));
   } else {
     t.path = followed_text(path_given, field, path_given);
   }
@@ -169,8 +175,13 @@ void write_file(const std::string& path_given, const std::string& field,
   // replaced) but FILE itself may be written: in place, as a shell redirect
   // would. Then no earlier copy is kept, and a failure says so.
   auto in_place = [&](int why) {
-    const int error = write_in_place(path, text);
+    bool opened = false;
+    const int error = write_in_place(path, text, &opened);
     if (error == 0) return;
+    if (!opened)  // untouched
+      throw InputError(
+          field, path_given,
+          "cannot be written: " + reason_of(error) + " (and the folder refused a new file: " + reason_of(why) + ")");
     throw InputError(field, path_given,
                      "could not be written completely (" + reason_of(error) +
                          "): written in place, since the folder refused a new file (" + reason_of(why) +
@@ -202,7 +213,9 @@ void write_file(const std::string& path_given, const std::string& field,
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     error = errno;
     ::unlink(temporary.c_str());
-    if (t.exists && refused(error)) return in_place(error);
+    // Refused, or FILE is a mount point (a file bind-mounted into a
+    // container): it can still be written in place.
+    if (t.exists && (refused(error) || error == EBUSY || error == EXDEV)) return in_place(error);
     throw InputError(field, path_given, "cannot be written: " + reason_of(error));
   }
 }

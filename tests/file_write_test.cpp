@@ -139,11 +139,27 @@ GTEST_TEST(WriteFile, APlantedLinkBesideTheFileRedirectsNothingAndNoTemporaryIsL
   EXPECT_EQ(entries, 0);
 }
 
-GTEST_TEST(WriteFile, ANameOfTheLongestLegalLengthIsWritten) {
+GTEST_TEST(WriteFile, ANameOfTheLongestLegalLengthIsWrittenAndALongerOneRefusedBeforeWriting) {
   const std::string dir = folder("long");
   const std::string name = dir + "/" + std::string(250, 'b');  // NAME_MAX is 255
   write_file(name, "svg(path)", text);
   EXPECT_EQ(read(name), "new\n");
+  const std::string too_long = dir + "/" + std::string(300, 'b');
+  for (int early = 0; early < 2; ++early) {
+    try {
+      bool written = false;
+      if (early)
+        check_writable(too_long, "svg(path)");  // the command line's check before computing
+      else
+        write_file(too_long, "svg(path)", [&](std::ostream& out) {
+          written = true;
+          out << "new\n";
+        });
+      ADD_FAILURE() << "a 300-byte name was accepted" << (written ? " and written" : "");
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("cannot be written: File name too long"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // As a shell redirect does: the link's target is created, the link kept.
