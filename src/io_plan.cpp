@@ -9,6 +9,7 @@
 #include "fixel/internal/json_exact.h"
 #include "fixel/internal/readable.h"
 #include "fixel/io.h"
+#include "fixel/on_boundary.h"
 
 namespace fixel {
 
@@ -77,22 +78,11 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
 
 namespace {
 
-// Whether q is the square of a rational, and its root.
-bool rational_sqrt(const Rational& q, Rational& root) {
-  if (q < 0) return false;
-  const Integer n = boost::multiprecision::numerator(q), d = boost::multiprecision::denominator(q);
-  const Integer rn = boost::multiprecision::sqrt(n), rd = boost::multiprecision::sqrt(d);
-  if (rn * rn != n || rd * rd != d) return false;
-  root = Rational(rn) / Rational(rd);
-  return true;
-}
-
 // The direction of a normal of any length, as a unit vector: exact when its
 // length is rational, else decimals marked ≈ (display).
 std::string unit_text(const Vec2& n) {
-  Rational length;
-  if (rational_sqrt(n.x * n.x + n.y * n.y, length) && length != 0)
-    return "(" + internal::readable(Rational(n.x / length)) + ", " + internal::readable(Rational(n.y / length)) + ")";
+  if (const auto unit = exact_unit(n))
+    return "(" + internal::readable(unit->x) + ", " + internal::readable(unit->y) + ")";
   const double x = to_double(n.x), y = to_double(n.y), approx_length = std::hypot(x, y);
   std::ostringstream out;
   out << std::setprecision(6) << "(≈ " << x / approx_length << ", ≈ " << y / approx_length << ")";
