@@ -409,6 +409,8 @@ done
 # dump checks its folder before computing anything.
 echo x > "$tmp/not_a_folder"
 expect 2 "--off: $tmp/not_a_folder/sub cannot be made: $tmp/not_a_folder is not a folder" -- "$fixel" dump "$src/data/scenes/polygon.json" --sustained --off "$tmp/not_a_folder/sub"
+ln -sfn "$tmp/nowhere/x" "$tmp/dangling_off"
+expect 2 "--off: $tmp/dangling_off is a link to a folder that does not exist" -- "$fixel" dump "$src/data/scenes/polygon.json" --off "$tmp/dangling_off"
 
 # Scene checks (issue 16 §4): fixels on the outline, friendlier normals, info, stdin, batches, b0.
 python3 - "$src/data/scenes/polygon.json" "$tmp" <<'PY'

@@ -93,6 +93,8 @@ void check_output_folder(const std::string& path, const std::string& flag) {
   std::error_code ec;
   fs::path p = path.empty() ? fs::path(".") : fs::path(path);
   if (fs::exists(p, ec) && !fs::is_directory(p, ec)) throw InputError(flag, path, "is not a folder");
+  if (fs::is_symlink(fs::symlink_status(p, ec)) && !fs::exists(p, ec))
+    throw InputError(flag, path, "is a link to a folder that does not exist");
   // The folder, or the nearest ancestor that exists (the rest is made).
   while (!fs::exists(p, ec) && p.has_parent_path() && p.parent_path() != p) p = p.parent_path();
   if (!fs::exists(p, ec)) p = ".";
