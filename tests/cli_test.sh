@@ -489,6 +489,12 @@ h_in=$("$fixel" region "$tmp/house_best.json" --push sustained --resolution 1/64
 expect 2 '--scene-out: '"$tmp"'/none.json was not written: there is no layout (only 2 candidates' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json" --scene-out "$tmp/none.json"
 [ ! -e "$tmp/none.json" ] || { echo "FAIL: --scene-out wrote a file without a layout"; fail=1; }
 expect 2 '--scene-out: '"$tmp"'/no/x.json cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --scene-out "$tmp/no/x.json"
+# --svg and --scene-out naming one file (by another spelling, or through a link, even a dangling one) are
+# refused before any work: the scene would replace the picture.
+ln -s "$tmp/same.svg" "$tmp/same_link.svg"
+expect 2 '--scene-out: '"$tmp"'/./same.svg names the same file as --svg' -- "$fixel" design "$tmp/house.json" --svg "$tmp/same.svg" --scene-out "$tmp/./same.svg"
+expect 2 '--scene-out: '"$tmp"'/same.svg names the same file as --svg' -- "$fixel" design "$tmp/house.json" --svg "$tmp/same_link.svg" --scene-out "$tmp/same.svg"
+[ ! -e "$tmp/same.svg" ] || { echo "FAIL: design wrote a file although --svg and --scene-out name one file"; fail=1; }
 expect 4 'design: time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --exhaustive --spacing 1/4 --max-seconds 0.5 --quiet
 expect 4 'time limit reached after' -- "$fixel" design "$src/data/scenes/blob.json" --spacing 1/16 --max-seconds 0.2 --quiet
 # Past 1,024 candidates every triple is scored, and said so; 4,121 candidates (11.7e9 triples) must not exhaust memory.

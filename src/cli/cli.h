@@ -48,6 +48,11 @@ void end_progress();
 // `renamed_over`: the file is written beside and renamed over the path
 // (save_scene), so an existing FIFO or device there is refused too.
 void check_writable(const std::string& path, const std::string& flag, bool renamed_over = false);
+/// Throws InputError naming `flag_b` when `path_b` names the same file as
+/// `path_a` (by its text, through links, or as the same existing file):
+/// the second output would replace the first. Empty paths are not asked for.
+void check_distinct_outputs(const std::string& path_a, const std::string& flag_a, const std::string& path_b,
+                            const std::string& flag_b);
 /// Throws InputError naming `flag` unless files can be made in the folder
 /// `path`: an existing folder that is writable, or one that can be made
 /// (its nearest existing ancestor is a writable folder).

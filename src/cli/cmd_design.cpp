@@ -78,6 +78,7 @@ int run_design(const DesignArgs& a) {
   arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
   check_writable(a.scene_out, "--scene-out", true);
+  check_distinct_outputs(a.svg_path, "--svg", a.scene_out, "--scene-out");
   const Scene part = read_scene(a.scene_path);  // with the plain progress line
   if (run_control()->on_progress) run_control()->on_progress = show_design_progress;
   const DesignOptions o = design_options(part, a);

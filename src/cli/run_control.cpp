@@ -88,6 +88,37 @@ void check_writable(const std::string& path, const std::string& flag, bool renam
                            renamed_over ? internal::SpecialFile::kRefuse : internal::SpecialFile::kWriteDirectly);
 }
 
+namespace {
+
+// The file `path` names, through links (also a dangling one, whose target
+// a write would make); a loop ends after 40 links, as the kernel's does.
+std::filesystem::path file_named(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p = fs::absolute(path, ec);
+  for (int link = 0; link < 40; ++link) {
+    p = fs::weakly_canonical(p, ec);  // the links of the part that exists
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) break;
+    const fs::path target = fs::read_symlink(p, ec);
+    if (ec) break;
+    p = target.is_absolute() ? target : p.parent_path() / target;
+  }
+  return p.lexically_normal();
+}
+
+}  // namespace
+
+void check_distinct_outputs(const std::string& path_a, const std::string& flag_a, const std::string& path_b,
+                            const std::string& flag_b) {
+  namespace fs = std::filesystem;
+  if (path_a.empty() || path_b.empty()) return;
+  std::error_code ec;
+  const bool same_file = fs::exists(path_a, ec) && fs::exists(path_b, ec) && fs::equivalent(path_a, path_b, ec);
+  if (path_a == path_b || file_named(path_a) == file_named(path_b) || (same_file && !ec))
+    throw InputError(flag_b, path_b,
+                     "names the same file as " + flag_a + ": give two files, or the second would replace the first");
+}
+
 void check_output_folder(const std::string& path, const std::string& flag) {
   namespace fs = std::filesystem;
   std::error_code ec;
