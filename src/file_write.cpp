@@ -160,9 +160,15 @@ void write_file(const std::string& path_given, const std::string& field,
   const std::string text = buffer.str();
 
   if (t.stream != nullptr) {
+    // The stream keeps no reason; the failed write(2) leaves it in errno.
+    errno = 0;
     *t.stream << text;
     t.stream->flush();
-    if (!*t.stream) throw InputError(field, path_given, "could not be written completely");
+    const int error = errno;
+    if (!*t.stream)
+      throw InputError(
+          field, path_given,
+          "could not be written completely" + (error != 0 ? " (" + reason_of(error) + ")" : std::string()));
     return;
   }
   if (t.special) {  // nothing there to keep: written into, by the name given (the kernel resolves it)

@@ -651,8 +651,10 @@ fi
 expect 2 '--impulse: "" is empty (an unset variable?)' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse ""
 expect 2 '--pusher-mu: "" is empty' -- "$fixel" region "$src/data/scenes/polygon.json" --pusher-mu ""
 if [ -w /dev/full ] && [ -c /dev/full ]; then
-  expect 2 'standard output: cannot be written' -- bash -c "\"$fixel\" seat \"$src/data/scenes/example2.json\" > /dev/full"
-  expect 2 '--svg: /dev/full could not be written completely' -- "$fixel" seat "$src/data/scenes/example2.json" --svg /dev/full
+  expect 2 'standard output: cannot be written (No space left on device)' -- bash -c "\"$fixel\" seat \"$src/data/scenes/example2.json\" > /dev/full"
+  expect 2 '--svg: /dev/full could not be written completely (No space left on device)' -- "$fixel" seat "$src/data/scenes/example2.json" --svg /dev/full
+  # Into fixel's own stdout, when that is full: the stream's failure with its reason.
+  expect 2 '--svg: /dev/stdout could not be written completely (No space left on device)' -- bash -c "\"$fixel\" seat \"$src/data/scenes/example2.json\" --svg /dev/stdout > /dev/full"
 fi
 expect 2 'is larger than 256 MiB' -- "$fixel" info /dev/zero
 mkfifo "$tmp/fifo"

@@ -1,7 +1,9 @@
 // The fixel command line: parses arguments, runs the chosen subcommand, and
 // turns the library's typed errors into messages and exit codes.
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <new>
@@ -127,9 +129,13 @@ int main(int argc, char** argv) {
         const int code = command.run();
         maybe_print_filter_stats();
         // A full disk or a closed pipe must not pass as success: the answer is lost.
+        errno = 0;  // the stream keeps no reason; the failed write(2) leaves it in errno
         std::cout.flush();
         if (!std::cout) {
-          std::cerr << "fixel: error: standard output: cannot be written (the answer was lost)\n";
+          const int error = errno;
+          std::cerr << "fixel: error: standard output: cannot be written"
+                    << (error != 0 ? std::string(" (") + std::strerror(error) + ")" : std::string())
+                    << " (the answer was lost)\n";
           return kExitBadInput;
         }
         return code;
