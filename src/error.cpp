@@ -19,10 +19,34 @@ std::string shortened(const std::string& text, std::size_t head, std::size_t tai
   return text.substr(0, end) + "…[" + std::to_string(start - end) + " bytes]…" + text.substr(start);
 }
 
+// Control characters (a newline in a file name) are shown escaped, so a
+// message is one line and cannot pass for another.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7F) {
+      out += c;
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else {
+      static const char digits[] = "0123456789abcdef";
+      out += "\\x";
+      out += digits[byte >> 4];
+      out += digits[byte & 0xF];
+    }
+  }
+  return out;
+}
+
 std::string compose(const std::string& field, const std::string& value, const std::string& reason) {
-  std::string out = shortened(field, 200, 40) + ":";
-  if (!value.empty()) out += " " + shortened(value, 600, 200);
-  if (!reason.empty()) out += " " + shortened(reason, 600, 200);
+  std::string out = printable(shortened(field, 200, 40)) + ":";
+  if (!value.empty()) out += " " + printable(shortened(value, 600, 200));
+  if (!reason.empty()) out += " " + printable(shortened(reason, 600, 200));
   return out;
 }
 }  // namespace

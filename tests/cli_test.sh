@@ -489,6 +489,10 @@ h_in=$("$fixel" region "$tmp/house_best.json" --push sustained --resolution 1/64
 expect 2 '--scene-out: '"$tmp"'/none.json was not written: there is no layout (only 2 candidates' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json" --scene-out "$tmp/none.json"
 [ ! -e "$tmp/none.json" ] || { echo "FAIL: --scene-out wrote a file without a layout"; fail=1; }
 expect 2 '--scene-out: '"$tmp"'/no/x.json cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --scene-out "$tmp/no/x.json"
+# A newline in a file name is shown escaped: the message stays one line.
+nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
+[ "$(wc -l <<<"$nl_out")" = 1 ] && grep -qF "$tmp/a\nfixel: b.json: cannot be opened" <<<"$nl_out" ||
+  { echo "FAIL: a newline in a file name: $nl_out"; fail=1; }
 # --svg and --scene-out naming one file (by another spelling, or through a link, even a dangling one) are
 # refused before any work: the scene would replace the picture.
 ln -s "$tmp/same.svg" "$tmp/same_link.svg"

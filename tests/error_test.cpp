@@ -46,6 +46,17 @@ GTEST_TEST(InputError, AValueOfUpTo864BytesIsShownWhole) {
   EXPECT_NE(std::string(InputError("--svg", longer, "cannot be written").what()).find(" bytes]…"), std::string::npos);
 }
 
+// A newline in a file name must not start a line of its own in the message.
+GTEST_TEST(InputError, ControlCharactersAreShownEscapedAndKeptWhole) {
+  const std::string path = std::string("a\nfixel: error: b\tc\r") + '\x01' + '\x7f' + ".json";
+  const InputError e("--svg", path, "cannot be written: no such folder " + path);
+  EXPECT_EQ(std::string(e.what()),
+            "--svg: a\\nfixel: error: b\\tc\\r\\x01\\x7f.json cannot be written: no such folder "
+            "a\\nfixel: error: b\\tc\\r\\x01\\x7f.json");
+  EXPECT_EQ(e.value(), path);
+  EXPECT_STREQ(InputError("x", "μ ≈ 1", "").what(), "x: μ ≈ 1");  // UTF-8 is not escaped
+}
+
 GTEST_TEST(InputError, AShortenedMessageCutsBetweenCharacters) {
   std::string reason;
   for (int k = 0; k < 2000; ++k) reason += k % 3 ? "μ" : "≈";  // two- and three-byte characters
