@@ -1,5 +1,6 @@
 #include "fixel/internal/json_exact.h"
 
+#include <exception>
 #include <set>
 #include <vector>
 
@@ -32,7 +33,7 @@ class ExactDomBuilder {
   bool end_array() { return close(); }
   bool key(json::string_t& k) {
     auto& keys = keys_.back();
-    if (!keys.insert(k).second) throw ParseError(source_, "key \"" + k + "\"", "appears twice in one object");
+    if (!keys.insert(k).second) defer(ParseError(source_, "key \"" + k + "\"", "appears twice in one object"));
     pending_key_ = k;
     return true;
   }
@@ -41,15 +42,24 @@ class ExactDomBuilder {
                      std::string("is not valid JSON (") + ex.what() + ")");
   }
 
-  json result() { return std::move(root_); }
+  // The document, once parsed whole: a syntax error anywhere is reported
+  // before the first error of content, which was kept until now.
+  json result() {
+    if (deferred_) std::rethrow_exception(deferred_);
+    return std::move(root_);
+  }
 
  private:
   // A number becomes its text, so a text field must refuse it here: after
   // this "name": 5 and "name": "5" look the same.
   bool number(const std::string& raw) {
     if (stack_.size() == 1 && stack_.back()->is_object() && text_keys_.count(pending_key_) != 0)
-      throw SceneError(pending_key_, raw, "must be a string, not a number");
+      defer(SceneError(pending_key_, raw, "must be a string, not a number"));
     return put(json(raw));
+  }
+  template <class E>
+  void defer(const E& error) {
+    if (!deferred_) deferred_ = std::make_exception_ptr(error);
   }
   bool put(json value) {
     if (stack_.empty()) {
@@ -94,6 +104,7 @@ class ExactDomBuilder {
   std::vector<json*> stack_;
   std::vector<std::set<std::string>> keys_;
   std::string pending_key_;
+  std::exception_ptr deferred_;
 };
 
 }  // namespace

@@ -125,6 +125,20 @@ GTEST_TEST(Scene, RejectsANumberOrOtherNonTextAsTheNameOrDescription) {
   EXPECT_EQ(parse_scene(example2_with(R"("name": "example2")", R"("name": "5")"), "scene.json").name, "5");
 }
 
+// The whole text is parsed before its content is judged: a syntax error
+// later in the file is the error reported, not the content error before it.
+GTEST_TEST(Scene, ASyntaxErrorAfterAContentErrorIsTheOneReported) {
+  for (const char* early : {R"("name": 5,)", R"("name": "a", "name": "b",)"}) {
+    try {
+      parse_scene(example2_with(R"("name": "example2")", early), "scene.json");
+      FAIL() << early;
+    } catch (const ParseError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("scene.json: at byte ", 0), 0u) << e.what();
+      EXPECT_NE(std::string(e.what()).find("is not valid JSON"), std::string::npos) << e.what();
+    }
+  }
+}
+
 GTEST_TEST(Scene, RejectsMissingFields) {
   expect_error<SceneError>(example2_with(R"("time_step": "1",)", ""), "time_step: is missing");
   expect_error<SceneError>(example2_with(R"("mass": "1", )", ""), "body.mass: is missing");
