@@ -133,13 +133,27 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
     throw InputError("J", std::to_string(J.mu.size()) + " fixels",
                      "is not this scene's sustained-push set (" + std::to_string(scene.fixels.size()) +
                          " fixels): build it with sustained_set(scene)");
-  for (const int curve : J.pose.contact_curve)
-    if (curve < 0 || curve >= static_cast<int>(scene.body.boundary->curves.size()))
+  // seated_pose leaves a contact's curve −1 where it does not locate it: a
+  // closed contact off every polyline edge (on a curved piece), or an
+  // enclosed q*. Anywhere else −1, like a curve beyond the outline's, is
+  // another scene's J.
+  bool on_curved_piece = false;
+  const int curves = static_cast<int>(scene.body.boundary->curves.size());
+  for (std::size_t i = 0; i < J.pose.contact_curve.size(); ++i) {
+    const int curve = J.pose.contact_curve[i];
+    const bool unlocated_here =
+        curve < 0 && (!q.exact || (scene.fixels[i].gap == 0 &&
+                                   !internal::polyline_edge_through(*scene.body.boundary, scene.fixels[i].p_AoF_A,
+                                                                    scene.fixels[i].n_A)));
+    if (curve >= curves || (curve < 0 && !unlocated_here))
       throw InputError("J", "a contact on curve " + std::to_string(curve),
                        "is not on this scene's outline: build J with sustained_set(scene)");
-  if (!q.exact) {
-    A.undecided_reason =
-        "q* is only enclosed (a contact lies on a curved piece); J' needs every contact on a polyline edge";
+    on_curved_piece = on_curved_piece || curve < 0;
+  }
+  if (!q.exact || on_curved_piece) {
+    A.undecided_reason = q.exact ? "a contact lies on a curved piece; J' needs every contact on a polyline edge"
+                                 : "q* is only enclosed (a contact lies on a curved piece); J' needs every contact "
+                                   "on a polyline edge";
     return A;
   }
   auto data = std::make_shared<internal::ApproachData>();

@@ -7,6 +7,7 @@
 
 #include "../bench/random_parts.h"  // the physics studies' seeded random parts
 #include "approach_oracle.h"
+#include "fixel/design.h"
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/approach_data.h"
@@ -153,6 +154,26 @@ TEST(Approach, AJOfAnotherSceneIsAnErrorNotACrash) {
   fewer.fixels.pop_back();
   EXPECT_THROW(approach_set(fewer, J), InputError);
   EXPECT_NO_THROW(approach_set(polygon, J));
+}
+
+// A designed layout of blob: every gap 0, the contacts on its curved
+// pieces, where seated_pose locates none (curve −1). J′ is then undecided
+// with its reason; it was refused as "J of another scene".
+TEST(Approach, ASeatWithContactsOnCurvedPiecesLeavesJPrimeUndecidedNotAnError) {
+  const Scene part = test::scene_file("blob");
+  const auto candidates = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "545/128"},
+      {"curve": 0, "u": "3053/512"}, {"curve": 0, "u": "10599/1024"}]})");
+  DesignOptions o;
+  o.mu = Rational(1, 10);
+  const Scene layout = layout_scene(part, candidates, {0, 1, 2}, o, false);
+  const SustainedSet J = sustained_set(layout);
+  ASSERT_TRUE(J.pose.exact);
+  ASSERT_EQ(J.pose.contact_curve, std::vector<int>(3, -1));
+  const ApproachSet A = approach_set(layout, J);
+  EXPECT_FALSE(A.decided);
+  EXPECT_EQ(A.undecided_reason, "a contact lies on a curved piece; J' needs every contact on a polyline edge");
+  // Beside a scene whose fixels have gaps, the same J is still another scene's.
+  EXPECT_THROW(approach_set(test::scene_file("polygon"), J), InputError);
 }
 
 TEST(Approach, SomeTestPartsTurnFarEnoughToMatter) {

@@ -45,9 +45,9 @@ struct ApproachHold {
 struct ApproachSet {
   /// J at q*, which J′ refines.
   SustainedSet J;
-  /// False when J′ cannot be decided: q* is only enclosed (a contact on a
-  /// curved piece), or a pair on parallel edges can touch both at every
-  /// rotation. `undecided_reason` says which.
+  /// False when J′ cannot be decided: a contact lies on a curved piece
+  /// (q* only enclosed, or exact with every gap 0), or a pair on parallel
+  /// edges can touch both at every rotation. `undecided_reason` says which.
   bool decided = false;
   std::string undecided_reason;
   /// tan(θ*/2), exactly, and θ* (rad, display). Zero at an unrotated seat,
