@@ -45,7 +45,10 @@ json layout_json(const DesignResult& r, const DesignLayout& l, int rank) {
             {"sustained_score", opt_rational(l.sustained_score)},
             {"step_score", opt_rational(l.step_score)},
             {"j_width", finite(l.j_width)},
-            {"normal_angle_error", finite(l.normal_angle_error)}};
+            {"normal_angle_error", finite(l.normal_angle_error)},
+            {"conditioning", finite(l.conditioning)},
+            {"nearly_singular", std::isfinite(l.conditioning) ? json(l.conditioning < kNearlySingular) : json(nullptr)},
+            {"step_seat", l.step_seat.empty() ? json(nullptr) : json(l.step_seat)}};
   if (!l.note.empty()) j["note"] = l.note;
   return j;
 }
@@ -56,9 +59,17 @@ json shipped_json(const DesignLayout& l) {
             {"sustained_empty", l.sustained_empty ? json(*l.sustained_empty) : json(nullptr)},
             {"sustained_score", opt_rational(l.sustained_score)},
             {"step_score", opt_rational(l.step_score)},
-            {"j_width", finite(l.j_width)}};
+            {"j_width", finite(l.j_width)},
+            {"conditioning", finite(l.conditioning)}};
   if (!l.note.empty()) j["note"] = l.note;
   return j;
+}
+
+// Two significant digits (display).
+std::string significant(double x) {
+  std::ostringstream s;
+  s << std::setprecision(2) << x;
+  return s.str();
 }
 
 const char* push_name(const DesignOptions& o) { return o.push == DesignPush::kSustained ? "sustained" : "step"; }
@@ -163,8 +174,9 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
   s << "part " << part.name << ": " << r.stats.candidates << " candidates, " << r.stats.triples << " triples\n";
   s << "push " << push_name(o) << ", resolution " << to_string(o.resolution) << ", fixel mu " << mu_text(o)
     << ", pusher mu "
-    << (o.pusher_mu_lo ? to_string(*o.pusher_mu_lo) + ".." + to_string(o.pusher_mu) + " (judged at the upper end)"
-                       : to_string(o.pusher_mu))
+    << (o.pusher_mu_lo
+            ? "[" + to_string(*o.pusher_mu_lo) + ", " + to_string(o.pusher_mu) + "] (judged at the upper end)"
+            : to_string(o.pusher_mu))
     << ", gap " << to_string(o.gap) << " (one-step score)\n";
   const DesignStats& c = r.stats;
   // With the bound, the counts after "singular" are of the triples scored;
@@ -198,9 +210,23 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
     }
     s << "\n   sustained " << score_text(l.sustained_score)
       << (l.sustained_empty && *l.sustained_empty ? " (J empty)" : "") << ", one-step " << score_text(l.step_score)
-      << std::setprecision(4) << ", J width " << l.j_width << " (of all wrench directions)\n";
+      << std::setprecision(4) << ", J width " << l.j_width << " (of all wrench directions), conditioning "
+      << significant(l.conditioning) << "\n";
+    if (l.conditioning < kNearlySingular)
+      s << "   warning: nearly singular (conditioning below " << significant(kNearlySingular)
+        << "): the three normal lines nearly meet in one point; J is wide in the linearised model, but such layouts "
+           "did not seat in Box2D (docs/design.md): validate with `fixel region LAYOUT --push sustained --validate "
+           "10`\n";
+    if (!l.step_seat.empty())
+      s << "   warning: with gap " << to_string(o.gap)
+        << " no pose closes every gap, so the part cannot seat in this fixture and its one-step score says "
+           "nothing: "
+        << l.step_seat << "\n";
     if (!l.note.empty()) s << "   note: " << l.note << "\n";
   }
+  if (!r.layouts.empty() && r.layouts.front().score == 0)
+    s << "every listed layout scores 0: none has an IN stretch at resolution " << to_string(o.resolution)
+      << " (J or S empty, or the resolution too coarse), so their order is only the triples' order\n";
   if (shipped)
     s << "shipped layout: sustained " << score_text(shipped->sustained_score) << ", one-step "
       << score_text(shipped->step_score) << "\n"

@@ -4,14 +4,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "fixel/design.h"
 #include "fixel/error.h"
 #include "fixel/internal/design_detail.h"
 #include "fixel/internal/region_context.h"
 #include "fixel/internal/region_filter.h"
 #include "fixel/internal/sustained_core.h"
+#include "fixel/lcp.h"
 #include "fixel/progress.h"
 #include "fixel/region_target.h"
+#include "fixel/seated_pose.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
 
@@ -190,6 +194,24 @@ double j_width(const Scene& part, const SustainedSet& J) {
   return total / (4 * M_PI);
 }
 
+// The smallest singular value of W_n with its moment row divided by ρ (the
+// radius of gyration), so that force and moment weigh alike: near 0 when the
+// three normal lines nearly meet in one point. Display only: doubles.
+double conditioning(const Scene& s) {
+  const MatrixQ W = normal_wrench_matrix(s);
+  if (W.rows() != 3 || W.cols() != 3) return std::nan("");
+  const double rho = std::sqrt(to_double(s.body.inertia) / to_double(s.body.mass));
+  Eigen::Matrix3d A;
+  for (int c = 0; c < 3; ++c) {
+    // Unit normals: a layout's scene may carry the candidates' normals unnormalised.
+    const double length = std::hypot(to_double(s.fixels[c].n_A.x), to_double(s.fixels[c].n_A.y));
+    for (int r = 0; r < 3; ++r) A(r, c) = to_double(W(r, c)) / (r == 2 ? rho : 1.0) / length;
+  }
+  // σ_min² is AᵀA's least eigenvalue (ascending order).
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(A.transpose() * A, Eigen::EigenvaluesOnly);
+  return std::sqrt(std::max(0.0, eigen.eigenvalues()(0)));
+}
+
 // The sustained score of a scene with three fixels: J and, if J is not
 // empty, the region against it.
 // With `width` false (ranking every triple) J is built without its pieces'
@@ -298,6 +320,7 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
   for (auto& l : layouts) {
     try {
       const Scene s = layout_scene(part, cands, l.fixels, o, false);
+      l.conditioning = conditioning(s);
       if (!l.sustained_score)
         score_sustained(s, o, total, l, true);
       else if (l.sustained_empty.has_value() && !*l.sustained_empty)  // ranked without J's width
@@ -307,16 +330,27 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
     } catch (const Error& e) {
       l.note += std::string(l.note.empty() ? "" : "; ") + "sustained score: " + e.what();
     }
-    if (l.step_score) continue;
     if (o.mu_hi) {
-      l.note += std::string(l.note.empty() ? "" : "; ") + "no one-step score: it needs one fixel mu, not an interval";
+      if (!l.step_score)
+        l.note += std::string(l.note.empty() ? "" : "; ") + "no one-step score: it needs one fixel mu, not an interval";
       continue;
     }
     try {
       double err = 0;
       const Scene step = layout_scene(part, cands, l.fixels, o, true, &err);
       l.normal_angle_error = err;
-      score_step(step, o, total, l);
+      if (!l.step_score) score_step(step, o, total, l);
+      // With a gap the fixels may be where no pose closes them all: then
+      // the one-step score is of a fixture the part cannot seat in.
+      if (o.gap > 0) {
+        try {
+          seated_pose(step);
+        } catch (const StoppedError&) {
+          throw;
+        } catch (const Error& e) {
+          l.step_seat = e.what();
+        }
+      }
     } catch (const StoppedError&) {
       throw;
     } catch (const Error& e) {
@@ -347,6 +381,7 @@ DesignLayout score_scene_layout(const Scene& scene, const DesignOptions& o) {
   DesignLayout out;
   out.index = -1;
   try {
+    out.conditioning = conditioning(s);
     score_sustained(s, o, total, out, true);
   } catch (const InputError& e) {
     out.note = std::string("no sustained score: ") + e.what();

@@ -103,6 +103,12 @@ struct Target {
 
 Target target_of(const std::string& path_given, const std::string& field, SpecialFile special) {
   if (path_given.empty()) throw InputError(field, "", "cannot be written: the path is empty");
+  // "-" is standard input where fixel reads a scene; as an output it would
+  // silently become a file named "-".
+  if (path_given == "-")
+    throw InputError(field, "-",
+                     "is not an output file: give a file name (./- for a file named -, /dev/stdout for "
+                     "standard output where it is allowed)");
   Target t;
   // The kernel resolves the path (magic links such as /dev/stdout included).
   if (::stat(path_given.c_str(), &t.st) == 0) {

@@ -493,6 +493,10 @@ expect 2 '--scene-out: '"$tmp"'/no/x.json cannot be written: no such folder' -- 
 nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
 [ "$(wc -l <<<"$nl_out")" = 1 ] && grep -qF "$tmp/a\nfixel: b.json: cannot be opened" <<<"$nl_out" ||
   { echo "FAIL: a newline in a file name: $nl_out"; fail=1; }
+# "-" reads a scene from standard input; as an output it is refused, not a file named "-".
+expect 2 '--scene-out: - is not an output file' -- "$fixel" design "$tmp/house.json" --scene-out -
+expect 2 '--svg: - is not an output file' -- "$fixel" seat "$src/data/scenes/example2.json" --svg -
+expect 2 '--off: - is not an output folder' -- "$fixel" dump "$src/data/scenes/example2.json" --off -
 # --svg and --scene-out naming one file (by another spelling, or through a link, even a dangling one) are
 # refused before any work: the scene would replace the picture.
 ln -s "$tmp/same.svg" "$tmp/same_link.svg"

@@ -7,6 +7,7 @@
 /// the boundary's parameter length where a push seats the part.
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,6 +70,11 @@ struct DesignOptions {
   RunControl* control = nullptr;
 };
 
+/// DesignLayout::conditioning below which a report warns (display only):
+/// fig6's top two layouts (6.4e-4) seated 0 of 10 pushes in Box2D, the
+/// layouts checked from 0.0052 up every push (docs/design.md).
+constexpr double kNearlySingular = 0.005;
+
 /// One evaluated layout: three candidates (indices into the candidate list,
 /// increasing) and its scores.
 struct DesignLayout {
@@ -90,6 +96,15 @@ struct DesignLayout {
   /// Largest angle (rad) between a candidate's normal and the rational unit
   /// normal used for the one-step score (display only).
   double normal_angle_error = 0;
+  /// The smallest singular value of W_n (the three normal wrenches, moment
+  /// divided by the radius of gyration): near 0 when the normal lines nearly
+  /// meet in one point (display only; NaN if unknown). Below
+  /// kNearlySingular the model's J can be wide while the engine does not
+  /// seat the part (docs/design.md, "Reading a design").
+  double conditioning = std::numeric_limits<double>::quiet_NaN();
+  /// With a gap: why the one-step scene has no seated pose (no pose closes
+  /// every gap, so that fixture cannot seat the part); empty if it has one.
+  std::string step_seat;
   /// Why a score is missing, if one is.
   std::string note;
 };

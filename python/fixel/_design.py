@@ -52,6 +52,12 @@ class Layout:
     step_score: Optional[Fraction]
     j_width: Optional[float]  # display only
     note: str = ""
+    # The smallest singular value of W_n (moment over the radius of gyration),
+    # display only; nearly_singular: below fixel's warning level (docs/design.md).
+    conditioning: Optional[float] = None
+    nearly_singular: Optional[bool] = None
+    # With a gap: why the one-step scene has no seated pose (None if it has one).
+    step_seat: Optional[str] = None
 
 
 @dataclass(frozen=True)
@@ -92,6 +98,9 @@ def _design_of(doc):
             step_score=_opt_frac(l["step_score"]),
             j_width=l["j_width"],
             note=l.get("note", ""),
+            conditioning=l["conditioning"],
+            nearly_singular=l["nearly_singular"],
+            step_seat=l["step_seat"],
         )
         for l in doc["layouts"]
     ]

@@ -122,6 +122,7 @@ void check_distinct_outputs(const std::string& path_a, const std::string& flag_a
 void check_output_folder(const std::string& path, const std::string& flag) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  if (path == "-") throw InputError(flag, path, "is not an output folder: give a folder name (./- for one named -)");
   fs::path p = path.empty() ? fs::path(".") : fs::path(path);
   if (fs::exists(p, ec) && !fs::is_directory(p, ec)) throw InputError(flag, path, "is not a folder");
   if (fs::is_symlink(fs::symlink_status(p, ec)) && !fs::exists(p, ec))

@@ -102,6 +102,38 @@ def test_design_scene_is_the_scene_the_cli_writes(tmp_path, polygon_candidates):
     assert "mass" not in json.loads(out.read_text())["body"]
 
 
+def test_conditioning_is_the_smallest_singular_value_numpy_finds_for_the_layouts_wrenches():
+    # A second method: numpy's SVD of W_n built here from the candidates,
+    # the centre of mass and the radius of gyration (display values).
+    import numpy as np
+
+    for name in ("polygon", "fig6"):
+        part = fixel.Scene.load(str(SCENE_DIR / f"{name}.json"))
+        body = part.to_dict()["body"]
+        cx, cy = (float(Fraction(v)) for v in body["center_of_mass"])
+        rho = (float(Fraction(body["inertia"])) / float(Fraction(body["mass"]))) ** 0.5
+        d = fixel.design(part, top=3, jobs=1)
+        for layout in d.layouts:
+            rows = []
+            for c in layout.fixels:
+                (px, py), (nx, ny) = (float(v) for v in c.point), (float(v) for v in c.normal)
+                length = (nx * nx + ny * ny) ** 0.5
+                nx, ny = nx / length, ny / length
+                rows.append([nx, ny, ((px - cx) * ny - (py - cy) * nx) / rho])
+            expected = np.linalg.svd(np.array(rows).T, compute_uv=False).min()
+            assert layout.conditioning == pytest.approx(expected, rel=1e-6, abs=1e-12), (name, layout.rank)
+            assert layout.nearly_singular == (expected < 0.005)
+    # fig6's two best layouts are the nearly singular ones (their normal lines nearly meet).
+    assert [l.nearly_singular for l in d.layouts] == [True, True, False]
+
+
+def test_a_step_layout_whose_gaps_no_pose_closes_says_so():
+    part = fixel.Scene.load(str(SCENE_DIR / "polygon.json"))
+    d = fixel.design(part, push="step", gap="1/20", top=1, jobs=1)
+    assert "would touch the line of its edge beyond the edge's end" in d.layouts[0].step_seat
+    assert fixel.design(part, top=1, jobs=1).layouts[0].step_seat is None  # gap 0: the scene pose
+
+
 def test_design_scene_refuses_a_rank_it_does_not_have():
     d = fixel.design(HOUSE, candidates=HOUSE_CANDIDATES, mu=0, **SMALL)
     with pytest.raises(fixel.InputError, match="rank: 0"):
