@@ -493,6 +493,12 @@ expect 2 '--scene-out: '"$tmp"'/no/x.json cannot be written: no such folder' -- 
 nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
 [ "$(wc -l <<<"$nl_out")" = 1 ] && grep -qF "$tmp/a\nfixel: b.json: cannot be opened" <<<"$nl_out" ||
   { echo "FAIL: a newline in a file name: $nl_out"; fail=1; }
+# The design report's warnings: fig6's two best layouts are nearly singular, the polygon's two best one-step
+# layouts with gap 1/20 have no seated pose, and nonunique_part scores 0 throughout.
+[ "$("$fixel" design "$src/data/scenes/fig6.json" --top 3 | grep -c 'warning: nearly singular')" = 2 ] ||
+  { echo "FAIL: design fig6 should warn of its two nearly singular layouts"; fail=1; }
+expect 0 'warning: with gap 1/20 no pose closes every gap' -- "$fixel" design "$src/data/scenes/polygon.json" --push step --gap 1/20 --top 1
+expect 0 'every listed layout scores 0' -- "$fixel" design "$src/data/scenes/nonunique_part.json" --top 2
 # "-" reads a scene from standard input; as an output it is refused, not a file named "-".
 expect 2 '--scene-out: - is not an output file' -- "$fixel" design "$tmp/house.json" --scene-out -
 expect 2 '--svg: - is not an output file' -- "$fixel" seat "$src/data/scenes/example2.json" --svg -
