@@ -241,6 +241,8 @@ DesignResult design(const Scene& part, const std::vector<DesignCandidate>& cands
   // the layouts done.
   const ControlScope between_layouts(nullptr);
   check_design(part, o);
+  check_candidate_list(cands);
+  check_candidates(part, cands);
   const auto start = std::chrono::steady_clock::now();
   DesignResult result;
   result.candidates = cands;

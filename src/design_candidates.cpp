@@ -84,6 +84,19 @@ std::pair<const BezierPiece*, const BezierPiece*> pieces_around(const Boundary& 
 using internal::boundary_of;
 using internal::unit_near;
 
+void check_candidates(const Scene& part, const std::vector<DesignCandidate>& candidates) {
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const DesignCandidate& c = candidates[k];
+    const std::string field = "candidates[" + std::to_string(k) + "]";
+    const DesignCandidate own = candidate_at(part, c.curve, c.u, field);
+    if (!(own.point.x == c.point.x && own.point.y == c.point.y && own.normal.x == c.normal.x &&
+          own.normal.y == c.normal.y))
+      throw InputError(field, "curve " + std::to_string(c.curve) + ", u = " + to_string(c.u),
+                       "is not this part's candidate: its point or normal is not the outline's there (make "
+                       "candidates with boundary_candidates or candidate_at of this part)");
+  }
+}
+
 DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, const std::string& field) {
   const Boundary& b = boundary_of(part);
   const int nc = static_cast<int>(b.curves.size());
@@ -197,6 +210,10 @@ std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::o
 
 Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
                    const DesignOptions& o, bool step, double* angle_error) {
+  for (int k = 0; k < 3; ++k)
+    if (f[k] < 0 || f[k] >= static_cast<int>(cands.size()))
+      throw InputError("layout[" + std::to_string(k) + "]", std::to_string(f[k]),
+                       "is not a candidate index (there are " + std::to_string(cands.size()) + ")");
   Scene s = part;
   s.fixels.clear();
   double worst = 0;

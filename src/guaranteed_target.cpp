@@ -374,8 +374,8 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
   }
 
  private:
-  const GuaranteedSet& G_;
-  const SeatingSet& S_;
+  const GuaranteedSet G_;  // copies: the caller's sets may be temporaries
+  const SeatingSet S_;
   VectorQ b0_;
   std::vector<PieceEnclosure> enclosures_;
   std::vector<bool> b0_inside_;    // b0 in piece p: the cone meets it at μ = 0

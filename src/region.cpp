@@ -346,6 +346,7 @@ bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
 
 std::unique_ptr<RegionTarget> step_target(const Scene& scene, const SeatingSet& S, const GuaranteedSet* G) {
   check_region_scene(scene);  // before a target is built from S: a point mass's S has two dimensions
+  check_seating_set_of(scene, S);
   if (G) return guaranteed_target(*G, S, scene.background_impulse);
   return seating_target(S, scene.background_impulse);
 }

@@ -363,7 +363,7 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
   }
 
  private:
-  const SeatingSet& S_;
+  const SeatingSet S_;  // a copy: the caller's S may be a temporary
   VectorQ b0_;
   FilteredHalfspaces filtered_;
   std::vector<Rational> beta_;                  // c_k − a_k·b0
@@ -379,6 +379,13 @@ void internal::check_rigid_seating_set(const SeatingSet& S, const VectorQ& b0) {
   if (!rigid)
     throw InputError("S", "dof " + std::to_string(S.dof) + ", b0 of " + std::to_string(b0.size()) + " components",
                      "a region target needs a rigid body's seating set (dof 3) and a three-component b0");
+  // A set seating_set never makes (no apex or no facets, as a
+  // default-constructed one) would read as all of R³: every push IN.
+  if (S.apex.size() != 3 || S.halfspaces.empty())
+    throw InputError(
+        "S",
+        std::to_string(S.halfspaces.size()) + " facets, an apex of " + std::to_string(S.apex.size()) + " components",
+        "is not a seating set: build it with seating_set(scene)");
 }
 
 std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0) {

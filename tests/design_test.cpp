@@ -546,6 +546,33 @@ GTEST_TEST(Design, BadInputNamesTheFieldAndValue) {
   EXPECT_THROW(design(no_outline, {}, frictionless()), SceneError);
 }
 
+// Candidates made for another part (or edited) were scored as if on this
+// one; a bad index into the list threw std::out_of_range.
+GTEST_TEST(Design, AnotherPartsCandidatesAndABadIndexAreInputErrorsNamingTheEntry) {
+  const Scene part = house();
+  auto moved = house_candidates(part);
+  moved[2].point.x += Rational(1, 8);
+  try {
+    design(part, moved, frictionless());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "candidates[2]");
+    EXPECT_EQ(e.value(), "curve 0, u = 9/2");
+  }
+  auto twice = house_candidates(part);
+  twice.push_back(twice[0]);
+  EXPECT_THROW(design(part, twice, frictionless()), InputError);  // the list's own check
+  try {
+    layout_scene(part, house_candidates(part), {0, 1, 4}, frictionless(), false);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "layout[2]");
+    EXPECT_EQ(e.value(), "4");
+  }
+  EXPECT_THROW(layout_region(part, house_candidates(part), {-1, 1, 2}, frictionless()), InputError);
+  EXPECT_FALSE(design(part, house_candidates(part), frictionless()).layouts.empty());  // the same list, unedited
+}
+
 GTEST_TEST(Design, AStoppedRunThrowsStoppedError) {
   const Scene part = scene_file("polygon");
   DesignOptions o;

@@ -7,6 +7,7 @@
 
 #include "filter_test_util.h"
 #include "fixel/error.h"
+#include "fixel/guaranteed.h"
 #include "fixel/internal/region_context.h"
 #include "fixel/internal/wrench_cone_detail.h"
 #include "fixel/io.h"
@@ -421,6 +422,41 @@ GTEST_TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
   const Scene plain = scene_file("example2");
   EXPECT_THROW(compute_region(plain, seating_set(plain), RegionOptions{}), SceneError);
   EXPECT_THROW(sample_region(scene, S, 0), InputError);
+}
+
+// Each interval's curve, ends and status, as text.
+std::string summary(const Region& r) {
+  std::string out;
+  for (const auto& i : r.intervals)
+    out += std::to_string(i.curve) + " " + to_string(i.u0) + " " + to_string(i.u1) + " " + to_string(i.status) + "\n";
+  return out;
+}
+
+// A target built from temporaries keeps its own copies of the sets (it kept
+// references, and the region read freed memory), and a seating set that is
+// not the scene's, or none at all, is refused (a default-constructed S read
+// as all of R³: every push IN).
+GTEST_TEST(Region, ATargetOfTemporarySetsGivesTheRegionOfNamedOnesAndAForeignSIsRefused) {
+  const Scene scene = scene_file("example2_rounded");
+  RegionOptions opt;
+  opt.resolution = Rational(1, 64);
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  const auto named = seating_target(S, scene.background_impulse);
+  const auto temporary = seating_target(seating_set(scene), scene.background_impulse);
+  EXPECT_EQ(summary(compute_region(scene, *temporary, opt)), summary(compute_region(scene, *named, opt)));
+  const auto named_g = guaranteed_target(G, S, scene.background_impulse);
+  const auto temporary_g =
+      guaranteed_target(guaranteed_set(scene, seating_set(scene)), seating_set(scene), scene.background_impulse);
+  EXPECT_EQ(summary(compute_region(scene, *temporary_g, opt)), summary(compute_region(scene, *named_g, opt)));
+  EXPECT_THROW(compute_region(scene, SeatingSet{}, opt), InputError);
+  EXPECT_THROW(seating_target(SeatingSet{}, scene.background_impulse), InputError);
+  EXPECT_THROW(sample_region(scene, SeatingSet{}, 4), InputError);
+  EXPECT_THROW(point_status(scene, SeatingSet{}, 0, Rational(1, 2), Rational(0)), InputError);
+  const Scene polygon = scene_file("polygon");  // 3 fixels as well, but another S
+  Scene fewer = polygon;
+  fewer.fixels.pop_back();
+  EXPECT_THROW(compute_region(fewer, seating_set(polygon), opt), InputError);
 }
 
 // A point mass (dof 2) has a two-dimensional S. Every region question is a

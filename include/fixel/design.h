@@ -155,6 +155,11 @@ DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, co
 /// Throws InputError naming the later entry, e.g. "candidates[3]".
 void check_candidate_list(const std::vector<DesignCandidate>& candidates, const std::string& source = "candidates");
 
+/// Throws InputError naming `candidates[k]` unless every candidate is the
+/// part's own: candidate_at(part, curve, u) with the same point and normal
+/// (a list made for another part would be scored as if on this one).
+void check_candidates(const Scene& part, const std::vector<DesignCandidate>& candidates);
+
 /// Parses a candidate file {"candidates": [{"curve": k, "u": ".."}, ...]}.
 /// Throws ParseError for malformed JSON and InputError naming the entry
 /// (check_candidate_list included).
@@ -178,7 +183,8 @@ std::array<int, 3> triple_at(long n, long index);
 /// The part with the three candidates as fixels: gap 0 and the candidates'
 /// normals (the sustained analysis), or, with `step`, the rational unit
 /// normals and the options' gap (the one-step analysis). `angle_error` gets
-/// the largest rounding angle (rad, display only).
+/// the largest rounding angle (rad, display only). Throws InputError naming
+/// `layout[k]` for an index out of range.
 Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const std::array<int, 3>& fixels,
                    const DesignOptions& options, bool step, double* angle_error = nullptr);
 
@@ -225,8 +231,9 @@ void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& can
 /// number of threads. With the sustained ranking and `options.bound`, the
 /// pair bound orders the triples and skips those that cannot enter the top
 /// K (same layouts; the counts, also the same for any number of threads,
-/// say how many were skipped). Throws what check_design throws, and
-/// StoppedError when `options.control` stops it.
+/// say how many were skipped). Throws what check_design,
+/// check_candidate_list and check_candidates throw, and StoppedError when
+/// `options.control` stops it.
 DesignResult design(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
 
 /// The score of the scene's own three fixels with the same options (for
