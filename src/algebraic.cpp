@@ -105,7 +105,9 @@ AlgebraicReal affine_image(const AlgebraicReal& x, const Rational& a, const Rati
 }
 
 std::string certified_decimal(const AlgebraicReal& x_in, int max_digits) {
-  if (max_digits < 0) throw InputError("digits", std::to_string(max_digits), "must be >= 0");
+  // Bounded: the digits cost quadratic time (100,000 take seconds).
+  if (max_digits < 0 || max_digits > 100000)
+    throw InputError("digits", std::to_string(max_digits), "must be in [0, 100000]");
   check_isolating(x_in);
   AlgebraicReal x = x_in;
   // An irrational x is not 0: shrink its interval to one side of 0.

@@ -38,7 +38,8 @@ void casteljau_coordinate(const std::vector<Vec2>& pts, bool y, const Rational& 
 }
 
 Vec2 de_casteljau(const std::vector<Vec2>& pts, const Rational& s) {
-  if (pts.empty()) throw InternalError("de Casteljau on no control points");
+  // Only a piece built by hand has none (make_boundary never makes one).
+  if (pts.empty()) throw InputError("BezierPiece.control", "0 points", "needs at least one control point");
   if (s == 0) return pts.front();  // the ends are control points
   if (s == 1) return pts.back();
   Vec2 out;
@@ -149,6 +150,13 @@ Vec2 blossom(const std::vector<Rational>& U, const std::vector<Vec2>& P, int p, 
 }  // namespace
 
 Vec2 BezierPiece::point(const Rational& s) const { return de_casteljau(control, s); }
+
+Rational BezierPiece::local(const Rational& u) const {
+  if (!(u0 < u1))
+    throw InputError("BezierPiece.u1", to_string(u1),
+                     "must be above u0 = " + to_string(u0) + " (a piece covers a parameter range)");
+  return (u - u0) / (u1 - u0);
+}
 
 Vec2 BezierPiece::derivative(const Rational& s, int k) const {
   if (k == 0) return de_casteljau(control, s);

@@ -146,7 +146,26 @@ bool run_bounded(const Scene& part, const std::vector<DesignCandidate>& cands, c
 
 }  // namespace
 
-long triple_count(long n) { return n < 3 ? 0 : n * (n - 1) / 2 * (n - 2) / 3; }
+long triple_count(long n) {
+  if (n < 3) return 0;
+  // n(n−1)(n−2)/6 with the divisions first (one factor is even, one a
+  // multiple of 3), then products checked for overflow.
+  long f[3] = {n, n - 1, n - 2};
+  for (long& x : f)
+    if (x % 3 == 0) {
+      x /= 3;
+      break;
+    }
+  for (long& x : f)
+    if (x % 2 == 0) {
+      x /= 2;
+      break;
+    }
+  long count = 0;
+  if (__builtin_mul_overflow(f[0], f[1], &count) || __builtin_mul_overflow(count, f[2], &count))
+    throw InputError("candidates", std::to_string(n), "give more triples than a long counts");
+  return count;
+}
 
 std::array<int, 3> triple_at(long n, long index) {
   if (index < 0 || index >= triple_count(n))

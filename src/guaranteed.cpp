@@ -111,6 +111,14 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl
 Rational lost_fraction(const SeatingSet& S, const GuaranteedSet& G, int grid) {
   if (grid < 1) throw InputError("grid", std::to_string(grid), "must be >= 1");
   const int k = static_cast<int>(S.rays.size());
+  // The grid's points, C(grid + k − 1, k − 1), times 5 magnitudes: bounded
+  // (ten million), since each is an exact membership test.
+  double points = 5;
+  for (int j = 1; j < k; ++j) points = points * (grid + j) / j;
+  if (points > 1e7)
+    throw InputError("grid", std::to_string(grid),
+                     "gives about " + std::to_string(static_cast<long long>(points)) + " sample points for " +
+                         std::to_string(k) + " rays of S; at most 10,000,000");
   long lost = 0, total = 0;
   std::vector<int> w(k, 0);
   // Enumerate weight vectors with Σ w = grid (compositions).

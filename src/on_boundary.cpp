@@ -273,6 +273,12 @@ Vec2 nearby_exact_unit(double radians) {
 }
 
 BoundaryFit fit_to_boundary(const Boundary& b, const Vec2& p, const Vec2* n) {
+  // A Boundary assembled by hand may lack what every fit reads.
+  if (b.pieces.empty()) throw SceneError("boundary", "0 pieces", "has no Bezier pieces: build it with make_boundary");
+  for (const auto& piece : b.pieces)
+    if (piece.control.size() < 2)
+      throw SceneError("boundary", "a piece of " + std::to_string(piece.control.size()) + " control points",
+                       "needs at least 2: build it with make_boundary");
   BoundaryFit fit;
   const std::size_t count = b.pieces.size();
   for (std::size_t k = 0; k < count && !fit.on_boundary; ++k) {

@@ -81,6 +81,12 @@ bool in_mode_set(const ModeSystem& sys, const Outcome& o) {
 }  // namespace
 
 std::vector<ContactMode> contact_modes(long code, int num_contacts) {
+  if (num_contacts < 0 || num_contacts > 31)
+    throw InputError("num_contacts", std::to_string(num_contacts), "must be in [0, 31] (codes are below 4^n_c)");
+  if (code < 0 || code >= (1L << (2 * num_contacts)))
+    throw InputError(
+        "code", std::to_string(code),
+        "must be in [0, 4^" + std::to_string(num_contacts) + ") for " + std::to_string(num_contacts) + " fixels");
   std::vector<ContactMode> modes(num_contacts);
   for (int i = 0; i < num_contacts; ++i, code /= 4) modes[i] = static_cast<ContactMode>(code % 4);
   return modes;
@@ -103,6 +109,9 @@ std::string to_string(ContactMode mode) {
 ModeSystem mode_system(const Scene& scene, const std::vector<ContactMode>& modes, const VectorQ& p_ext) {
   check_impulse(scene, p_ext);
   const int dof = scene.body.dof, nc = scene.num_contacts(), n = dof + 2 * nc;
+  if (static_cast<int>(modes.size()) != nc)
+    throw InputError("modes", std::to_string(modes.size()) + " modes",
+                     "must have one mode per fixel (" + std::to_string(nc) + ")");
   const ContactMatrices W = contact_matrices(scene);
   auto nu = [&](const VectorQ& w) {  // the row w·ν
     VectorQ row = VectorQ::Zero(n);

@@ -112,6 +112,8 @@ PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rat
 }
 
 PushModel seated_push_model(const Scene& scene, double force) {
+  if (!(force > 0) || !std::isfinite(force))
+    throw InputError("force", std::to_string(force), "must be a finite number of newtons above 0");
   const auto q = seated_pose(scene).approx;
   const Pose pose{q[0], q[1], q[2]};
   return [&scene, pose, force](const RegionInterval& iv, const Rational& u) {

@@ -134,8 +134,10 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(internal::default_pusher_mu(scene, target));
   internal::check_region_inputs(scene, mu, target);
-  if (points_per_curve <= 0)
-    throw InputError("sample_region(points_per_curve)", std::to_string(points_per_curve), "must be >= 1");
+  // Bounded, as every loop whose length the caller sets: a million points
+  // of one curve is far beyond any resolution a region needs.
+  if (points_per_curve <= 0 || points_per_curve > 1000000)
+    throw InputError("sample_region(points_per_curve)", std::to_string(points_per_curve), "must be in [1, 1000000]");
   const Boundary& b = *scene.body.boundary;
   internal::RegionContext ctx{scene, target, mu, ConeMethod::kTight, Rational(1), RegionStats{}};
   target.stats = &ctx.stats;

@@ -9,13 +9,24 @@
 
 namespace fixel {
 
+namespace {
+
+const Fixel& fixel_at(const std::vector<Fixel>& fixels, int i, const char* what) {
+  if (i < 0 || i >= static_cast<int>(fixels.size()))
+    throw InputError(what, std::to_string(i),
+                     "is not a fixel index (the scene has " + std::to_string(fixels.size()) + " fixels)");
+  return fixels[static_cast<std::size_t>(i)];
+}
+
+}  // namespace
+
 Vec2 Scene::lever_arm(int i) const {
-  const Vec2& p = fixels.at(i).p_AoF_A;
+  const Vec2& p = fixel_at(fixels, i, "lever_arm(i)").p_AoF_A;
   return {p.x - body.p_AoCm_A.x, p.y - body.p_AoCm_A.y};
 }
 
 Vec2 Scene::tangent(int i) const {
-  const Vec2& n = fixels.at(i).n_A;
+  const Vec2& n = fixel_at(fixels, i, "tangent(i)").n_A;
   return {-n.y, n.x};
 }
 
@@ -88,6 +99,7 @@ void check_boundary_shape(const Boundary& boundary) {
 
 void check_fixels_on_boundary(const Scene& scene) {
   if (!scene.body.boundary) return;
+  check_boundary_shape(*scene.body.boundary);
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {
     const Fixel& f = scene.fixels[i];
     if (f.off_boundary) continue;

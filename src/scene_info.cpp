@@ -9,6 +9,7 @@
 namespace fixel {
 
 SceneInfo scene_info(const Scene& scene) {
+  check_scene_values(scene);  // a scene built in code: a SceneError, not a crash
   SceneInfo info;
   const Body& b = scene.body;
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {

@@ -313,6 +313,8 @@ bool cgal_says_simple(const std::vector<BezierPiece>& pieces) {
 
 void check_simple_loop(const std::vector<BezierPiece>& pieces, const std::string& path, RunControl* control) {
   const long total = static_cast<long>(pieces.size());
+  // No piece would leave the halving below nothing to halve, forever.
+  if (pieces.empty()) throw SceneError(path, "0 pieces", "has no Bezier pieces: an outline is a closed loop of them");
   poll(control, "load", 0, total, "pieces checked for crossings");
   if (cgal_says_simple(pieces)) return;  // the common all-segment case, O(n log n)
 

@@ -76,6 +76,8 @@ GTEST_TEST(Algebraic, RefinementShrinksTheIntervalAndDecimalsAreCertified) {
   EXPECT_EQ(s.substr(s.size() - 3), "...");
   EXPECT_EQ(certified_decimal(AlgebraicReal::rational(Rational(3, 8))), "0.375");
   EXPECT_EQ(certified_decimal(AlgebraicReal::rational(Rational(-1, 3)), 4), "-0.3333...");
+  // Bounded: a billion digits would take years (quadratic time).
+  EXPECT_THROW(certified_decimal(AlgebraicReal::rational(Rational(1, 3)), 100001), InputError);
   EXPECT_THROW(refined(x, Rational(0)), InputError);
 }
 

@@ -73,6 +73,19 @@ Curve random_bspline(std::mt19937_64& rng, int p, int n, bool clamped) {
   return bspline(p, knots, pts);
 }
 
+// A piece built by hand with an empty parameter range or no control point:
+// a typed error (a Boost division by zero, and "a bug in fixel", before).
+GTEST_TEST(Curve, AHandMadePieceWithoutRangeOrControlPointsIsAnInputError) {
+  BezierPiece piece;
+  piece.u0 = piece.u1 = Rational(1);
+  piece.control = {Vec2{Rational(0), Rational(0)}, Vec2{Rational(1), Rational(0)}};
+  EXPECT_THROW(piece.local(Rational(1)), InputError);
+  piece.u1 = Rational(2);
+  EXPECT_EQ(piece.local(Rational(3, 2)), Rational(1, 2));
+  piece.control.clear();
+  EXPECT_THROW(piece.point(Rational(1, 2)), InputError);
+}
+
 GTEST_TEST(Curve, PolylinePiecesFollowTheVertexIndex) {
   const Curve c = polyline({{0, 0}, {2, 0}, {2, 1}});
   const auto pieces = c.bezier_pieces(4);

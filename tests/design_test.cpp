@@ -71,6 +71,8 @@ GTEST_TEST(Design, TriplesAreIndexedLexicographically) {
   EXPECT_EQ(triple_count(2), 0);
   EXPECT_EQ(triple_count(4), 4);
   EXPECT_EQ(triple_count(200), 1313400);
+  EXPECT_EQ(triple_count(3000000), 4499995500001000000);  // n(n−1)(n−2)/6, by hand
+  EXPECT_THROW(triple_count(5000000), InputError);        // 2.08·10¹⁹ is beyond a long (it wrapped)
   const long n = 7;
   long index = 0;
   for (int i = 0; i < n; ++i)

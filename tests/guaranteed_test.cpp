@@ -67,6 +67,7 @@ GTEST_TEST(GuaranteedSet, Example2GuaranteedSetEqualsS) {
   ASSERT_EQ(G.pieces.size(), 1u);
   EXPECT_EQ(G.pieces[0].closed.size(), S.halfspaces.size());
   EXPECT_EQ(lost_fraction(S, G), Rational(0));
+  EXPECT_THROW(lost_fraction(S, G, 1000000), InputError);  // bounded: it would test ~10¹⁷ points
 }
 
 // On seeded random scenes (μ from 0.05 to 2): guaranteed == contains &&

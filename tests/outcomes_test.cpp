@@ -98,6 +98,16 @@ GTEST_TEST(Outcomes, RejectsAnImpulseOfTheWrongLength) {
   EXPECT_THROW(enumerate_outcomes(scene, vec({1, 2})), InputError);
 }
 
+// These threw std::out_of_range and std::length_error.
+GTEST_TEST(Outcomes, AModeListOrCodeOutOfRangeIsAnInputError) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  EXPECT_THROW(mode_system(scene, contact_modes(0, 2), vec({1, 2, 3})), InputError);
+  EXPECT_THROW(contact_modes(0, -1), InputError);
+  EXPECT_THROW(contact_modes(64, 3), InputError);
+  EXPECT_THROW(contact_modes(-1, 3), InputError);
+  EXPECT_EQ(contact_modes(63, 3), std::vector<ContactMode>(3, ContactMode::kStick));  // 63 = 333 in base 4
+}
+
 // Random low-friction scenes: inside S some outcome seats, outside S none
 // does, and Lemke's solution is always one of the enumerated outcomes.
 GTEST_TEST(Outcomes, AgreeWithSeatingSetAndLemkeOnRandomLowFrictionScenes) {

@@ -354,6 +354,8 @@ GTEST_TEST(Physics, ValidationRunsEveryPushOfEveryInIntervalAndNoneOfAnOutOne) {
   EXPECT_EQ(v.total.pushes, 3);
   EXPECT_EQ(v.total.seated, 0);
   EXPECT_THROW(validate_region(s, region, seated_push_model(s), 0, 7), InputError);
+  for (const double force : {0.0, -1.0, std::nan(""), HUGE_VAL})  // a negative force pulled the part
+    EXPECT_THROW(seated_push_model(s, force), InputError) << force;
 }
 
 GTEST_TEST(Physics, AStoppedValidationSaysHowManyOfItsPushesRan) {

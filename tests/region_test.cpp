@@ -422,6 +422,7 @@ GTEST_TEST(Region, RejectsBadOptionsAndScenesWithoutBoundary) {
   const Scene plain = scene_file("example2");
   EXPECT_THROW(compute_region(plain, seating_set(plain), RegionOptions{}), SceneError);
   EXPECT_THROW(sample_region(scene, S, 0), InputError);
+  EXPECT_THROW(sample_region(scene, S, 1000001), InputError);  // bounded
 }
 
 // Each interval's curve, ends and status, as text.

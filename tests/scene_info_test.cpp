@@ -4,14 +4,33 @@
 
 #include <algorithm>
 
+#include "fixel/curve.h"
+#include "fixel/error.h"
 #include "fixel/io_info.h"
 #include "fixel/lcp.h"
+#include "fixel/on_boundary.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
 #include "test_util.h"
 
 namespace fixel {
 namespace {
+
+// A Boundary assembled by hand with nothing in it: every function that
+// reads an outline refuses it (some segfaulted, check_simple_loop never
+// returned), and a bad fixel index is an InputError, not std::out_of_range.
+GTEST_TEST(SceneInfo, AnEmptyHandMadeBoundaryAndABadFixelIndexAreTypedErrors) {
+  Scene scene = test::scene_file("polygon");
+  scene.body.boundary = std::make_shared<const Boundary>();
+  EXPECT_THROW(scene_info(scene), SceneError);
+  EXPECT_THROW(check_fixels_on_boundary(scene), SceneError);
+  EXPECT_THROW(fit_to_boundary(Boundary{}, Vec2{Rational(0), Rational(0)}), SceneError);
+  EXPECT_THROW(check_simple_loop({}), SceneError);
+  const Scene polygon = test::scene_file("polygon");
+  EXPECT_THROW(polygon.lever_arm(3), InputError);
+  EXPECT_THROW(polygon.tangent(-1), InputError);
+  EXPECT_EQ(polygon.tangent(0).x, -polygon.fixels[0].n_A.y);
+}
 
 GTEST_TEST(SceneInfo, WarnsWhenTheMassWasDefaultedFromTheArea) {
   const Scene scene = test::scene_file("polygon");  // no "mass": density 1

@@ -56,7 +56,7 @@ AlgebraicReal affine_image(const AlgebraicReal& x, const Rational& a, const Rati
 /// interval shares, followed by "...", e.g. "0.41421..." (truncated, not
 /// rounded: x lies in [0.41421, 0.41422)). It does not refine: for D
 /// digits of an irrational, pass refined(x, 10⁻ᴰ⁻¹) (√2 isolated in [1, 2]
-/// gives only "...").
+/// gives only "..."). Throws InputError naming `digits` outside [0, 100000].
 std::string certified_decimal(const AlgebraicReal& x, int max_digits = 30);
 
 /// Integer coefficients proportional to p (positive factor), primitive.

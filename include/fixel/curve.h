@@ -30,8 +30,8 @@ struct BezierPiece {
   std::pair<BezierPiece, BezierPiece> split(const Rational& s) const;
   /// The sub-piece on curve parameters [a, b] ⊂ [u0, u1].
   BezierPiece restrict_to(const Rational& a, const Rational& b) const;
-  /// Local parameter of curve parameter u.
-  Rational local(const Rational& u) const { return (u - u0) / (u1 - u0); }
+  /// Local parameter of curve parameter u. Throws InputError unless u0 < u1.
+  Rational local(const Rational& u) const;
   /// Hodograph legs P_{k+1} − P_k (some may be zero).
   std::vector<Vec2> legs() const;
 };

@@ -174,7 +174,8 @@ std::vector<DesignCandidate> load_candidates(const Scene& part, const std::strin
 /// naming the option.
 void check_design(const Scene& part, const DesignOptions& options);
 
-/// Number of triples C(n, 3).
+/// Number of triples C(n, 3). Throws InputError naming `candidates` when it
+/// exceeds a long (n above about 3.8 million).
 long triple_count(long n);
 
 /// The triple of lexicographic index `index` among C(n, 3).

@@ -54,6 +54,8 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl
 /// How much of S is lost: the fraction of the sample points
 /// apex + t·Σ w_j r_j (r_j the rays of S, w on the simplex grid with step
 /// 1/grid, t ∈ {1/4, 1/2, 1, 2, 4}) that are not in G. Exact count ratio.
+/// Throws InputError naming `grid` below 1 or when the points would number
+/// more than ten million.
 Rational lost_fraction(const SeatingSet& S, const GuaranteedSet& G, int grid = 6);
 
 /// Facets of the weak-stability impulse cone h·C_stab,

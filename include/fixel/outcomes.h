@@ -50,14 +50,16 @@ struct ModeSystem {
 };
 
 /// The contact modes numbered `code` ∈ [0, 4^n_c): digit i in base 4 is
-/// fixel i's mode (open, slide+, slide−, stick).
+/// fixel i's mode (open, slide+, slide−, stick). Throws InputError naming
+/// `code` or `num_contacts` (0 to 31) out of range.
 std::vector<ContactMode> contact_modes(long code, int num_contacts);
 
 /// The outcomes of `modes` (one per fixel) under external impulse p_ext:
 /// Newton's law, and per fixel: open (p = 0, gap ≥ 0), sliding ±t (gap 0,
 /// p_n ≥ 0, p_t = ∓μ p_n, ±v_t ≥ 0) or sticking (gap 0, v_t = 0,
 /// |p_t| ≤ μ p_n). Every point is an LCP solution and every LCP solution is
-/// a point of some mode (docs/theory.md §5).
+/// a point of some mode (docs/theory.md §5). Throws InputError naming
+/// `modes` unless there is one per fixel.
 ModeSystem mode_system(const Scene& scene, const std::vector<ContactMode>& modes, const VectorQ& p_ext);
 
 /// Every distinct physical outcome of the step LCP at p_ext, by exact

@@ -175,7 +175,8 @@ PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rat
 
 /// The sustained-push model: the frictionless push wrench of
 /// push_wrench_at at the seated pose q* (fixel::seated_pose, solved once
-/// here), scaled to |force| = `force` N. Throws what seated_pose throws.
+/// here), scaled to |force| = `force` N. Throws what seated_pose throws,
+/// and InputError naming `force` unless it is finite and above 0.
 /// The model keeps a reference to `scene`, which must outlive it.
 PushModel seated_push_model(const Scene& scene, double force = 1);
 

@@ -106,7 +106,9 @@ struct Region {
   RegionStats stats;
   std::string push = "step";             ///< Push model of the target: "step" (S, G) or "sustained" (J).
   ConeMethod cone = ConeMethod::kTight;  ///< Segment cone used.
-  std::optional<Rational> resolution;    ///< Parameter width at which splitting stopped (none for samples).
+  /// The parameter width asked for (none for samples). Splitting stopped
+  /// there, or at depth 200 (stats.depth 200) when that is finer.
+  std::optional<Rational> resolution;
   /// With RegionOptions::resolution_length: the length L (m), and the
   /// parameter width each Bézier piece used (parallel to the boundary's
   /// pieces); `resolution` is then unset.
@@ -140,7 +142,10 @@ std::string method_of(const Region& region);
 
 /// Options of compute_region.
 struct RegionOptions {
-  Rational resolution = Rational(1, 1024);  ///< Stop splitting at this parameter width (curve units).
+  /// Stop splitting at this parameter width (curve units). Splitting also
+  /// stops at depth 200 (2⁻²⁰⁰ of a piece) whatever a finer resolution asks;
+  /// RegionStats::depth then says 200.
+  Rational resolution = Rational(1, 1024);
   /// A resolution as a length (m) instead: each Bézier piece stops splitting
   /// at its own parameter width resolution_width(piece, L), so that every
   /// stretch left has arc length <= L. Overrides `resolution` when set;
@@ -186,7 +191,7 @@ Rational resolution_width(const BezierPiece& piece, const Rational& length);
 /// the scene has no boundary.
 Region compute_region(const Scene& scene, const SeatingSet& S, const RegionOptions& options);
 
-/// The point-sampling baseline: N uniformly spaced parameters per curve,
+/// The point-sampling baseline: N (1 to 1,000,000) uniformly spaced parameters per curve,
 /// u = u_begin + k (u_end − u_begin) / N, k = 0..N−1, each an interval
 /// [u, u] with status in or out (partial where the normal is undefined).
 /// `control` (may be null) is polled once per point; stopping throws

@@ -21,10 +21,12 @@ namespace fixel {
 /// (x, y) for a point mass (dof 2).
 struct Body {
   int dof = 3;
-  Rational mass;     ///< m > 0.
-  Rational inertia;  ///< I > 0 about the centre of mass (dof 3 only; 0 for dof 2).
-  VectorQ velocity;  ///< ν^ℓ, length dof (m/s, rad/s).
-  Vec2 p_AoCm_A;     ///< Centre of mass in frame A.
+  Rational mass;     ///< m > 0 (kg).
+  Rational inertia;  ///< I > 0 about the centre of mass (kg·m²; dof 3 only; 0 for dof 2).
+  /// ν^ℓ, length dof (m/s, rad/s). Must be set in code (an empty vector is
+  /// refused); a scene file's default is 0.
+  VectorQ velocity;
+  Vec2 p_AoCm_A;  ///< Centre of mass in frame A (m).
   /// Which of mass, inertia and centre of mass were derived from the
   /// boundary (uniform density) rather than given in the scene.
   bool mass_from_area = false, inertia_from_area = false, center_of_mass_from_area = false;
@@ -39,7 +41,7 @@ struct Fixel {
   Vec2 p_AoF_A;
   Vec2 n_A;      ///< Inward unit normal (into the part), exactly x²+y² == 1.
   Rational mu;   ///< Coulomb friction μ ≥ 0 (the lower end of an interval).
-  Rational gap;  ///< Gap ψ ≥ 0 at the current configuration.
+  Rational gap;  ///< Gap ψ ≥ 0 at the current configuration (m).
   /// Upper end of a friction interval ["lo", "hi"]; unset for one value.
   std::optional<Rational> mu_hi;
   /// The upper end of the friction interval (mu for a single value).
@@ -53,11 +55,14 @@ struct Fixel {
 struct Scene {
   std::string name;
   std::string description;  ///< Free text: what the scene is, and any caveat.
-  Rational time_step;       ///< h > 0.
+  Rational time_step;       ///< h > 0 (s).
   Body body;
   std::vector<Fixel> fixels;
-  Rational pusher_mu;          ///< Pusher friction μ_p ≥ 0 (default 0; the lower end of an interval).
-  VectorQ background_impulse;  ///< b₀, length dof (default 0).
+  Rational pusher_mu;  ///< Pusher friction μ_p ≥ 0 (default 0; the lower end of an interval).
+  /// b₀ (N·s, and N·m·s for the rotation), length dof. A scene file may
+  /// leave it out (then 0); in code it must be set (e.g. VectorQ::Zero(3)):
+  /// an empty vector is refused.
+  VectorQ background_impulse;
   /// Upper end of the pusher's friction interval; unset for one value.
   std::optional<Rational> pusher_mu_hi;
   /// The upper end of the pusher's friction interval.
@@ -65,9 +70,11 @@ struct Scene {
 
   /// Number of contacts n_c.
   int num_contacts() const { return static_cast<int>(fixels.size()); }
-  /// Lever arm r_i = p_i − c of fixel i, in frame A.
+  /// Lever arm r_i = p_i − c of fixel i, in frame A (m). Throws InputError
+  /// for an index out of range.
   Vec2 lever_arm(int i) const;
-  /// Tangent t_i = n_i rotated by +90°.
+  /// Tangent t_i = n_i rotated by +90° (frame A, unit). Throws InputError
+  /// for an index out of range.
   Vec2 tangent(int i) const;
 };
 
