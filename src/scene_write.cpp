@@ -52,6 +52,7 @@ ordered curve(const Curve& c) {
 }  // namespace
 
 std::string write_scene(const Scene& s, bool with_derived) {
+  check_scene_values(s);  // no file that parse_scene would refuse (an empty velocity set in code)
   ordered body;
   body["dof"] = s.body.dof;
   // A value the outline gave (uniform density) is left out, so that reading

@@ -9,6 +9,7 @@
 #include "fixel/io_info.h"
 #include "fixel/lcp.h"
 #include "fixel/on_boundary.h"
+#include "fixel/scene_json.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
 #include "test_util.h"
@@ -30,6 +31,9 @@ GTEST_TEST(SceneInfo, AnEmptyHandMadeBoundaryAndABadFixelIndexAreTypedErrors) {
   EXPECT_THROW(polygon.lever_arm(3), InputError);
   EXPECT_THROW(polygon.tangent(-1), InputError);
   EXPECT_EQ(polygon.tangent(0).x, -polygon.fixels[0].n_A.y);
+  Scene no_velocity = polygon;  // built in code without one: written as [], which reading refused
+  no_velocity.body.velocity.resize(0);
+  EXPECT_THROW(write_scene(no_velocity), SceneError);
 }
 
 GTEST_TEST(SceneInfo, WarnsWhenTheMassWasDefaultedFromTheArea) {

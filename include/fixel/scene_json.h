@@ -42,6 +42,8 @@ Scene read_scene(std::istream& in, const std::string& source, RunControl* contro
 /// after loading, is written); with
 /// `with_derived` they are written too (the values again, the flags not).
 /// Invalid UTF-8 in a name or description set in code becomes U+FFFD.
+/// Throws what check_scene_values throws (a scene built in code with, say,
+/// an empty velocity), rather than write what reading would refuse.
 std::string write_scene(const Scene& scene, bool with_derived = false);
 
 /// Writes write_scene(scene) to the file `path`: first to a new file of a
