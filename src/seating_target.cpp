@@ -379,13 +379,12 @@ void internal::check_rigid_seating_set(const SeatingSet& S, const VectorQ& b0) {
   if (!rigid)
     throw InputError("S", "dof " + std::to_string(S.dof) + ", b0 of " + std::to_string(b0.size()) + " components",
                      "a region target needs a rigid body's seating set (dof 3) and a three-component b0");
-  // A set seating_set never makes (no apex or no facets, as a
-  // default-constructed one) would read as all of R³: every push IN.
-  if (S.apex.size() != 3 || S.halfspaces.empty())
-    throw InputError(
-        "S",
-        std::to_string(S.halfspaces.size()) + " facets, an apex of " + std::to_string(S.apex.size()) + " components",
-        "is not a seating set: build it with seating_set(scene)");
+  // A set seating_set never makes (no apex, as a default-constructed one)
+  // would read as all of R³: every push IN. (S itself can be all of R³,
+  // with no facets, when every gap is 0.)
+  if (S.apex.size() != 3)
+    throw InputError("S", "an apex of " + std::to_string(S.apex.size()) + " components",
+                     "is not a seating set: build it with seating_set(scene)");
 }
 
 std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0) {

@@ -61,7 +61,8 @@ done
 expect 2 '--resolution: 0 must be > 0' -- "$fixel" region "$src/data/scenes/blob.json" --resolution 0
 expect 2 '--pusher-mu: -1 must be >= 0' -- "$fixel" region "$src/data/scenes/blob.json" --pusher-mu -1
 expect 2 '--cone: diagonal not in {tight,paper}' -- "$fixel" region "$src/data/scenes/blob.json" --cone diagonal
-expect 2 '--points: 0 must be >= 1' -- "$fixel" sample "$src/data/scenes/blob.json" --points 0
+expect 2 '--points: 0 must be in [1, 1000000]' -- "$fixel" sample "$src/data/scenes/blob.json" --points 0
+expect 2 '--points: 1000001 must be in [1, 1000000]' -- "$fixel" sample "$src/data/scenes/blob.json" --points 1000001
 P=29157/10540,-71119/105400,-1169839/263500
 expect 0 '"guaranteed": false' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --impulse $P --json
 expect 0 '"lost_fraction": "5/14"' -- "$fixel" seat "$src/data/scenes/nonunique.json" --guaranteed --json
@@ -217,7 +218,7 @@ expect 3 'this is a bug in fixel, please report it' -- env FIXEL_TEST_FAULT=std 
 # Long runs are bounded: --max-seconds stops with exit 4, Ctrl-C with exit 130, both saying what was done.
 P2=-1,-1,-1
 expect 4 'simulate: time limit reached after' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --steps 100000000 --max-seconds 1
-expect 4 'sample: time limit reached after' -- "$fixel" sample "$src/data/scenes/blob.json" --points 100000000 --max-seconds 0.5 --quiet
+expect 4 'sample: time limit reached after' -- "$fixel" sample "$src/data/scenes/blob.json" --points 1000000 --max-seconds 0.5 --quiet
 expect 2 '--max-seconds' -- "$fixel" simulate "$src/data/scenes/example2.json" --impulse $P2 --max-seconds -1
 # A push at rest runs to its time limit: --max-seconds stops it; more than 10^8 engine steps is refused.
 expect 4 'push: time limit reached after' -- "$fixel" push "$src/data/scenes/polygon.json" --wrench 0,0,0 --time 100000 --max-seconds 0.5

@@ -81,7 +81,7 @@ class RegionTarget {
 /// The one-step seating set S of the paper, with background impulse b0:
 /// a ray τ g reaches S when b0 + τ g ∈ S for some τ > 0. Keeps its own
 /// copy of S (a temporary is fine). Throws InputError for a set
-/// seating_set does not make (dof other than 3, no apex or no facets).
+/// seating_set does not make (dof other than 3, or no apex).
 std::unique_ptr<RegionTarget> seating_target(const SeatingSet& S, const VectorQ& b0);
 
 /// The guaranteed set G (frictionless pusher only), with background b0.
