@@ -24,8 +24,13 @@ using json = nlohmann::ordered_json;  // keys in the order written, as the regio
 json pose_json(const Pose& p) { return json::array({p.x, p.y, p.theta}); }
 
 json counts_json(const Validation& v) {
-  return {{"pushes", v.pushes},   {"seated", v.seated},   {"jammed", v.jammed},
-          {"escaped", v.escaped}, {"timeout", v.timeout}, {"warned", v.warned}};
+  return {{"pushes", v.pushes},
+          {"seated", v.seated},
+          {"jammed", v.jammed},
+          {"escaped", v.escaped},
+          {"timeout", v.timeout},
+          {"warned", v.warned},
+          {"seated_warned", v.seated_warned}};
 }
 
 std::string counts_text(const Validation& v) {

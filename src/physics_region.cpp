@@ -161,6 +161,7 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
       v.escaped += r.outcome == Outcome::kEscaped;
       v.timeout += r.outcome == Outcome::kTimeout;
       v.warned += r.warnings.empty() ? 0 : 1;
+      v.seated_warned += r.outcome == Outcome::kSeated && !r.warnings.empty();
       if (!r.warnings.empty() && out.first_warning.empty()) out.first_warning = r.warnings.front();
     }
     out.total.pushes += v.pushes;
@@ -169,6 +170,7 @@ RegionValidation validate_region(const Scene& scene, const Region& region, const
     out.total.escaped += v.escaped;
     out.total.timeout += v.timeout;
     out.total.warned += v.warned;
+    out.total.seated_warned += v.seated_warned;
     out.intervals.push_back(v);
   }
   return out;

@@ -21,6 +21,7 @@
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
 #include "fixel/seating.h"
+#include "test_util.h"
 
 namespace fixel::physics {
 namespace {
@@ -336,6 +337,24 @@ GTEST_TEST(Physics, UnitPushWrenchAtAPointHasTheNormalAndItsMoment) {
   const Wrench r = push_wrench_at(s, 0, parse_rational("3/4"), Pose{0, 0, M_PI / 2});
   EXPECT_NEAR(r.fx, -1, 1e-15);
   EXPECT_DOUBLE_EQ(r.m, 0.5);
+}
+
+// blob32's one-step pushes are 4.55 engine steps long: every one warns, so
+// the seated ones that warned are all the seated ones.
+GTEST_TEST(Physics, ValidationCountsTheSeatedPushesThatWarned) {
+  const Scene s = test::scene_file("blob32");
+  const SeatingSet S = seating_set(s);
+  RegionOptions ro;
+  ro.resolution = Rational(1, 256);
+  const Region region = compute_region(s, S, ro);
+  const RegionValidation v = validate_region(s, region, one_step_push_model(s, S, s.pusher_mu), 4, 1, short_run("2"));
+  ASSERT_GT(v.total.pushes, 0);
+  EXPECT_EQ(v.total.warned, v.total.pushes);
+  EXPECT_EQ(v.total.seated_warned, v.total.seated);
+  int seated_warned = 0;
+  for (const auto& i : v.intervals)
+    if (i) seated_warned += i->seated_warned;
+  EXPECT_EQ(seated_warned, v.total.seated_warned);
 }
 
 GTEST_TEST(Physics, ValidationRunsEveryPushOfEveryInIntervalAndNoneOfAnOutOne) {

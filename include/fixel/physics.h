@@ -186,6 +186,7 @@ struct Validation {
   int seated = 0;
   int jammed = 0, escaped = 0, timeout = 0;  ///< The other outcomes.
   int warned = 0;                            ///< Pushes whose PushResult has warnings.
+  int seated_warned = 0;                     ///< Of the seated pushes, those that warned.
 };
 struct RegionValidation {
   std::vector<std::optional<Validation>> intervals;  ///< Per interval; set for IN ones.
