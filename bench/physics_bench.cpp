@@ -35,7 +35,13 @@ namespace {
 
 struct Count {
   int n = 0, at_once = 0, at_h = 0, sustained = 0;
-  void add(const Count& o) { n += o.n, at_once += o.at_once, at_h += o.at_h, sustained += o.sustained; }
+  // Sustained pushes the engine may not resolve (their run warned), and of
+  // those the seated ones.
+  int warned = 0, seated_warned = 0;
+  void add(const Count& o) {
+    n += o.n, at_once += o.at_once, at_h += o.at_h, sustained += o.sustained;
+    warned += o.warned, seated_warned += o.seated_warned;
+  }
 };
 
 std::string frac(int k, int n) {
@@ -66,7 +72,17 @@ void run(const fixel::Scene& scene, const fp::Wrench& w, const fp::PushOptions& 
   const double h = fixel::to_double(scene.time_step);
   one.impulse = std::array<double, 3>{h * w.fx, h * w.fy, h * w.m};
   c.at_once += closed(fp::push(scene, fp::Wrench{}, one));
-  c.sustained += fp::push(scene, w, sustained).outcome == fp::Outcome::kSeated;
+  const fp::PushResult held = fp::push(scene, w, sustained);
+  const bool seated = held.outcome == fp::Outcome::kSeated;
+  c.sustained += seated;
+  c.warned += !held.warnings.empty();
+  c.seated_warned += seated && !held.warnings.empty();
+}
+
+// The sustained pushes that warned, and the seated share of the others.
+std::string warned_text(const char* what, const Count& c) {
+  return std::string(what) + ": " + std::to_string(c.warned) + " of " + std::to_string(c.n) +
+         " warned; the others seated " + frac(c.sustained - c.seated_warned, c.n - c.warned);
 }
 
 fp::Wrench as_force(const fixel::Scene& scene, const std::array<double, 3>& p) {
@@ -145,5 +161,9 @@ int main(int argc, char** argv) {
     all_in.add(in), all_out.add(out), all_region.add(region);
   }
   std::cout << "| **pooled**" << row(all_in) << row(all_out) << row(all_region) << " |\n";
+  std::cout << "\nsustained pushes the engine may not resolve (under 50 engine steps or over 10 h, docs/physics.md), "
+               "pooled: "
+            << warned_text("in S", all_in) << "; " << warned_text("outside S", all_out) << "; "
+            << warned_text("region", all_region) << "\n";
   return 0;
 }

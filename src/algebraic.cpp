@@ -16,7 +16,13 @@ namespace {
 // a rational root there means x.poly is reducible, the caller's error (x
 // made by real_roots never has one), so an InputError, not InternalError.
 void check_isolating(const AlgebraicReal& x) {
-  if (x.is_rational()) return;
+  if (x.is_rational()) {
+    // No polynomial: a rational, lo == hi (an interval would say nothing of which number).
+    if (x.lo != x.hi)
+      throw InputError("x", "[" + to_string(x.lo) + ", " + to_string(x.hi) + "]",
+                       "has no polynomial, so it must be a rational with lo == hi (AlgebraicReal::rational)");
+    return;
+  }
   if (x.poly.size() < 3 || !(x.lo < x.hi) || sign_at(x.poly, x.lo) * sign_at(x.poly, x.hi) >= 0)
     throw InputError("x", "[" + to_string(x.lo) + ", " + to_string(x.hi) + "]",
                      "is not an isolating interval of an irrational root of x.poly (degree >= 2, a sign change "

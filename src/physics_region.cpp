@@ -67,6 +67,7 @@ void require_finite(const Wrench& w, const Scene& scene, const std::string& fiel
 }  // namespace
 
 Wrench push_wrench_at(const Scene& scene, int curve, const Rational& u, const Pose& pose, const std::string& field) {
+  if (!std::isfinite(pose.theta)) throw InputError("pose.theta", std::to_string(pose.theta), "must be finite (rad)");
   const Contact c = contact_at(scene, curve, u, field);
   const double cs = std::cos(pose.theta), sn = std::sin(pose.theta);
   // A rotation turns force and lever arm alike, so the moment is unchanged.

@@ -147,6 +147,9 @@ void check_scene_values(const Scene& scene) {
     const Fixel& f = scene.fixels[i];
     check_friction(f.mu, f.mu_hi, path + ".mu");
     check_nonnegative(f.gap, path + ".gap");
+    // Unit length is not checked here (design's scenes are not unit), but no
+    // analysis means anything with a zero normal.
+    if (f.n_A.x == 0 && f.n_A.y == 0) throw SceneError(path + ".normal", "(0, 0)", "must not be zero");
   }
   check_friction(scene.pusher_mu, scene.pusher_mu_hi, "pusher.mu");
   check_length(scene.background_impulse, b.dof, "background_impulse");

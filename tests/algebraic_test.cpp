@@ -78,6 +78,9 @@ GTEST_TEST(Algebraic, RefinementShrinksTheIntervalAndDecimalsAreCertified) {
   EXPECT_EQ(certified_decimal(AlgebraicReal::rational(Rational(-1, 3)), 4), "-0.3333...");
   // Bounded: a billion digits would take years (quadratic time).
   EXPECT_THROW(certified_decimal(AlgebraicReal::rational(Rational(1, 3)), 100001), InputError);
+  AlgebraicReal vague = AlgebraicReal::rational(Rational(1));  // no polynomial, yet an interval
+  vague.hi = Rational(2);
+  EXPECT_THROW(certified_decimal(vague), InputError);
   EXPECT_THROW(refined(x, Rational(0)), InputError);
 }
 

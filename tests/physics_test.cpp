@@ -341,6 +341,15 @@ GTEST_TEST(Physics, UnitPushWrenchAtAPointHasTheNormalAndItsMoment) {
 
 // blob32's one-step pushes are 4.55 engine steps long: every one warns, so
 // the seated ones that warned are all the seated ones.
+GTEST_TEST(Physics, APushWrenchAtANonFinitePoseNamesThePose) {
+  try {
+    push_wrench_at(square(), 0, Rational(1, 2), Pose{0, 0, std::nan("")});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "pose.theta");  // it blamed the scene and --at
+  }
+}
+
 GTEST_TEST(Physics, ValidationCountsTheSeatedPushesThatWarned) {
   const Scene s = test::scene_file("blob32");
   const SeatingSet S = seating_set(s);

@@ -31,6 +31,9 @@ GTEST_TEST(SceneInfo, AnEmptyHandMadeBoundaryAndABadFixelIndexAreTypedErrors) {
   EXPECT_THROW(polygon.lever_arm(3), InputError);
   EXPECT_THROW(polygon.tangent(-1), InputError);
   EXPECT_EQ(polygon.tangent(0).x, -polygon.fixels[0].n_A.y);
+  Scene zero_normal = polygon;  // J was non-empty and "strongly stable"
+  zero_normal.fixels[1].n_A = Vec2{Rational(0), Rational(0)};
+  EXPECT_THROW(sustained_set(zero_normal), SceneError);
   Scene no_velocity = polygon;  // built in code without one: written as [], which reading refused
   no_velocity.body.velocity.resize(0);
   EXPECT_THROW(write_scene(no_velocity), SceneError);

@@ -127,7 +127,8 @@ PushResult push(const Scene& scene, const VectorQ& w, const PushOptions& options
 /// (b − c) ⊗ n_B, where b is the body-frame boundary point, c the centre of
 /// mass and n_B the unit inward normal there (right-hand derivative at a
 /// polyline vertex, left-hand at the curve's end). Throws InputError naming
-/// `field` for a curve index or u out of range, SceneError for a zero tangent.
+/// `field` for a curve index or u out of range, InputError naming
+/// `pose.theta` when it is not finite, SceneError for a zero tangent.
 Wrench push_wrench_at(const Scene& scene, int curve, const Rational& u, const Pose& pose,
                       const std::string& field = "--at");
 

@@ -99,7 +99,8 @@ void check_fixels_on_boundary(const Scene& scene);
 /// dof and W_n nonsingular belong to the analyses that need them.)
 void validate_scene(const Scene& scene);
 
-/// validate_scene without the unit normals and the outline check: the cheap
+/// validate_scene without the unit normals (a zero normal is still refused)
+/// and the outline check: the cheap
 /// checks that every analysis built on contact_matrices (seating_set,
 /// simulate, enumerate_outcomes, guaranteed_set, ...), sustained_set and
 /// physics::push run first, so that a scene built in code with a wrong
