@@ -214,14 +214,20 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
       << significant(l.conditioning) << "\n";
     if (l.conditioning < kNearlySingular)
       s << "   warning: nearly singular (conditioning below " << significant(kNearlySingular)
-        << "): the three normal lines nearly meet in one point; J is wide in the linearised model, but such layouts "
-           "did not seat in Box2D (docs/design.md): validate with `fixel region LAYOUT --push sustained --validate "
-           "10`\n";
-    if (!l.step_seat.empty())
+        << "): the three normal lines nearly meet in one point; such layouts can score well in the linearised "
+           "model, but did not seat in Box2D (docs/design.md): validate with `fixel region LAYOUT --push sustained "
+           "--validate 10`\n";
+    if (!l.step_seat.empty()) {
+      // An exact refusal (polyline edges) proves there is no seat; a local
+      // search's ("near the scene pose", curved pieces) does not.
+      const bool searched = l.step_seat.find("near the scene pose") != std::string::npos;
       s << "   warning: with gap " << to_string(o.gap)
-        << " no pose closes every gap, so the part cannot seat in this fixture and its one-step score says "
-           "nothing: "
+        << (searched ? " fixel's search found no seated pose near the scene pose (a local search on curved pieces, "
+                       "not a proof: the part may still seat): "
+                     : " no pose closes every gap, so the part cannot seat in this fixture and its one-step score "
+                       "says nothing: ")
         << l.step_seat << "\n";
+    }
     if (!l.note.empty()) s << "   note: " << l.note << "\n";
   }
   if (!r.layouts.empty() && r.layouts.front().score == 0)

@@ -19,9 +19,11 @@ std::string shortened(const std::string& text, std::size_t head, std::size_t tai
   return text.substr(0, end) + "…[" + std::to_string(start - end) + " bytes]…" + text.substr(start);
 }
 
+}  // namespace
+
 // Control characters (a newline in a file name) are shown escaped, so a
 // message is one line and cannot pass for another.
-std::string printable(const std::string& text) {
+std::string escape_control(const std::string& text) {
   std::string out;
   for (const char c : text) {
     const auto byte = static_cast<unsigned char>(c);
@@ -43,10 +45,12 @@ std::string printable(const std::string& text) {
   return out;
 }
 
+namespace {
+
 std::string compose(const std::string& field, const std::string& value, const std::string& reason) {
-  std::string out = printable(shortened(field, 200, 40)) + ":";
-  if (!value.empty()) out += " " + printable(shortened(value, 600, 200));
-  if (!reason.empty()) out += " " + printable(shortened(reason, 600, 200));
+  std::string out = escape_control(shortened(field, 200, 40)) + ":";
+  if (!value.empty()) out += " " + escape_control(shortened(value, 600, 200));
+  if (!reason.empty()) out += " " + escape_control(shortened(reason, 600, 200));
   return out;
 }
 }  // namespace

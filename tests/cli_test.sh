@@ -490,6 +490,10 @@ h_in=$("$fixel" region "$tmp/house_best.json" --push sustained --resolution 1/64
 expect 2 '--scene-out: '"$tmp"'/none.json was not written: there is no layout (only 2 candidates' -- "$fixel" design "$tmp/house.json" --candidates "$tmp/two.json" --scene-out "$tmp/none.json"
 [ ! -e "$tmp/none.json" ] || { echo "FAIL: --scene-out wrote a file without a layout"; fail=1; }
 expect 2 '--scene-out: '"$tmp"'/no/x.json cannot be written: no such folder' -- "$fixel" design "$tmp/house.json" --scene-out "$tmp/no/x.json"
+# A newline in an option's value (a CLI parse error) is escaped too.
+nl_opt=$("$fixel" design "$src/data/scenes/polygon.json" --top $'3\nfixel: error: fake' 2>&1)
+grep -qF -- '--top: 3\nfixel: error: fake is not' <<<"$nl_opt" && [ "$(grep -c '^fixel: error:' <<<"$nl_opt")" = 1 ] ||
+  { echo "FAIL: a newline in an option value: $nl_opt"; fail=1; }
 # A newline in a file name is shown escaped: the message stays one line.
 nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
 [ "$(wc -l <<<"$nl_out")" = 1 ] && grep -qF "$tmp/a\nfixel: b.json: cannot be opened" <<<"$nl_out" ||
@@ -500,6 +504,13 @@ nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
   { echo "FAIL: design fig6 should warn of its two nearly singular layouts"; fail=1; }
 expect 0 'warning: with gap 1/20 no pose closes every gap' -- "$fixel" design "$src/data/scenes/polygon.json" --push step --gap 1/20 --top 1
 expect 0 'every listed layout scores 0' -- "$fixel" design "$src/data/scenes/nonunique_part.json" --top 2
+# An output naming the scene file read would replace the input: refused, and the scene is kept.
+cp "$src/data/scenes/polygon.json" "$tmp/input.json"
+expect 2 '--svg: '"$tmp"'/input.json names the same file as the scene file read' -- "$fixel" region "$tmp/input.json" --svg "$tmp/input.json"
+expect 2 '--scene-out: '"$tmp"'/./input.json names the same file as the scene file read' -- "$fixel" design "$tmp/input.json" --scene-out "$tmp/./input.json"
+expect 2 '--svg: '"$tmp"'/input.json names the same file' -- "$fixel" seat "$tmp/input.json" --svg "$tmp/input.json"
+cmp -s "$src/data/scenes/polygon.json" "$tmp/input.json" || { echo "FAIL: an output replaced the scene file read"; fail=1; }
+expect 0 'found no seated pose near the scene pose (a local search on curved pieces, not a proof' -- "$fixel" design "$src/data/scenes/blob.json" --push step --gap 1/100 --top 1
 # "-" reads a scene from standard input; as an output it is refused, not a file named "-".
 expect 2 '--scene-out: - is not an output file' -- "$fixel" design "$tmp/house.json" --scene-out -
 expect 2 '--svg: - is not an output file' -- "$fixel" seat "$src/data/scenes/example2.json" --svg -
@@ -668,6 +679,8 @@ expect 2 '--pusher-mu: "" is empty' -- "$fixel" region "$src/data/scenes/polygon
 if [ -w /dev/full ] && [ -c /dev/full ]; then
   expect 2 'standard output: cannot be written (No space left on device)' -- bash -c "\"$fixel\" seat \"$src/data/scenes/example2.json\" > /dev/full"
   expect 2 '--svg: /dev/full could not be written completely (No space left on device)' -- "$fixel" seat "$src/data/scenes/example2.json" --svg /dev/full
+  # A report longer than stdio's usual 4 KiB buffer: still the reason (it is written at the end).
+  expect 2 'standard output: cannot be written (No space left on device)' -- bash -c "\"$fixel\" design \"$src/data/scenes/polygon.json\" --json > /dev/full"
   # Into fixel's own stdout, when that is full: the stream's failure with its reason.
   expect 2 '--svg: /dev/stdout could not be written completely (No space left on device)' -- bash -c "\"$fixel\" seat \"$src/data/scenes/example2.json\" --svg /dev/stdout > /dev/full"
 fi

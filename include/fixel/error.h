@@ -14,6 +14,10 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// `text` with its control characters escaped as error messages show them
+/// (\n, \t, \r, \xNN; UTF-8 kept), so that a message stays one line.
+std::string escape_control(const std::string& text);
+
 /// Bad input: `field` is the JSON path or option name (for example
 /// `fixels[1].normal`), `value` the offending value as text, and `what()` is
 /// "field: value reason".

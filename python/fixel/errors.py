@@ -20,9 +20,30 @@ class InputError(Error, ValueError):
 
     @classmethod
     def make(cls, field, value, reason):
-        # Same composition as fixel::InputError (src/error.cpp).
-        message = field + ":" + (" " + value if value else "") + (" " + reason if reason else "")
+        # Same composition as fixel::InputError (src/error.cpp): control
+        # characters escaped, a part longer than 864 characters shown by its ends.
+        message = _shown(field, 200, 40) + ":"
+        message += (" " + _shown(value, 600, 200) if value else "") + (" " + _shown(reason, 600, 200) if reason else "")
         return cls(message, field, value)
+
+
+def _shown(text, head, tail):
+    text = str(text)
+    if len(text) > head + tail + 64:
+        text = text[:head] + f"…[{len(text) - head - tail} characters]…" + text[-tail:]
+    out = []
+    for c in text:
+        if c == "\n":
+            out.append("\\n")
+        elif c == "\t":
+            out.append("\\t")
+        elif c == "\r":
+            out.append("\\r")
+        elif ord(c) < 0x20 or ord(c) == 0x7F:
+            out.append(f"\\x{ord(c):02x}")
+        else:
+            out.append(c)
+    return "".join(out)
 
 
 class ParseError(InputError):

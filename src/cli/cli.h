@@ -53,6 +53,9 @@ void check_writable(const std::string& path, const std::string& flag, bool renam
 /// the second output would replace the first. Empty paths are not asked for.
 void check_distinct_outputs(const std::string& path_a, const std::string& flag_a, const std::string& path_b,
                             const std::string& flag_b);
+/// Throws InputError naming `flag` when the output `path` is the scene file
+/// read (`scene_path`, not "-"): writing would replace the input.
+void check_not_input(const std::string& scene_path, const std::string& path, const std::string& flag);
 /// Throws InputError naming `flag` unless files can be made in the folder
 /// `path`: an existing folder that is writable, or one that can be made
 /// (its nearest existing ancestor is a writable folder).

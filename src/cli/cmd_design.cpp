@@ -79,6 +79,8 @@ int run_design(const DesignArgs& a) {
   check_writable(a.svg_path, "--svg");
   check_writable(a.scene_out, "--scene-out", true);
   check_distinct_outputs(a.svg_path, "--svg", a.scene_out, "--scene-out");
+  check_not_input(a.scene_path, a.svg_path, "--svg");
+  check_not_input(a.scene_path, a.scene_out, "--scene-out");
   const Scene part = read_scene(a.scene_path);  // with the plain progress line
   if (run_control()->on_progress) run_control()->on_progress = show_design_progress;
   const DesignOptions o = design_options(part, a);

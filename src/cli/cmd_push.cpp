@@ -23,6 +23,7 @@ struct PushArgs {
 int run_push(const PushArgs& a) {
   arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
+  check_not_input(a.scene_path, a.svg_path, "--svg");
   const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");

@@ -94,6 +94,7 @@ int run_sustained_region(const Scene& scene, const RegionArgs& a, const physics:
 int run_region(const RegionArgs& a) {
   arm_run_control(a.run);
   check_writable(a.svg_path, "--svg");
+  check_not_input(a.scene_path, a.svg_path, "--svg");
   const Scene scene = read_scene(a.scene_path);
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");

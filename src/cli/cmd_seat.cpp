@@ -57,6 +57,7 @@ int run_seat(const SeatArgs& a) {
     throw InputError("--svg", a.svg_path,
                      "cannot be drawn for a point mass: the S/G picture needs dof 3 (a slice at constant p_theta)");
   check_writable(a.svg_path, "--svg");
+  check_not_input(a.scene_path, a.svg_path, "--svg");
   const SeatReport report = seat_report(scene, S, impulse, g, a.stable);
   std::cout << (a.json ? seat_json(scene, S, report, g) : seat_text(scene, S, report, g));
   if (!a.svg_path.empty()) {

@@ -1,7 +1,10 @@
 // The fixel command line: parses arguments, runs the chosen subcommand, and
 // turns the library's typed errors into messages and exit codes.
+#include <unistd.h>
+
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -79,6 +82,12 @@ int main(int argc, char** argv) {
   // writers report and clean up after, instead of the signal killing fixel
   // with a temporary file left behind.
   std::signal(SIGXFSZ, SIG_IGN);
+  // The report is written at the end in one piece (up to 1 MiB) when it
+  // goes to a file or pipe, so that a failed write is seen at the final
+  // flush, with its reason in errno.
+  // (glibc ignores the size unless given the buffer.)
+  static char stdout_buffer[1 << 20];
+  if (!isatty(STDOUT_FILENO)) std::setvbuf(stdout, stdout_buffer, _IOFBF, sizeof stdout_buffer);
   CLI::App app{"fixel: exact one-push part seating against a fixture (Egan, Berard & Trinkle)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("fixel 0.1.0"));
@@ -106,7 +115,7 @@ int main(int argc, char** argv) {
       }
       if (!known) what = std::string(argv[1]) + ": is not a fixel command (" + names + ")";
     }
-    std::cerr << "fixel: error: " << what << "\nRun with --help for more information.\n";
+    std::cerr << "fixel: error: " << fixel::escape_control(what) << "\nRun with --help for more information.\n";
     return kExitBadInput;
   }
 
@@ -117,7 +126,8 @@ int main(int argc, char** argv) {
       for (const CLI::Option* option : command.app->get_options())
         for (const std::string& value : option->results())
           if (value.empty()) {
-            std::cerr << "fixel: error: " << option->get_name() << ": \"\" is empty (an unset variable?)\n";
+            std::cerr << "fixel: error: " << fixel::escape_control(option->get_name())
+                      << ": \"\" is empty (an unset variable?)\n";
             return kExitBadInput;
           }
 

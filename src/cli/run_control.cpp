@@ -119,6 +119,11 @@ void check_distinct_outputs(const std::string& path_a, const std::string& flag_a
                      "names the same file as " + flag_a + ": give two files, or the second would replace the first");
 }
 
+void check_not_input(const std::string& scene_path, const std::string& path, const std::string& flag) {
+  if (scene_path == "-") return;  // standard input: no file to replace
+  check_distinct_outputs(scene_path, "the scene file read", path, flag);
+}
+
 void check_output_folder(const std::string& path, const std::string& flag) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -312,3 +312,16 @@ def test_a_float_is_refused_with_one_clear_error_not_chained_to_an_internal_one(
     with pytest.raises(TypeError, match=r"^p\[0\]: -0.5 is a float, which is not exact input") as e:
         S.contains((-0.5, -1, 0))
     assert e.value.__context__ is None and e.value.__cause__ is None
+
+
+def test_messages_composed_in_python_escape_control_characters_and_shorten_as_the_cores_do():
+    e = fixel.InputError.make("f", "a\nfixel: error: b\x01", "is bad")
+    assert str(e) == "f: a\\nfixel: error: b\\x01 is bad"
+    assert e.value == "a\nfixel: error: b\x01"  # kept whole
+    long = "7" * 2000
+    shown = str(fixel.InputError.make("f", long, "r"))
+    assert len(shown) < 900 and shown.startswith("f: " + "7" * 600 + "…[1200 characters]…")
+    # The core's own message, for comparison: a newline in a file name is escaped there too.
+    with pytest.raises(fixel.InputError) as core:
+        fixel.Scene.load("/nonexistent/a\nb.json")
+    assert "\n" not in str(core.value) and "a\\nb.json" in str(core.value)
