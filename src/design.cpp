@@ -225,6 +225,8 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
     throw InputError("batch", std::to_string(first) + "+" + std::to_string(count),
                      "is outside the " + std::to_string(total) + " triples");
   if (count == 0) return {};
+  check_candidate_list(cands);
+  check_candidates(part, cands);  // the sustained filter reads every candidate, not only the triple's
   long done = 0;
   return run_range(part, cands, o, first, count, stats, [&] { poll(o.control, "design", ++done, count, "layouts"); });
 }
@@ -238,6 +240,10 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
     if (indices[k] < 0 || indices[k] >= triple_count(n))
       throw InputError("batch[" + std::to_string(k) + "]", std::to_string(indices[k]),
                        "is outside the " + std::to_string(triple_count(n)) + " triples");
+  if (!indices.empty()) {
+    check_candidate_list(cands);
+    check_candidates(part, cands);
+  }
   const Rational total = total_length(boundary_of(part));
   const std::vector<internal::Join> joins = internal::joins(boundary_of(part));
   std::vector<DesignLayout> best;

@@ -84,17 +84,22 @@ std::pair<const BezierPiece*, const BezierPiece*> pieces_around(const Boundary& 
 using internal::boundary_of;
 using internal::unit_near;
 
+namespace {
+
+void check_candidate(const Scene& part, const DesignCandidate& c, const std::string& field) {
+  const DesignCandidate own = candidate_at(part, c.curve, c.u, field);
+  if (!(own.point.x == c.point.x && own.point.y == c.point.y && own.normal.x == c.normal.x &&
+        own.normal.y == c.normal.y))
+    throw InputError(field, "curve " + std::to_string(c.curve) + ", u = " + to_string(c.u),
+                     "is not this part's candidate: its point or normal is not the outline's there (make "
+                     "candidates with boundary_candidates or candidate_at of this part)");
+}
+
+}  // namespace
+
 void check_candidates(const Scene& part, const std::vector<DesignCandidate>& candidates) {
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const DesignCandidate& c = candidates[k];
-    const std::string field = "candidates[" + std::to_string(k) + "]";
-    const DesignCandidate own = candidate_at(part, c.curve, c.u, field);
-    if (!(own.point.x == c.point.x && own.point.y == c.point.y && own.normal.x == c.normal.x &&
-          own.normal.y == c.normal.y))
-      throw InputError(field, "curve " + std::to_string(c.curve) + ", u = " + to_string(c.u),
-                       "is not this part's candidate: its point or normal is not the outline's there (make "
-                       "candidates with boundary_candidates or candidate_at of this part)");
-  }
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    check_candidate(part, candidates[k], "candidates[" + std::to_string(k) + "]");
 }
 
 DesignCandidate candidate_at(const Scene& part, int curve, const Rational& u, const std::string& field) {
@@ -208,12 +213,10 @@ std::vector<DesignCandidate> boundary_candidates(const Scene& part, const std::o
   return out;
 }
 
-Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
-                   const DesignOptions& o, bool step, double* angle_error) {
-  for (int k = 0; k < 3; ++k)
-    if (f[k] < 0 || f[k] >= static_cast<int>(cands.size()))
-      throw InputError("layout[" + std::to_string(k) + "]", std::to_string(f[k]),
-                       "is not a candidate index (there are " + std::to_string(cands.size()) + ")");
+namespace internal {
+
+Scene build_layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
+                         const DesignOptions& o, bool step, double* angle_error) {
   Scene s = part;
   s.fixels.clear();
   double worst = 0;
@@ -237,6 +240,29 @@ Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands,
   s.pusher_mu_hi.reset();
   if (angle_error) *angle_error = worst;
   return s;
+}
+
+}  // namespace internal
+
+Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
+                   const DesignOptions& o, bool step, double* angle_error) {
+  for (int k = 0; k < 3; ++k)
+    if (f[k] < 0 || f[k] >= static_cast<int>(cands.size()))
+      throw InputError("layout[" + std::to_string(k) + "]", std::to_string(f[k]),
+                       "is not a candidate index (there are " + std::to_string(cands.size()) + ")");
+  // A list made for another part would be scored as if on this one.
+  for (int k = 0; k < 3; ++k) {
+    const DesignCandidate& c = cands[static_cast<std::size_t>(f[k])];
+    check_candidate(part, c, "candidates[" + std::to_string(f[k]) + "]");
+    for (int j = 0; j < k; ++j) {
+      const Vec2& other = cands[static_cast<std::size_t>(f[j])].point;
+      if (other.x == c.point.x && other.y == c.point.y)
+        throw InputError("layout[" + std::to_string(k) + "]", std::to_string(f[k]),
+                         "puts a second fixel at the point of layout[" + std::to_string(j) + "] (candidate " +
+                             std::to_string(f[j]) + ")");
+    }
+  }
+  return internal::build_layout_scene(part, cands, f, o, step, angle_error);
 }
 
 Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignLayout& layout,

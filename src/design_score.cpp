@@ -284,13 +284,13 @@ Verdict evaluate(const Scene& part, const std::vector<DesignCandidate>& cands, c
     // No form-closure filter here: a one-step IN point does not need it, so
     // a triple without it can still have a positive one-step score.
     double err = 0;
-    const Scene step = layout_scene(part, cands, f, o, true, &err);
+    const Scene step = build_layout_scene(part, cands, f, o, true, &err);
     out.normal_angle_error = err;
     score_step(step, o, total, out, joins);
     out.score = *out.step_score;
     return Verdict::kScored;
   }
-  const Scene scene = layout_scene(part, cands, f, o, false);
+  const Scene scene = build_layout_scene(part, cands, f, o, false);
   // Form closure with a frictionless finger: a candidate whose push is in
   // int K proves it; otherwise the region against int K decides.
   bool closure = false;

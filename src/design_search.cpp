@@ -73,6 +73,8 @@ DesignSearch::DesignSearch(const Scene& part, const std::vector<DesignCandidate>
                            const DesignOptions& options)
     : impl_(std::make_unique<Impl>()) {
   check_design(part, options);
+  check_candidate_list(candidates);
+  check_candidates(part, candidates);
   Impl& s = *impl_;
   s.part = part;
   s.cands = candidates;

@@ -31,9 +31,7 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& paths)
 
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length, const GuaranteedSet* G) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("dump_off(directory)", dir, "cannot be created: " + ec.message());
+  internal::make_output_folder(dir, "dump_off(directory)");
   const Box box = seating_dump_box(S, length);
   std::vector<Halfspace> hs = S.halfspaces;
   for (const auto& h : box.halfspaces()) hs.push_back(h);

@@ -232,4 +232,11 @@ void write_file(const std::string& path_given, const std::string& field,
   }
 }
 
+void make_output_folder(const std::string& dir, const std::string& field) {
+  if (dir == "-") throw InputError(field, dir, "is not an output folder: give a folder name (./- for one named -)");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(field, dir, "cannot be created: " + ec.message());
+}
+
 }  // namespace fixel::internal

@@ -8,6 +8,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/approach_json.h"
+#include "fixel/internal/file_write.h"
 #include "fixel/internal/json_approx.h"
 #include "fixel/internal/off_sidecar.h"
 #include "fixel/io.h"
@@ -357,9 +358,7 @@ std::vector<std::string> write_cone_off(const std::string& dir, const std::strin
 }  // namespace
 
 std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("dump_sustained_off(directory)", dir, "cannot be created: " + ec.message());
+  internal::make_output_folder(dir, "dump_sustained_off(directory)");
   auto meta = [&](const std::string& what, const std::string& description) {
     return json{{"what", what},
                 {"description", description},

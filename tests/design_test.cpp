@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
 
 #include "filter_test_util.h"
+#include "fixel/design_search.h"
 #include "fixel/error.h"
 #include "fixel/filter.h"
 #include "fixel/internal/design_detail.h"
@@ -573,6 +575,48 @@ GTEST_TEST(Design, AnotherPartsCandidatesAndABadIndexAreInputErrorsNamingTheEntr
   }
   EXPECT_THROW(layout_region(part, house_candidates(part), {-1, 1, 2}, frictionless()), InputError);
   EXPECT_FALSE(design(part, house_candidates(part), frictionless()).layouts.empty());  // the same list, unedited
+}
+
+// design() checked the whole list, but the entry points that take a layout
+// (design_batch, design_scene, layout_region) scored another part's
+// candidates, and a layout could put two fixels at one point.
+GTEST_TEST(Design, EveryEntryPointThatTakesALayoutRefusesAnotherPartsCandidateOrARepeatedPoint) {
+  const Scene part = house();
+  auto moved = house_candidates(part);
+  moved[1].normal.y += 1;
+  const DesignOptions o = frictionless();
+  const auto expect_moved = [](const std::function<void()>& run) {
+    try {
+      run();
+      FAIL() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "candidates[1]");
+      EXPECT_NE(std::string(e.what()).find("not this part's candidate"), std::string::npos);
+    }
+  };
+  DesignStats stats;
+  expect_moved([&] { design_batch(part, moved, o, 0, triple_count(static_cast<long>(moved.size())), stats); });
+  expect_moved([&] { design_batch(part, moved, o, std::vector<long>{0}, stats); });  // triple {0, 1, 2}
+  DesignLayout layout;
+  layout.fixels = {0, 1, 2};
+  expect_moved([&] { design_scene(part, moved, layout, 1, o); });
+  expect_moved([&] { layout_region(part, moved, {0, 1, 2}, o); });
+  // The sustained filter reads every candidate: a batch whose triples do not
+  // use candidate 1 is refused too, and so is a search.
+  const long n = static_cast<long>(moved.size());
+  expect_moved([&] { design_batch(part, moved, o, std::vector<long>{triple_count(n) - 1}, stats); });
+  expect_moved([&] { DesignSearch search(part, moved, o); });
+  EXPECT_NO_THROW(design_batch(part, house_candidates(part), o, std::vector<long>{triple_count(n) - 1}, stats));
+  auto same = house_candidates(part);
+  try {
+    layout_scene(part, same, {0, 2, 0}, o, false);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "layout[2]");
+    EXPECT_EQ(e.value(), "0");
+    EXPECT_NE(std::string(e.what()).find("second fixel"), std::string::npos);
+  }
+  EXPECT_NO_THROW(layout_scene(part, same, {0, 2, 3}, o, false));
 }
 
 GTEST_TEST(Design, AStoppedRunThrowsStoppedError) {

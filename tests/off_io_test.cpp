@@ -101,5 +101,20 @@ GTEST_TEST(DumpOff, UnwritableDirectoryIsAnInputError) {
   EXPECT_THROW(dump_off(scene, seating_set(scene), "/proc/fixel/cannot", Rational(1)), InputError);
 }
 
+// "-" made a folder named "-" (Python's to_off too); the CLI refused it.
+GTEST_TEST(DumpOff, AFolderNamedDashIsRefusedAndNothingIsMade) {
+  const Scene scene = parse_scene(internal::paper::kExample2Scene);
+  const bool existed = std::filesystem::exists("-");
+  try {
+    dump_off(scene, seating_set(scene), "-", Rational(1));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "dump_off(directory)");
+    EXPECT_EQ(e.value(), "-");
+    EXPECT_NE(std::string(e.what()).find("not an output folder"), std::string::npos);
+  }
+  EXPECT_EQ(std::filesystem::exists("-"), existed);
+}
+
 }  // namespace
 }  // namespace fixel

@@ -185,7 +185,10 @@ std::array<int, 3> triple_at(long n, long index);
 /// normals (the sustained analysis), or, with `step`, the rational unit
 /// normals and the options' gap (the one-step analysis). `angle_error` gets
 /// the largest rounding angle (rad, display only). Throws InputError naming
-/// `layout[k]` for an index out of range.
+/// `layout[k]` for an index out of range or two fixels at one point, and
+/// `candidates[i]` for a candidate that is not the part's own (as
+/// check_candidates); design_scene, layout_region and complete_layouts
+/// check their layouts so.
 Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const std::array<int, 3>& fixels,
                    const DesignOptions& options, bool step, double* angle_error = nullptr);
 
@@ -209,7 +212,9 @@ Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candid
 /// filtered and scored by the ranking push model; returns the batch's best
 /// `options.top` and adds its counts to `stats`. Single-threaded and a pure
 /// function of its arguments (idempotent: the unit of a distributed run).
-/// Every triple is scored: `options.bound` is not used here.
+/// Every triple is scored: `options.bound` is not used here. Throws what
+/// check_design, check_candidate_list and check_candidates throw (the
+/// sustained filter reads every candidate, not only the triple's).
 std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<DesignCandidate>& candidates,
                                        const DesignOptions& options, long first, long count, DesignStats& stats);
 

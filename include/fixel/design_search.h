@@ -19,8 +19,9 @@ namespace fixel {
 /// for, never on threads or on which worker scored what.
 class DesignSearch {
  public:
-  /// Checks the part and options as check_design. Nothing is computed yet.
-  /// The candidates are copied.
+  /// Checks the part and options as check_design, and the candidates as
+  /// check_candidate_list and check_candidates. Nothing else is computed
+  /// yet. The candidates are copied.
   DesignSearch(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options);
 
   /// Whether the bound applies: the sustained ranking with

@@ -1,5 +1,6 @@
 """The Python API beyond the CLI: round trips, approx views, progress, plots, files."""
 
+import os
 import resource
 import signal
 import threading
@@ -228,6 +229,16 @@ def test_svg_and_off_files_are_written_for_regions_and_sets(tmp_path, polygon):
     other = fixel.seating_set(polygon)
     with pytest.raises(fixel.InputError):
         fixel.to_off(polygon, other, tmp_path / "bad", guaranteed=G)
+    # "-" made a folder named "-"; it names no folder (./- does).
+    cwd = os.getcwd()
+    try:
+        os.chdir(tmp_path)
+        with pytest.raises(fixel.InputError, match="not an output folder"):
+            fixel.to_off(polygon, r.seating, "-")
+        assert not os.path.exists("-")
+        assert fixel.to_off(polygon, r.seating, "./-")
+    finally:
+        os.chdir(cwd)
 
 
 def test_the_plot_helpers_draw_the_region_and_the_wrench_sphere(polygon):

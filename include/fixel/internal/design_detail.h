@@ -59,6 +59,11 @@ std::unique_ptr<RegionTarget> closed_cone_target(std::vector<VectorQ> rows);
 // before a run, not during one.
 void set_design_kept_limit(long limit);
 
+// layout_scene without its checks, for the search's own triples (design()
+// and design_batch check the whole candidate list once).
+Scene build_layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
+                         const DesignOptions& o, bool step, double* angle_error = nullptr);
+
 enum class Verdict { kSingular, kNoFormClosure, kJEmpty, kScored };
 
 // Filters and scores one triple by the ranking push model. `joins`: those

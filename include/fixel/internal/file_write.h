@@ -37,4 +37,10 @@ void write_file(const std::string& path, const std::string& field, const std::fu
 void check_writable(const std::string& path, const std::string& field,
                     SpecialFile special = SpecialFile::kWriteDirectly);
 
+/// Makes the folder `dir` (and its parents) for a dump. Throws
+/// InputError(field, dir, reason) for "-" (standard input where fixel reads
+/// a scene: as a folder it would silently be one named "-") or when the
+/// folder cannot be made.
+void make_output_folder(const std::string& dir, const std::string& field);
+
 }  // namespace fixel::internal
