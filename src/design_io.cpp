@@ -48,6 +48,7 @@ json layout_json(const DesignResult& r, const DesignLayout& l, int rank) {
             {"normal_angle_error", finite(l.normal_angle_error)},
             {"conditioning", finite(l.conditioning)},
             {"nearly_singular", std::isfinite(l.conditioning) ? json(l.conditioning < kNearlySingular) : json(nullptr)},
+            {"curved_contacts", l.curved_contacts >= 0 ? json(l.curved_contacts) : json(nullptr)},
             {"step_seat", l.step_seat.empty() ? json(nullptr) : json(l.step_seat)}};
   if (!l.note.empty()) j["note"] = l.note;
   return j;
@@ -212,11 +213,12 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
       << (l.sustained_empty && *l.sustained_empty ? " (J empty)" : "") << ", one-step " << score_text(l.step_score)
       << std::setprecision(4) << ", J width " << l.j_width << " (of all wrench directions), conditioning "
       << significant(l.conditioning) << "\n";
-    if (l.conditioning < kNearlySingular)
-      s << "   warning: nearly singular (conditioning below " << significant(kNearlySingular)
-        << "): the three normal lines nearly meet in one point; such layouts can score well in the linearised "
-           "model, but did not seat in Box2D (docs/design.md): validate with `fixel region LAYOUT --push sustained "
-           "--validate 10`\n";
+    if (l.conditioning < kNearlySingular && l.curved_contacts > 0)
+      s << "   warning: nearly singular (conditioning below " << significant(kNearlySingular) << ") with "
+        << l.curved_contacts << " of its contacts on curved pieces: the three normal lines nearly meet in one "
+        << "point, and the part's curvature there, which the linearised model omits, decides; such layouts on "
+           "fig6 and blob32 seated no push in Box2D (docs/design.md): validate with `fixel region LAYOUT --push "
+           "sustained --validate 10`\n";
     if (!l.step_seat.empty()) {
       // An exact refusal (polyline edges) proves there is no seat; a local
       // search's ("near the scene pose", curved pieces) does not.

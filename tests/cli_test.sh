@@ -500,8 +500,14 @@ nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
   { echo "FAIL: a newline in a file name: $nl_out"; fail=1; }
 # The design report's warnings: fig6's two best layouts are nearly singular, the polygon's two best one-step
 # layouts with gap 1/20 have no seated pose, and nonunique_part scores 0 throughout.
-[ "$("$fixel" design "$src/data/scenes/fig6.json" --top 3 | grep -c 'warning: nearly singular')" = 2 ] ||
+[ "$("$fixel" design "$src/data/scenes/fig6.json" --top 3 | grep -c 'warning: nearly singular (conditioning below 0.005) with 3 of its contacts on curved pieces')" = 2 ] ||
   { echo "FAIL: design fig6 should warn of its two nearly singular layouts"; fail=1; }
+# The polygon's #9 is nearly singular too, but on straight edges (such layouts seated in Box2D): no warning.
+poly_design=$("$fixel" design "$src/data/scenes/polygon.json" --top 10 --json)
+[ "$(/usr/bin/python3 -c 'import json,sys; l=json.load(sys.stdin)["layouts"][8]; print(l["nearly_singular"], l["curved_contacts"])' <<<"$poly_design")" = "True 0" ] ||
+  { echo "FAIL: polygon design #9 should be nearly singular with no curved contact"; fail=1; }
+[ "$("$fixel" design "$src/data/scenes/polygon.json" --top 10 | grep -c 'nearly singular')" = 0 ] ||
+  { echo "FAIL: design polygon warned of a nearly singular layout on straight edges"; fail=1; }
 expect 0 'warning: with gap 1/20 no pose closes every gap' -- "$fixel" design "$src/data/scenes/polygon.json" --push step --gap 1/20 --top 1
 expect 0 'every listed layout scores 0' -- "$fixel" design "$src/data/scenes/nonunique_part.json" --top 2
 # An output naming the scene file read would replace the input: refused, and the scene is kept.

@@ -70,9 +70,10 @@ struct DesignOptions {
   RunControl* control = nullptr;
 };
 
-/// DesignLayout::conditioning below which a report warns (display only):
-/// fig6's top two layouts (6.4e-4) seated 0 of 10 pushes in Box2D, the
-/// layouts checked from 0.0052 up every push (docs/design.md).
+/// DesignLayout::conditioning below which a layout is nearly singular
+/// (display only), and a report warns when a contact lies on a curved
+/// piece: such layouts (6e-4) seated no push in Box2D on fig6 and blob32,
+/// while those on straight edges seated every push (docs/design.md).
 constexpr double kNearlySingular = 0.005;
 
 /// One evaluated layout: three candidates (indices into the candidate list,
@@ -102,6 +103,11 @@ struct DesignLayout {
   /// kNearlySingular the model's J can be wide while the engine does not
   /// seat the part (docs/design.md, "Reading a design").
   double conditioning = std::numeric_limits<double>::quiet_NaN();
+  /// How many of the three contacts lie on a curved piece of the outline
+  /// (degree above 1); −1 if unknown. A nearly singular layout is warned of
+  /// only with one: on straight edges such layouts seated in Box2D
+  /// (docs/design.md, "Reading a design").
+  int curved_contacts = -1;
   /// With a gap: why the one-step scene has no seated pose (no pose closes
   /// every gap, so that fixture cannot seat the part); empty if it has one.
   std::string step_seat;

@@ -56,6 +56,9 @@ class Layout:
     # display only; nearly_singular: below fixel's warning level (docs/design.md).
     conditioning: Optional[float] = None
     nearly_singular: Optional[bool] = None
+    # Contacts on curved pieces (degree above 1): a nearly singular layout is
+    # warned of only with one (docs/design.md).
+    curved_contacts: Optional[int] = None
     # With a gap: why the one-step scene has no seated pose (None if it has one).
     step_seat: Optional[str] = None
 
@@ -100,6 +103,7 @@ def _design_of(doc):
             note=l.get("note", ""),
             conditioning=l["conditioning"],
             nearly_singular=l["nearly_singular"],
+            curved_contacts=l["curved_contacts"],
             step_seat=l["step_seat"],
         )
         for l in doc["layouts"]
