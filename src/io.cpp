@@ -307,7 +307,8 @@ std::string outcomes_text(const Scene& scene, const VectorQ& p_ext, const std::v
     out << "     velocity = " << text(o.velocity) << ", gaps = " << text(o.gaps) << "\n";
     out << "     p_n = " << text(o.p_n) << ", p_t = " << text(o.p_t) << "\n";
   }
-  out << seating << " seating, " << outcomes.size() - seating << " non-seating\n";
+  out << seating << " seating, " << outcomes.size() - seating << " non-seating"
+      << (family ? " (of the listed outcomes: a family counts once per listed point of it)" : "") << "\n";
   return out.str();
 }
 

@@ -75,8 +75,9 @@ int run_batch(const std::vector<std::string>& paths, bool json, const std::funct
 
 /// The impulse the one-step commands act on: b₀ + p (seat --impulse,
 /// simulate's step 1, solutions), as region adds b₀ to every push. Says so
-/// on stderr when b₀ is not zero.
-VectorQ with_background(const Scene& scene, const VectorQ& p);
+/// when b₀ is not zero: in the report (standard output) before it, or on
+/// stderr with `json` (the JSON stays one document).
+VectorQ with_background(const Scene& scene, const VectorQ& p, bool json);
 
 /// Help text of a positional list of scenes.
 // Whole-number options are decimal, as exact numbers are (docs/formats.md:

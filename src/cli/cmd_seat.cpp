@@ -51,7 +51,7 @@ int run_seat(const SeatArgs& a) {
   if (a.guaranteed) G = guaranteed_set(scene, S, run_control());
   const GuaranteedSet* g = G ? &*G : nullptr;
   std::optional<VectorQ> impulse;
-  if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
+  if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof), a.json);
   // Every input check before any output (the picture is a p_theta slice).
   if (!a.svg_path.empty() && scene.body.dof != 3)
     throw InputError("--svg", a.svg_path,

@@ -22,7 +22,7 @@ struct ImpulseArgs {
 int run_simulate(const ImpulseArgs& a) {
   arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
-  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof), a.json);
   const auto sim = simulate(scene, {p}, a.steps, run_control());
   // Step 1's outcomes, for the report's count: a stop there is simulate's.
   OutcomeCount first;
@@ -48,7 +48,7 @@ int run_simulate(const ImpulseArgs& a) {
 int run_solutions(const ImpulseArgs& a) {
   arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
-  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof), a.json);
   const auto outcomes = enumerate_outcomes(scene, p, run_control());
   end_progress();
   std::cout << (a.json ? outcomes_json(scene, p, outcomes) : outcomes_text(scene, p, outcomes));

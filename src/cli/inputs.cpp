@@ -47,7 +47,7 @@ Scene read_scene(const std::string& path) {
   return scene;
 }
 
-VectorQ with_background(const Scene& scene, const VectorQ& p) {
+VectorQ with_background(const Scene& scene, const VectorQ& p, bool json) {
   if (scene.background_impulse.isZero()) return p;
   const VectorQ total = scene.background_impulse + p;
   std::string b0, sum;
@@ -55,8 +55,10 @@ VectorQ with_background(const Scene& scene, const VectorQ& p) {
     b0 += (k ? ", " : "") + to_string(scene.background_impulse[k]);
     sum += (k ? ", " : "") + to_string(total[k]);
   }
-  std::cerr << "note: the scene's background_impulse b0 = (" << b0 << ") is added: the impulse used is b0 + p = ("
-            << sum << ")\n";
+  // In the text report itself: the report shows only b0 + p, which a reader
+  // who drops stderr would take for the impulse typed.
+  (json ? std::cerr : std::cout) << "note: the scene's background_impulse b0 = (" << b0
+                                 << ") is added: the impulse used is b0 + p = (" << sum << ")\n";
   return total;
 }
 
