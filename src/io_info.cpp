@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -71,10 +72,17 @@ std::string scene_info_text(const Scene& scene, const SceneInfo& info) {
     out << "  inertia I = " << both(b.inertia) << " kg·m² about c"
         << (b.inertia_from_area ? " (uniform density m / area)" : " (given)") << "\n";
   out << "  velocity ν = " << both(b.velocity) << (b.dof == 3 ? " (m/s, m/s, rad/s)" : " m/s") << "\n";
-  if (info.area)
-    out << "  outline: " << b.boundary->curves.size() << " curve(s), " << b.boundary->pieces.size()
-        << " Bézier piece(s), area " << both(*info.area) << " m²\n";
-  else
+  if (info.area) {
+    // Straight edges apart: "Bézier pieces" alone read as curved ones.
+    std::size_t edges = 0;
+    std::map<int, std::size_t> curved;  // degree -> pieces
+    for (const auto& p : b.boundary->pieces) p.degree() == 1 ? ++edges : ++curved[p.degree()];
+    out << "  outline: " << b.boundary->curves.size() << " curve(s), ";
+    if (edges > 0) out << edges << " straight edge(s)" << (curved.empty() ? "" : ", ");
+    std::size_t k = 0;
+    for (const auto& [degree, n] : curved) out << (k++ ? ", " : "") << n << " Bézier piece(s) of degree " << degree;
+    out << ", area " << both(*info.area) << " m²\n";
+  } else
     out << "  outline: none (no pushing region, push or seated pose)\n";
   out << "fixels: point p on the part at the scene pose, inward unit normal n; the fixel sits at p − ψ n\n";
   for (std::size_t i = 0; i < scene.fixels.size(); ++i) {

@@ -507,6 +507,9 @@ grep -qF -- '--top: 3\nfixel: error: fake is not' <<<"$nl_opt" && [ "$(grep -c '
 nl_out=$("$fixel" seat "$tmp/a"$'\n'"fixel: b.json" 2>&1)
 [ "$(wc -l <<<"$nl_out")" = 1 ] && grep -qF "$tmp/a\nfixel: b.json: cannot be opened" <<<"$nl_out" ||
   { echo "FAIL: a newline in a file name: $nl_out"; fail=1; }
+# info counts straight edges apart from curved pieces (a pentagon; a rectangle with four cubic corners).
+expect 0 'outline: 1 curve(s), 5 straight edge(s), area 5 m²' -- "$fixel" info "$src/data/scenes/polygon.json"
+expect 0 'outline: 8 curve(s), 4 straight edge(s), 4 Bézier piece(s) of degree 3, area' -- "$fixel" info "$src/data/scenes/example2_rounded.json"
 # The design report's warnings: fig6's two best layouts are nearly singular, the polygon's two best one-step
 # layouts with gap 1/20 have no seated pose, and nonunique_part scores 0 throughout.
 [ "$("$fixel" design "$src/data/scenes/fig6.json" --top 3 | grep -c 'warning: nearly singular (conditioning below 0.005) with 3 of its contacts on curved pieces')" = 2 ] ||
