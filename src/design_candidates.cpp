@@ -244,8 +244,9 @@ Scene build_layout_scene(const Scene& part, const std::vector<DesignCandidate>& 
 
 }  // namespace internal
 
-Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
-                   const DesignOptions& o, bool step, double* angle_error) {
+namespace internal {
+
+void check_layout(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f) {
   for (int k = 0; k < 3; ++k)
     if (f[k] < 0 || f[k] >= static_cast<int>(cands.size()))
       throw InputError("layout[" + std::to_string(k) + "]", std::to_string(f[k]),
@@ -262,6 +263,25 @@ Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands,
                              std::to_string(f[j]) + ")");
     }
   }
+}
+
+int curved_contacts(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f) {
+  int n = 0;
+  for (int i : f) {
+    const DesignCandidate& c = cands[static_cast<std::size_t>(i)];
+    // Both pieces that meet at the point, whichever curve names it: at a
+    // join of a straight and a curved piece the part is curved on one side.
+    const auto [left, right] = pieces_around(boundary_of(part), c.curve, c.u);
+    n += (left && left->degree() > 1) || (right && right->degree() > 1);
+  }
+  return n;
+}
+
+}  // namespace internal
+
+Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
+                   const DesignOptions& o, bool step, double* angle_error) {
+  internal::check_layout(part, cands, f);
   return internal::build_layout_scene(part, cands, f, o, step, angle_error);
 }
 
@@ -275,6 +295,15 @@ Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candid
   const bool step = o.push == DesignPush::kStep;
   double worst = 0;
   Scene s = layout_scene(part, candidates, layout.fixels, o, step, &worst);
+  // The description states the layout's score: it must be this part's
+  // under these options (a layout of another part or run had its own).
+  DesignLayout again;
+  again.fixels = layout.fixels;
+  internal::evaluate(part, candidates, o, internal::total_length(internal::boundary_of(part)), layout.fixels, again);
+  if (again.score != layout.score)
+    throw InputError("layout.score", to_string(layout.score),
+                     "is not this layout's score on this part under these options (it scores " +
+                         to_string(again.score) + " here): a layout of another part or of another run");
   if (o.pusher_mu_lo && *o.pusher_mu_lo < o.pusher_mu) {  // the scene keeps the interval it was judged over
     s.pusher_mu = *o.pusher_mu_lo;
     s.pusher_mu_hi = o.pusher_mu;

@@ -212,21 +212,6 @@ double conditioning(const Scene& s) {
   return std::sqrt(std::max(0.0, eigen.eigenvalues()(0)));
 }
 
-// How many of the candidates f lie on a piece of degree above 1 (at a join,
-// the piece the candidate's point starts or ends: either one's degree
-// counts).
-int curved_contacts(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f) {
-  int n = 0;
-  for (int i : f) {
-    const DesignCandidate& c = cands[static_cast<std::size_t>(i)];
-    bool curved = false;
-    for (const auto& p : internal::boundary_of(part).pieces)
-      if (p.curve == c.curve && p.u0 <= c.u && c.u <= p.u1) curved = curved || p.degree() > 1;
-    n += curved;
-  }
-  return n;
-}
-
 // The sustained score of a scene with three fixels: J and, if J is not
 // empty, the region against it.
 // With `width` false (ranking every triple) J is built without its pieces'
@@ -332,11 +317,12 @@ using internal::total_length;
 void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& cands, const DesignOptions& o,
                       std::vector<DesignLayout>& layouts) {
   const Rational total = total_length(boundary_of(part));
+  for (const auto& l : layouts) internal::check_layout(part, cands, l.fixels);  // thrown, not a note
   for (auto& l : layouts) {
     try {
       const Scene s = layout_scene(part, cands, l.fixels, o, false);
       l.conditioning = conditioning(s);
-      l.curved_contacts = curved_contacts(part, cands, l.fixels);
+      l.curved_contacts = internal::curved_contacts(part, cands, l.fixels);
       if (!l.sustained_score)
         score_sustained(s, o, total, l, true);
       else if (l.sustained_empty.has_value() && !*l.sustained_empty)  // ranked without J's width

@@ -461,8 +461,11 @@ expect 0 'background_impulse b0 = (29157/10540' -- "$fixel" seat "$src/data/scen
 expect_line 0 '  "non_seating": 2' -- "$fixel" solutions "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --json
 expect 0 'b0 + p' -- "$fixel" simulate "$src/data/scenes/nonunique_part.json" --impulse 0,0,0
 # The note is in the text report itself (a reader who drops stderr saw only b0 + p); with --json on stderr.
-grep -q '^note: the scene.s background_impulse b0' <("$fixel" seat "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 2>/dev/null) ||
+grep -q '^note: scene "nonunique_part" has background_impulse b0' <("$fixel" seat "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 2>/dev/null) ||
   { echo "FAIL: seat --impulse with b0: the text report should carry the note"; fail=1; }
+# ... but only with a report: bad input leaves standard output empty.
+[ -z "$("$fixel" seat "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --svg /nonexistent/x.svg 2>/dev/null)" ] ||
+  { echo "FAIL: seat with b0 and a bad --svg wrote to standard output"; fail=1; }
 "$fixel" solutions "$src/data/scenes/nonunique_part.json" --impulse 0,0,0 --json 2>/dev/null | python3 -c 'import json,sys; json.load(sys.stdin)' ||
   { echo "FAIL: solutions --json with b0: stdout should be one JSON document"; fail=1; }
 # fixel design (docs/design.md): the house part of tests/design_test.cpp, an empty fixels list, four listed

@@ -264,9 +264,13 @@ GTEST_TEST(Design, ALayoutWithAnIrrationalNormalIsRoundedAndMarkedOffBoundary) {
   const Scene part = house();
   const auto c = parse_candidates(part, R"({"candidates": [{"curve": 0, "u": "1/4"}, {"curve": 0, "u": "3/4"},
                                                            {"curve": 0, "u": "5/2"}]})");
-  DesignLayout layout;
-  layout.fixels = {0, 1, 2};
-  layout.score = Rational(1, 7);
+  DesignStats stats;
+  const auto scored = design_batch(part, c, frictionless(), 0, 1, stats);  // the one triple {0, 1, 2}
+  ASSERT_EQ(scored.size(), 1u);
+  DesignLayout layout = scored[0];
+  layout.score = Rational(1, 7);  // not its score: refused (the description would state it)
+  EXPECT_THROW(design_scene(part, c, layout, 3, frictionless()), InputError);
+  layout.score = scored[0].score;
   double angle_error = 0;
   const Scene scene = design_scene(part, c, layout, 3, frictionless(), &angle_error);
   EXPECT_FALSE(scene.fixels[0].off_boundary);
@@ -617,6 +621,56 @@ GTEST_TEST(Design, EveryEntryPointThatTakesALayoutRefusesAnotherPartsCandidateOr
     EXPECT_NE(std::string(e.what()).find("second fixel"), std::string::npos);
   }
   EXPECT_NO_THROW(layout_scene(part, same, {0, 2, 3}, o, false));
+}
+
+// design_scene wrote another part's (or run's) score into the scene's
+// description: the layout is scored again, and complete_layouts threw
+// nothing for another part's candidates (each layout got a note instead).
+GTEST_TEST(Design, DesignSceneRefusesALayoutWhoseScoreIsNotItsScoreOnThisPart) {
+  const Scene polygon = scene_file("polygon"), fig6 = scene_file("fig6");
+  DesignOptions o;
+  o.resolution = Rational(1, 32);
+  o.top = 1;
+  const auto poly_cands = boundary_candidates(polygon, std::nullopt);
+  const DesignResult r = design(polygon, poly_cands, o);
+  ASSERT_EQ(r.layouts.size(), 1u);
+  ASSERT_GT(r.layouts[0].score, 0);
+  EXPECT_NO_THROW(design_scene(polygon, poly_cands, r.layouts[0], 1, o));  // its own part and options
+  const auto fig6_cands = boundary_candidates(fig6, std::nullopt);
+  try {
+    design_scene(fig6, fig6_cands, r.layouts[0], 1, o);  // valid fig6 candidates, the polygon's score
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "layout.score");
+    EXPECT_EQ(e.value(), to_string(r.layouts[0].score));
+  }
+  DesignOptions finer = o;
+  finer.mu = o.mu + Rational(1, 10);  // another run's options: another score
+  EXPECT_THROW(design_scene(polygon, poly_cands, r.layouts[0], 1, finer), InputError);
+  auto layouts = r.layouts;
+  auto moved = poly_cands;
+  moved[static_cast<std::size_t>(layouts[0].fixels[0])].normal.x += 1;
+  EXPECT_THROW(complete_layouts(polygon, moved, o, layouts), InputError);
+}
+
+// curved_contacts counted a contact at a join of a straight and a curved
+// piece by the curve that named it: 0 as the end of edge 0, 1 as the start
+// of curve 1. example2_rounded's outline: polyline edges (curves 0, 2, 4,
+// 6) and cubic corners (curves 1, 3, 5, 7), each over u in [0, 1].
+GTEST_TEST(Design, AContactAtAStraightCurvedJoinCountsAsCurvedWhicheverCurveNamesIt) {
+  const Scene part = scene_file("example2_rounded");
+  const DesignCandidate end0 = candidate_at(part, 0, Rational(1), "a"),
+                        start1 = candidate_at(part, 1, Rational(0), "b");
+  ASSERT_EQ(end0.point.x, start1.point.x);
+  ASSERT_EQ(end0.point.y, start1.point.y);
+  const DesignCandidate edge0 = candidate_at(part, 0, Rational(1, 2), "c"),
+                        edge2 = candidate_at(part, 2, Rational(1, 2), "d"),
+                        edge4 = candidate_at(part, 4, Rational(1, 2), "e"),
+                        corner3 = candidate_at(part, 3, Rational(1, 2), "f");
+  EXPECT_EQ(internal::curved_contacts(part, {end0, edge2, edge4}, {0, 1, 2}), 1);
+  EXPECT_EQ(internal::curved_contacts(part, {start1, edge2, edge4}, {0, 1, 2}), 1);
+  EXPECT_EQ(internal::curved_contacts(part, {edge0, edge2, edge4}, {0, 1, 2}), 0);
+  EXPECT_EQ(internal::curved_contacts(part, {edge0, corner3, start1}, {0, 1, 2}), 2);
 }
 
 GTEST_TEST(Design, AStoppedRunThrowsStoppedError) {

@@ -72,8 +72,9 @@ struct DesignOptions {
 
 /// DesignLayout::conditioning below which a layout is nearly singular
 /// (display only), and a report warns when a contact lies on a curved
-/// piece: such layouts (6e-4) seated no push in Box2D on fig6 and blob32,
-/// while those on straight edges seated every push (docs/design.md).
+/// piece: 3 of the 4 such layouts measured (6e-4, fig6 and blob32) seated
+/// no push in Box2D, while the 19 on straight edges seated every push
+/// (docs/design.md).
 constexpr double kNearlySingular = 0.005;
 
 /// One evaluated layout: three candidates (indices into the candidate list,
@@ -210,7 +211,10 @@ Scene layout_scene(const Scene& part, const std::vector<DesignCandidate>& candid
 /// normals, the options' gap), `off_boundary` where rounded. The name is
 /// the part's with "-layout-" and `rank` (1 = best); the description says
 /// which candidates, the score and any rounding. Throws InputError naming
-/// `rank` (< 1) or `layout` (a candidate index out of range).
+/// `rank` (< 1), `layout` (a candidate index out of range), what
+/// layout_scene throws, and `layout.score` when the layout's score is not
+/// its score on this part under `options` (a layout of another part or
+/// run: the layout is scored again, one layout's work).
 Scene design_scene(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignLayout& layout,
                    int rank, const DesignOptions& options, double* angle_error = nullptr);
 
@@ -234,7 +238,9 @@ std::vector<DesignLayout> design_batch(const Scene& part, const std::vector<Desi
 void rank_layouts(std::vector<DesignLayout>& layouts, int top);
 
 /// Fills the scores of the other push model (and J's width) of reported
-/// layouts, so each carries both scores.
+/// layouts, so each carries both scores. Throws what layout_scene throws
+/// for a layout (another part's candidates); an analysis that fails for
+/// one layout is that layout's `note`.
 void complete_layouts(const Scene& part, const std::vector<DesignCandidate>& candidates, const DesignOptions& options,
                       std::vector<DesignLayout>& layouts);
 

@@ -74,10 +74,15 @@ Scene read_scene(const std::string& path);
 int run_batch(const std::vector<std::string>& paths, bool json, const std::function<int(const std::string&)>& run);
 
 /// The impulse the one-step commands act on: b₀ + p (seat --impulse,
-/// simulate's step 1, solutions), as region adds b₀ to every push. Says so
-/// when b₀ is not zero: in the report (standard output) before it, or on
-/// stderr with `json` (the JSON stays one document).
-VectorQ with_background(const Scene& scene, const VectorQ& p, bool json);
+/// simulate's step 1, solutions), as region adds b₀ to every push.
+VectorQ with_background(const Scene& scene, const VectorQ& p);
+/// The line that says so when b₀ is not zero (empty otherwise), naming the
+/// scene; `total` is b₀ + p. Printed with the report, after every input
+/// check: its first line in text, on stderr with --json (the JSON stays
+/// one document).
+std::string background_note(const Scene& scene, const VectorQ& total);
+/// Prints background_note (if any) where the report's mode puts it.
+void print_background_note(const Scene& scene, const VectorQ& total, bool json);
 
 /// Help text of a positional list of scenes.
 // Whole-number options are decimal, as exact numbers are (docs/formats.md:

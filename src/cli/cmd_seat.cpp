@@ -51,7 +51,7 @@ int run_seat(const SeatArgs& a) {
   if (a.guaranteed) G = guaranteed_set(scene, S, run_control());
   const GuaranteedSet* g = G ? &*G : nullptr;
   std::optional<VectorQ> impulse;
-  if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof), a.json);
+  if (!a.impulse_text.empty()) impulse = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   // Every input check before any output (the picture is a p_theta slice).
   if (!a.svg_path.empty() && scene.body.dof != 3)
     throw InputError("--svg", a.svg_path,
@@ -59,6 +59,7 @@ int run_seat(const SeatArgs& a) {
   check_writable(a.svg_path, "--svg");
   check_not_input(a.scene_path, a.svg_path, "--svg");
   const SeatReport report = seat_report(scene, S, impulse, g, a.stable);
+  if (impulse) print_background_note(scene, *impulse, a.json);
   std::cout << (a.json ? seat_json(scene, S, report, g) : seat_text(scene, S, report, g));
   if (!a.svg_path.empty()) {
     write_guaranteed_svg(a.svg_path, scene, S, g, impulse ? (*impulse)[2] : default_slice_theta(S), impulse);

@@ -22,7 +22,7 @@ struct ImpulseArgs {
 int run_simulate(const ImpulseArgs& a) {
   arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
-  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof), a.json);
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   const auto sim = simulate(scene, {p}, a.steps, run_control());
   // Step 1's outcomes, for the report's count: a stop there is simulate's.
   OutcomeCount first;
@@ -41,6 +41,7 @@ int run_simulate(const ImpulseArgs& a) {
                        e.done(), e.total());
   }
   end_progress();
+  print_background_note(scene, p, a.json);
   std::cout << (a.json ? simulation_json(scene, sim, &first) : simulation_text(scene, sim, &first));
   return 0;
 }
@@ -48,9 +49,10 @@ int run_simulate(const ImpulseArgs& a) {
 int run_solutions(const ImpulseArgs& a) {
   arm_run_control(a.run);
   const Scene scene = read_scene(a.scene_path);
-  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof), a.json);
+  const VectorQ p = with_background(scene, parse_impulse(a.impulse_text, scene.body.dof));
   const auto outcomes = enumerate_outcomes(scene, p, run_control());
   end_progress();
+  print_background_note(scene, p, a.json);
   std::cout << (a.json ? outcomes_json(scene, p, outcomes) : outcomes_text(scene, p, outcomes));
   return 0;
 }

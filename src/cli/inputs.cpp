@@ -47,19 +47,25 @@ Scene read_scene(const std::string& path) {
   return scene;
 }
 
-VectorQ with_background(const Scene& scene, const VectorQ& p, bool json) {
-  if (scene.background_impulse.isZero()) return p;
-  const VectorQ total = scene.background_impulse + p;
+VectorQ with_background(const Scene& scene, const VectorQ& p) {
+  return scene.background_impulse.isZero() ? p : VectorQ(scene.background_impulse + p);
+}
+
+std::string background_note(const Scene& scene, const VectorQ& total) {
+  if (scene.background_impulse.isZero()) return "";
   std::string b0, sum;
   for (int k = 0; k < total.size(); ++k) {
     b0 += (k ? ", " : "") + to_string(scene.background_impulse[k]);
     sum += (k ? ", " : "") + to_string(total[k]);
   }
+  return "note: scene \"" + escape_control(scene.name) + "\" has background_impulse b0 = (" + b0 +
+         "), added: the impulse used is b0 + p = (" + sum + ")\n";
+}
+
+void print_background_note(const Scene& scene, const VectorQ& total, bool json) {
   // In the text report itself: the report shows only b0 + p, which a reader
   // who drops stderr would take for the impulse typed.
-  (json ? std::cerr : std::cout) << "note: the scene's background_impulse b0 = (" << b0
-                                 << ") is added: the impulse used is b0 + p = (" << sum << ")\n";
-  return total;
+  (json ? std::cerr : std::cout) << background_note(scene, total);
 }
 
 namespace {

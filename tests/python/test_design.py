@@ -88,6 +88,33 @@ def test_a_layout_as_a_scene_gives_its_score_through_the_region():
     assert fixel.design_scene(HOUSE, d, rank=2).name == "house-layout-2"
 
 
+def test_design_scene_refuses_a_part_with_the_same_points_but_another_outline():
+    # The polygon's best layout has a fixel at u = 713/256 on edge 2. Turning
+    # edge 2 about that point keeps all three points but changes the outline:
+    # design_scene described the scene with the polygon's score.
+    polygon = fixel.Scene.load(str(SCENE_DIR / "polygon.json"))
+    d = fixel.design(polygon, top=1, jobs=1)
+    fixels = d.layouts[0].fixels
+    assert [c.u for c in fixels][1] == Fraction(713, 256)
+    t = Fraction(201, 256)  # the fixel's place along edge 2, from (3/2, 1/2) to (1/4, 3/2)
+    p = fixels[1].point
+    turned = (Fraction(-5, 4), Fraction(9, 8))  # edge 2's direction (-5/4, 1), turned
+    doc = polygon.to_dict()
+    points = doc["body"]["boundary"][0]["points"]
+    points[2] = [str(p[0] - t * turned[0]), str(p[1] - t * turned[1])]
+    points[3] = [str(p[0] + (1 - t) * turned[0]), str(p[1] + (1 - t) * turned[1])]
+    for key in ("mass", "inertia", "center_of_mass"):
+        doc["body"].pop(key, None)  # the outline's own, derived again
+    other = fixel.Scene.from_dict(doc)
+    assert [fixel.design_candidates(other, [(c.curve, c.u) for c in fixels])[k].point for k in range(3)] == [
+        c.point for c in fixels
+    ]
+    with pytest.raises(fixel.InputError) as e:
+        fixel.design_scene(other, d)
+    assert e.value.field == "layout.score" and e.value.value == str(d.layouts[0].score)
+    assert fixel.design_scene(polygon, d).name == "polygon-layout-1"
+
+
 def test_design_scene_is_the_scene_the_cli_writes(tmp_path, polygon_candidates):
     path = tmp_path / "candidates.json"
     path.write_text(json.dumps({"candidates": [{"curve": c, "u": str(u)} for c, u in polygon_candidates]}))

@@ -59,6 +59,15 @@ std::unique_ptr<RegionTarget> closed_cone_target(std::vector<VectorQ> rows);
 // before a run, not during one.
 void set_design_kept_limit(long limit);
 
+// layout_scene's checks: indices in range, three distinct points, each
+// candidate the part's own (check_candidates). InputError naming
+// `layout[k]` or `candidates[i]`.
+void check_layout(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f);
+
+// How many of the layout's three contacts touch a curved piece (degree
+// above 1) on either side of the point, whichever curve names it.
+int curved_contacts(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f);
+
 // layout_scene without its checks, for the search's own triples (design()
 // and design_batch check the whole candidate list once).
 Scene build_layout_scene(const Scene& part, const std::vector<DesignCandidate>& cands, const std::array<int, 3>& f,
