@@ -251,6 +251,70 @@ GTEST_TEST(Filter, SustainedAndGuaranteedSetsOfSeededRandomPartsAreIdenticalJson
   EXPECT_GT(with_j_prime, 0);  // and some J′, so its region ran on a non-empty set
 }
 
+// The rounded random parts (conditioning_bench --rounded): the polygon's
+// fixels, unchanged, and each corner a cubic Bézier meeting the straight
+// rest of both edges tangentially (an exact check at every join).
+GTEST_TEST(RandomParts, RoundedCornersKeepThePolygonsFixelsAndMeetTheirEdgesTangentially) {
+  std::mt19937_64 rng(2028);
+  int parts = 0;
+  for (int k = 0; k < 400 && parts < 4; ++k) {
+    std::mt19937_64 same = rng;  // the rounded part draws from the same state
+    const std::optional<Scene> polygon = bench::random_part(rng, k);
+    const std::optional<Scene> rounded = bench::random_part(same, k, 100, 125, nullptr, true, true);
+    if (!polygon || !rounded) continue;
+    ++parts;
+    SCOPED_TRACE(rounded->name);
+    ASSERT_EQ(rounded->fixels.size(), polygon->fixels.size());
+    for (std::size_t i = 0; i < polygon->fixels.size(); ++i) {
+      EXPECT_TRUE(is_zero(sub(rounded->fixels[i].p_AoF_A, polygon->fixels[i].p_AoF_A)));
+      EXPECT_TRUE(is_zero(sub(rounded->fixels[i].n_A, polygon->fixels[i].n_A)));
+      EXPECT_EQ(rounded->fixels[i].gap, polygon->fixels[i].gap);
+    }
+    const std::vector<BezierPiece>& pieces = rounded->body.boundary->pieces;
+    const std::size_t corners = polygon->body.boundary->pieces.size();
+    ASSERT_EQ(pieces.size(), 2 * corners);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const BezierPiece &a = pieces[i], &b = pieces[(i + 1) % pieces.size()];
+      EXPECT_EQ(a.control.size(), i % 2 == 0 ? 4u : 2u);  // corner, then straight rest
+      EXPECT_TRUE(is_zero(sub(a.point(Rational(1)), b.point(Rational(0)))));
+      const Vec2 out = a.derivative(Rational(1), 1), in = b.derivative(Rational(0), 1);
+      EXPECT_EQ(cross(out, in), 0);  // tangent at the join
+      EXPECT_GT(dot(out, in), 0);
+    }
+    EXPECT_LT(rounded->body.boundary->mass.area, polygon->body.boundary->mass.area);
+  }
+  EXPECT_EQ(parts, 4);
+}
+
+// S's and J's regions of seeded rounded random parts, where each cone test
+// on a corner runs the Bézier pieces' filters on data no one chose.
+GTEST_TEST(Filter, RegionsOfSeededRoundedRandomPartsAreIdenticalJsonWithAndWithoutFilters) {
+  std::mt19937_64 rng(2029);
+  int parts = 0, with_j = 0;
+  for (int k = 0; k < 400 && parts < 3; ++k) {
+    const std::optional<Scene> part = bench::random_part(rng, k, 100, 125, nullptr, true, true);
+    if (!part) continue;
+    ++parts;
+    SCOPED_TRACE(part->name);
+    auto regions = [&]() -> std::string {
+      RegionOptions o;
+      o.resolution = Rational(1, 16);
+      std::string out = region_json_of(*part, seating_set(*part), o);
+      try {
+        const SustainedSet J = sustained_set(*part);
+        if (!J.empty) out += masked(region_json(*part, compute_region(*part, *sustained_target(J), o)));
+        with_j += !J.empty;
+      } catch (const Error& e) {
+        out += std::string("error: ") + e.what();
+      }
+      return out;
+    };
+    EXPECT_EQ(run(false, regions), run(true, regions));
+  }
+  EXPECT_EQ(parts, 3);
+  EXPECT_GT(with_j, 0);
+}
+
 // Every non-integer JSON number replaced by "#": the display values, which
 // are rounded in the caller's rounding mode (exact values are strings).
 std::string display_masked(const std::string& json) {
