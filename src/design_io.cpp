@@ -216,9 +216,11 @@ std::string design_text(const Scene& part, const DesignResult& r, const DesignOp
     if (l.conditioning < kNearlySingular && l.curved_contacts > 0)
       s << "   warning: nearly singular (conditioning below " << significant(kNearlySingular) << ") with "
         << l.curved_contacts << " of its contacts on curved pieces: the three normal lines nearly meet in one "
-        << "point, and the part's curvature there, which the linearised model omits, decides; 3 of the 4 such "
-           "layouts measured (fig6, blob32) seated no push in Box2D (docs/design.md): validate with `fixel region "
-           "LAYOUT --push sustained --validate 10`\n";
+        << "point, and the part's curvature there, which the linearised model omits, decides. Box2D at its "
+           "default settings failed pushes on 51 of the 188 such layouts measured, a finer engine on 6, all below "
+        << significant(kVeryNearlySingular) << (l.conditioning < kVeryNearlySingular ? " as this one is" : "")
+        << " (docs/design.md): validate with `fixel region LAYOUT --push sustained --validate 10 --steps-per-h "
+           "16000 --velocity-iterations 100 --position-iterations 50`\n";
     if (!l.step_seat.empty()) {
       // An exact refusal (polyline edges) proves there is no seat; a local
       // search's ("near the scene pose", curved pieces) does not.

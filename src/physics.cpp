@@ -284,7 +284,7 @@ void add_time_scale_warnings(PushResult& r, double h) {
 
 }  // namespace
 
-PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options) {
+void check_push_options(const PushOptions& options) {
   if (options.time <= 0) throw InputError("PushOptions.time", to_string(options.time), "must be > 0");
   if (options.steps_per_h < 1000)
     throw InputError("PushOptions.steps_per_h", std::to_string(options.steps_per_h), "must be >= 1000 (dt <= h/1000)");
@@ -292,6 +292,10 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
                                           std::pair{options.position_iterations, "PushOptions.position_iterations"}})
     if (iterations < 1 || iterations > kMaxSolverIterations)
       throw InputError(field, std::to_string(iterations), "must be 1 to " + std::to_string(kMaxSolverIterations));
+}
+
+PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options) {
+  check_push_options(options);
   if (options.impulse)
     for (const double p : *options.impulse) engine_float(p, "PushOptions.impulse");
   if (!std::isfinite(w.fx) || !std::isfinite(w.fy) || !std::isfinite(w.m)) {
@@ -331,6 +335,9 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   const double h = to_double(scene.time_step);
   const int nf = scene.num_contacts();
   r.dt = h / double(options.steps_per_h);
+  r.steps_per_h = options.steps_per_h;
+  r.velocity_iterations = options.velocity_iterations;
+  r.position_iterations = options.position_iterations;
   r.length_scale = e.s;
   r.part_size = poly.size;
   r.gap_tolerance = kGapFraction * poly.size;

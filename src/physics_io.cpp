@@ -60,6 +60,9 @@ std::string push_json(const Scene& scene, const Wrench& w, const PushResult& r) 
   doc["time"] = r.time_end;
   doc["steps"] = r.steps;
   doc["dt"] = r.dt;
+  doc["steps_per_h"] = r.steps_per_h;
+  doc["velocity_iterations"] = r.velocity_iterations;
+  doc["position_iterations"] = r.position_iterations;
   doc["length_scale"] = r.length_scale;
   doc["part_size"] = r.part_size;
   doc["gap_tolerance"] = r.gap_tolerance;
@@ -87,7 +90,8 @@ std::string push_text(const Scene& scene, const Wrench& w, const PushResult& r) 
   for (double g : r.final_gaps) out << " " << g;
   out << "  (seated below " << r.gap_tolerance << " m)\n";
   out << "contacts at the end: " << list(r.contacts_at_rest) << "\n";
-  out << "engine: dt " << r.dt << " s, " << r.steps << " steps, length scale " << r.length_scale
+  out << "engine: dt " << r.dt << " s (h/" << r.steps_per_h << "), " << r.velocity_iterations << " velocity and "
+      << r.position_iterations << " position iterations, " << r.steps << " steps, length scale " << r.length_scale
       << " units/m, part size " << r.part_size << " m; the push's time scale " << r.time_scale << " s\n";
   out << "a measurement in the engine (floats), not an exact decision: seated = every gap below " << r.gap_tolerance
       << " m while slower than " << r.rest_speed << " m/s for one h (docs/physics.md, \"Outcomes\")\n";
@@ -247,6 +251,8 @@ std::string add_validation_json(const std::string& region_json_text, const Regio
   total["model"] = v.model;
   total["time"] = to_string(v.options.time);
   total["steps_per_h"] = v.options.steps_per_h;
+  total["velocity_iterations"] = v.options.velocity_iterations;
+  total["position_iterations"] = v.options.position_iterations;
   total["engine"] = "Box2D 2.4";
   if (!v.first_warning.empty()) total["first_warning"] = v.first_warning;
   doc["validation"] = total;
@@ -261,7 +267,8 @@ std::string validation_text(const Region& region, const RegionValidation& v) {
           << internal::readable(region.intervals[i].u0) << ", " << internal::readable(region.intervals[i].u1)
           << "]: " << counts_text(*v.intervals[i]) << "\n";
   out << "validation (Box2D 2.4, " << v.model << ", T = " << to_string(v.options.time) << " h, seed " << v.seed
-      << "): " << counts_text(v.total) << "\n";
+      << "; dt = h/" << v.options.steps_per_h << ", " << v.options.velocity_iterations << "+"
+      << v.options.position_iterations << " solver iterations): " << counts_text(v.total) << "\n";
   if (v.total.warned > 0)
     out << "warning: " << v.total.warned << " of " << v.total.pushes << " pushes: " << v.first_warning << "\n";
   return out.str();

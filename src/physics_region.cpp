@@ -127,6 +127,7 @@ PushModel seated_push_model(const Scene& scene, double force) {
 RegionValidation validate_region(const Scene& scene, const Region& region, const PushModel& model, int pushes,
                                  std::uint64_t seed, const PushOptions& options) {
   if (pushes < 1) throw InputError("validate_region(pushes)", std::to_string(pushes), "must be >= 1");
+  check_push_options(options);  // also when no interval is IN, so no option goes unchecked
   RegionValidation out;
   out.seed = seed;
   out.options = options;

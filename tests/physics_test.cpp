@@ -219,6 +219,36 @@ GTEST_TEST(Physics, ANonFiniteOrHugeImpulseAndNonPositiveSolverIterationsAreInpu
   }
 }
 
+// validate_region checks the engine settings before its first push, so a
+// region with no IN interval (no push at all) refuses them too; every push
+// reports the settings it ran with.
+GTEST_TEST(Physics, ValidatingARegionWithoutAnInIntervalStillRefusesBadEngineSettings) {
+  const Scene s = square();
+  const Region none;  // no interval, so nothing to push
+  const PushModel model = [](const RegionInterval&, const Rational&) { return Wrench{-1, -1, 0}; };
+  PushOptions o = short_run();
+  EXPECT_EQ(validate_region(s, none, model, 1, 1, o).total.pushes, 0);
+  o.steps_per_h = 999;
+  try {
+    validate_region(s, none, model, 1, 1, o);
+    ADD_FAILURE() << "steps_per_h 999 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "PushOptions.steps_per_h");
+    EXPECT_EQ(e.value(), "999");
+  }
+  o = short_run();
+  o.position_iterations = 0;
+  EXPECT_THROW(validate_region(s, none, model, 1, 1, o), InputError);
+  o = short_run();
+  o.steps_per_h = 3000;
+  o.velocity_iterations = 7;
+  o.position_iterations = 9;
+  const PushResult r = push(s, Wrench{-1, -1, 0}, o);
+  EXPECT_EQ(r.steps_per_h, 3000);
+  EXPECT_EQ(r.velocity_iterations, 7);
+  EXPECT_EQ(r.position_iterations, 9);
+}
+
 // A Boundary assembled by hand, not by make_boundary, segfaulted in the
 // polygoniser; every analysis's value check now names it.
 GTEST_TEST(Physics, AHandAssembledBoundaryWithoutPiecesIsASceneError) {

@@ -67,6 +67,11 @@ struct PushOptions {
   RunControl* control = nullptr;
 };
 
+/// Checks `options`' ranges (time > 0, steps_per_h >= 1000, iterations 1 to
+/// kMaxSolverIterations); throws InputError naming the field. push() and
+/// validate_region() call it first.
+void check_push_options(const PushOptions& options);
+
 /// The most engine steps one push may take, time · steps_per_h (the
 /// default push takes 20,000): 1.2 to 8 minutes on the bundled parts.
 constexpr long kMaxPushSteps = 100000000;
@@ -99,10 +104,13 @@ struct PushResult {
   std::vector<int> contacts_at_rest;  ///< Fixels touching at the end (engine contacts).
   std::vector<int> open_fixels;       ///< Jammed: fixels whose gap is open.
   double dt = 0;                      ///< Engine step (s).
-  double length_scale = 0;            ///< Engine length units per metre of the scene.
-  double part_size = 0;               ///< Bounding-box diagonal of the part (m).
-  double gap_tolerance = 0;           ///< 1e-4 · part_size (m).
-  double rest_speed = 0;              ///< "At rest" speed bound (m/s), see docs/physics.md.
+  long steps_per_h = 0;               ///< dt = h / steps_per_h (PushOptions::steps_per_h).
+  int velocity_iterations = 0;        ///< Box2D's solver iterations per step, as run.
+  int position_iterations = 0;
+  double length_scale = 0;   ///< Engine length units per metre of the scene.
+  double part_size = 0;      ///< Bounding-box diagonal of the part (m).
+  double gap_tolerance = 0;  ///< 1e-4 · part_size (m).
+  double rest_speed = 0;     ///< "At rest" speed bound (m/s), see docs/physics.md.
   /// The push's own time scale (s): the least of √(m·size/|F|), √(I/|M|)
   /// and, for an impulse, size/|Δv|; 0 when nothing pushes.
   double time_scale = 0;

@@ -15,7 +15,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from . import _fixel
-from ._exact import exact, frac, fracs, text, vector, whole
+from ._exact import engine_settings, exact, frac, fracs, text, vector, whole
 from ._design import Candidate, Design, Layout, design, design_candidates, design_scene
 from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
 from ._worker import stoppable
@@ -98,6 +98,17 @@ class Scene:
         "(to_dict() has the interval).",
     )
 
+    @property
+    def background_impulse(self):
+        """b₀ (Fractions; N·s, N·s and, for dof 3, N·m·s; world frame, moment
+        about the centre of mass): the scene's background impulse. The CLI's
+        ``seat --impulse``, ``simulate`` and ``solutions`` apply b₀ + p;
+        ``S.contains``, ``S.eq27``, ``G.contains``, ``simulate`` and
+        ``solutions`` here take the total impulse, as the C++ library does,
+        so pass ``[b + q for b, q in zip(scene.background_impulse, p)]``.
+        ``region`` and ``push_plan`` add b₀ themselves, as the CLI does."""
+        return tuple(frac(v) for v in self.to_dict()["background_impulse"])
+
     def curve_range(self, k):
         """(u_begin, u_end) of curve k as Fractions."""
         return fracs(_fixel.curve_range(self._impl, whole(k, "k")))
@@ -178,7 +189,9 @@ class SeatingSet:
     scene = property(lambda self: self._scene, doc="The Scene this set was built from (read-only).")
 
     def contains(self, p):
-        """Exact membership (boundary points are members)."""
+        """Exact membership of the total impulse p (N·s, N·s, N·m·s; world
+        frame; b₀ included: Scene.background_impulse). Boundary points are
+        members."""
         return self._impl.contains(vector(p, "p"))
 
     def __contains__(self, p):
@@ -225,7 +238,8 @@ class GuaranteedSet:
     seating = property(lambda self: self._seating, doc="The SeatingSet G refines (read-only).")
 
     def contains(self, p):
-        """Exact membership: every one-step outcome at impulse p seats the part."""
+        """Exact membership: every one-step outcome at the total impulse p
+        (b₀ included: Scene.background_impulse) seats the part."""
         return self._impl.contains(vector(p, "p"))
 
     def __reduce__(self):
@@ -269,7 +283,8 @@ _SHORT_SIMULATION = 100
 
 def simulate(scene, impulse, steps=1, max_seconds=None):
     """Simulates ``steps`` steps, applying ``impulse`` in the first (or a list
-    of impulses, one per step). Returns SimpleNamespace(seated, steps) where
+    of impulses, one per step): total impulses (N·s, N·s, N·m·s; world
+    frame), b₀ not added (Scene.background_impulse). Returns SimpleNamespace(seated, steps) where
     each step has q, velocity, gaps, p_n, p_f (Fractions) and pivots.
     ``max_seconds`` and Ctrl-C stop it as in region (Ctrl-C only past 100
     steps: a shorter run is not worth a worker thread)."""
@@ -298,8 +313,8 @@ def _is_list_of_vectors(x):
 
 
 def solutions(scene, impulse, max_seconds=None):
-    """Every distinct outcome of one step at ``impulse`` (the CLI's
-    ``solutions``): SimpleNamespaces with seated, modes, velocity, gaps, p_n,
+    """Every distinct outcome of one step at the total ``impulse`` (the CLI's
+    ``solutions`` at b₀ + p; b₀ is not added here: Scene.background_impulse): SimpleNamespaces with seated, modes, velocity, gaps, p_n,
     p_t, isolated. ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
     keys = {"velocity", "gaps", "p_n", "p_t"}
@@ -386,14 +401,27 @@ class SustainedSet:
         return f"<fixel.SustainedSet J of scene {self.scene.name!r}: {state}>"
 
 
-def push(scene, wrench=None, at=None, time=20, max_seconds=None):
+def push(
+    scene,
+    wrench=None,
+    at=None,
+    time=20,
+    max_seconds=None,
+    steps_per_h=1000,
+    velocity_iterations=20,
+    position_iterations=10,
+):
     """Run a held push in Box2D (``fixel push``): a measurement, not a
     decision. ``wrench`` (exact, world frame: force through the centre of
     mass, moment about it) or ``at="K:U"`` (a frictionless unit push at
     parameter U of curve K, at the seated pose), held for ``time`` steps h
-    (at most 100,000: 10^8 engine steps). Returns the ``fixel push
-    --json`` document as a dict: "outcome" is "seated", "jammed", "escaped"
-    or "timeout". ``max_seconds`` and Ctrl-C stop it as in region."""
+    (at most 10^8 engine steps). The engine's accuracy: dt = h/``steps_per_h``
+    (at least 1000) and Box2D's ``velocity_iterations`` and
+    ``position_iterations`` per step (1 to 1000); a failure that goes away
+    with finer settings was the solver's (docs/physics.md, "Engine
+    settings"). Returns the ``fixel push --json`` document as a dict:
+    "outcome" is "seated", "jammed", "escaped" or "timeout". ``max_seconds``
+    and Ctrl-C stop it as in region."""
     scene = _scene(scene)
     if wrench is None and at is None:
         raise InputError.make("wrench", "None", "and at=None: give one of wrench= and at=")
@@ -403,7 +431,8 @@ def push(scene, wrench=None, at=None, time=20, max_seconds=None):
     if at is not None and not isinstance(at, str):
         raise TypeError(f"at: {at!r} is not a string 'K:U'")
     t = text(time, "time")
-    return json.loads(stoppable(lambda c: _fixel.push(scene._impl, w, at, t, c), max_seconds))
+    e = engine_settings(steps_per_h, velocity_iterations, position_iterations)
+    return json.loads(stoppable(lambda c: _fixel.push(scene._impl, w, at, t, *e, c), max_seconds))
 
 
 def push_plan(scene, at, guaranteed=False, max_seconds=None):
@@ -444,8 +473,10 @@ class ApproachSet:
     UnsupportedError), ``t_star`` (tan(θ*/2), exact text), ``theta_star``
     (rad, display), ``on_edges`` (False: a contact leaves its edge on the way
     and J' is empty; ``edge_reason`` says where), ``empty`` (True when J' is
-    known to be empty), and ``J``, the SustainedSet it refines. When not
-    ``decided``, ``t_star``, ``on_edges`` and ``empty`` are None (unknown)."""
+    known to be empty, else None: J' is decided per wrench, so it is never
+    known to be non-empty; the CLI's JSON has null), and ``J``, the
+    SustainedSet it refines. When not ``decided``, ``t_star`` and
+    ``on_edges`` are None (unknown) too."""
 
     scene = property(lambda self: self._J.scene, doc="The Scene J' was built from (read-only).")
     J = property(lambda self: self._J, doc="The SustainedSet J' refines (read-only).")
@@ -460,7 +491,7 @@ class ApproachSet:
         self.theta_star = impl.theta_star
         self.on_edges = impl.on_edges if impl.decided else None
         self.edge_reason = impl.edge_reason
-        self.empty = impl.empty if impl.decided else None
+        self.empty = True if impl.decided and impl.empty else None  # true or null, as the CLI's JSON
 
     def why_not(self, w, frame="world", max_seconds=None):
         """"" when w is in J', else the reason (as J's, or the pair that can

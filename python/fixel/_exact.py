@@ -183,6 +183,15 @@ def parse(x, field):
 INT_MIN, INT_MAX = -(2**31), 2**31 - 1
 
 
+def engine_settings(steps_per_h, velocity_iterations, position_iterations):
+    """The engine's accuracy as whole numbers (the core checks the ranges)."""
+    return (
+        whole(steps_per_h, "steps_per_h"),
+        whole(velocity_iterations, "velocity_iterations"),
+        whole(position_iterations, "position_iterations"),
+    )
+
+
 def whole(x, field):
     """``x`` (an int or a numpy integer, not a bool) as a Python int within
     the core's int range; TypeError for a non-integer, InputError naming

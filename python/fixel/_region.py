@@ -7,7 +7,7 @@ from fractions import Fraction
 from typing import Optional, Tuple
 
 from . import _fixel
-from ._exact import frac, parse, text, whole
+from ._exact import engine_settings, frac, parse, text, whole
 from ._worker import seconds_limit, stoppable
 from .errors import InputError
 
@@ -138,7 +138,9 @@ class Region:
             out[r.status] += r.u1 - r.u0
         return out
 
-    def validate(self, pushes, time=20, max_seconds=None):
+    def validate(
+        self, pushes, time=20, max_seconds=None, steps_per_h=1000, velocity_iterations=20, position_iterations=10
+    ):
         """The Box2D check of ``fixel region --json --validate N --time T``
         (docs/physics.md): ``pushes`` pushes at seeded pseudo-random points
         of every IN interval, each held for ``time`` time steps h, and the
@@ -147,7 +149,9 @@ class Region:
         the model). A measurement, not a decision: the region's statuses are
         unchanged. The one-step push uses each interval's certified
         magnitudes (so not an ``exact=True`` region), the sustained push the
-        unit wrench at the seat. ``max_seconds`` and Ctrl-C as in region."""
+        unit wrench at the seat. ``steps_per_h``, ``velocity_iterations`` and
+        ``position_iterations`` set the engine's accuracy as in
+        :func:`fixel.push`. ``max_seconds`` and Ctrl-C as in region."""
         from . import SeatingSet, SustainedSet
 
         pushes = whole(pushes, "pushes")
@@ -156,8 +160,9 @@ class Region:
         if not isinstance(self.seating, (SeatingSet, SustainedSet)):
             raise TypeError(f"region.seating: {type(self.seating).__name__} is neither a SeatingSet nor a SustainedSet")
         t = text(time, "time")
+        e = engine_settings(steps_per_h, velocity_iterations, position_iterations)
         doc = stoppable(
-            lambda c: _fixel.validate_region_json(self.scene._impl, self._impl, self.seating._impl, pushes, t, c),
+            lambda c: _fixel.validate_region_json(self.scene._impl, self._impl, self.seating._impl, pushes, t, *e, c),
             max_seconds,
         )
         return json.loads(doc)

@@ -139,11 +139,13 @@ void bind_region(py::module_& m) {
   // IN intervals pushed in Box2D (docs/physics.md), as the CLI does.
   // `seating`: the region's SeatingSet (one-step push) or SustainedSet (J).
   m.def("validate_region_json", [](const ScenePtr& scene, const RegionPtr& region, const py::object& seating,
-                                   int pushes, const std::string& time, Control* control) {
+                                   int pushes, const std::string& time, long steps_per_h, int velocity_iterations,
+                                   int position_iterations, Control* control) {
     const ControlScope scope(run_control(control));
     const Scene& s = checked(scene, "scene");
     const Region& r = checked(region, "region");
-    const physics::PushOptions options = push_options(time, control);
+    const physics::PushOptions options =
+        push_options(time, {steps_per_h, velocity_iterations, position_iterations}, control);
     if (pushes < 1) throw InputError("pushes", std::to_string(pushes), "must be >= 1");
     if (r.target == "J" || r.target == "J'") {  // J' refines J: the same held push is validated
       const SustainedSet& J = seating.cast<const SustainedSet&>();

@@ -88,10 +88,12 @@ void bind_sustained(py::module_& m) {
   });
   // The Box2D check: the `fixel push --json` document (a measurement).
   m.def("push", [](const ScenePtr& scene, const std::optional<std::vector<std::string>>& wrench,
-                   const std::optional<std::string>& at, const std::string& time, Control* control) {
+                   const std::optional<std::string>& at, const std::string& time, long steps_per_h,
+                   int velocity_iterations, int position_iterations, Control* control) {
     const ControlScope scope(run_control(control));  // exact steps inside poll it too
     const Scene& s = checked(scene, "scene");
-    const physics::PushOptions options = push_options(time, control);
+    const physics::PushOptions options =
+        push_options(time, {steps_per_h, velocity_iterations, position_iterations}, control);
     physics::Wrench w;
     if (at) {
       const auto point = physics::parse_curve_point(s, *at, "at");

@@ -60,10 +60,22 @@ inline RunControl* run_control(Control* control) { return control ? &control->ru
 /// `time` argument, exact text), polling `control`: InputError naming
 /// `time` when it is not > 0 or asks for more engine steps than the core
 /// runs (physics::kMaxPushSteps).
-inline physics::PushOptions push_options(const std::string& time, Control* control) {
+/// The engine's accuracy as Python passes it: dt = h/steps_per_h and Box2D's
+/// solver iterations (docs/physics.md, "Engine settings").
+struct EngineSettings {
+  long steps_per_h = physics::PushOptions{}.steps_per_h;
+  int velocity_iterations = physics::PushOptions{}.velocity_iterations;
+  int position_iterations = physics::PushOptions{}.position_iterations;
+};
+
+inline physics::PushOptions push_options(const std::string& time, const EngineSettings& engine, Control* control) {
   physics::PushOptions options;
   options.time = parse_rational(time, "time");
   if (options.time <= 0) throw InputError("time", time, "must be > 0");
+  options.steps_per_h = engine.steps_per_h;
+  options.velocity_iterations = engine.velocity_iterations;
+  options.position_iterations = engine.position_iterations;
+  physics::check_push_options(options);
   if (options.time * options.steps_per_h > physics::kMaxPushSteps)
     throw InputError("time", time,
                      "holds a push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fixel/physics.h"
 #include "fixel/progress.h"
 #include "fixel/rational.h"
 #include "fixel/scene.h"
@@ -89,6 +90,19 @@ void print_background_note(const Scene& scene, const VectorQ& total, bool json);
 // "010" is ten): CLI11 alone reads 010 as octal, 0x10 as hex and "" as 0.
 // Checks the text is [+-]digits and strips leading zeros; else an error.
 CLI::Validator decimal_integer();
+
+// The engine's accuracy for push and region --validate (docs/physics.md,
+// "Engine settings"): --steps-per-h, --velocity-iterations and
+// --position-iterations, each needing `needs` (if given) on the command
+// line. The library checks their ranges (PushOptions' fields, mapped to the
+// flags in main.cpp).
+struct EngineArgs {
+  long steps_per_h = physics::PushOptions{}.steps_per_h;
+  int velocity_iterations = physics::PushOptions{}.velocity_iterations;
+  int position_iterations = physics::PushOptions{}.position_iterations;
+};
+void add_engine_options(CLI::App* cmd, EngineArgs& engine, CLI::Option* needs = nullptr);
+void apply_engine_options(const EngineArgs& engine, physics::PushOptions& options);
 
 constexpr const char* kScenesHelp = "Scene file(s) (JSON, docs/formats.md); - reads standard input";
 

@@ -17,6 +17,7 @@ namespace {
 struct PushArgs {
   std::string scene_path, wrench_text, at_text, svg_path, time_text = "20";
   bool json = false;
+  EngineArgs engine;
   RunOptions run;
 };
 
@@ -28,6 +29,7 @@ int run_push(const PushArgs& a) {
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");
   push_options.control = run_control();
+  apply_engine_options(a.engine, push_options);
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
   if (a.wrench_text.empty() && a.at_text.empty()) throw InputError("--wrench", "missing", "or --at is required");
   physics::Wrench w;
@@ -59,6 +61,7 @@ Command add_push(CLI::App& app) {
   cmd->add_option("--at", a->at_text, "Frictionless unit push at parameter U of curve K, at the seated pose: K:U")
       ->excludes(wrench_opt);
   cmd->add_option("--time", a->time_text, "Hold the wrench for T time steps h (default 20)");
+  add_engine_options(cmd, a->engine);
   cmd->add_option("--svg", a->svg_path, "Draw the trajectory to this SVG file");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
   add_run_options(cmd, a->run);

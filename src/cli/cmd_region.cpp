@@ -27,6 +27,7 @@ struct RegionArgs {
   int validate = 0, digits = 0;
   bool json = false, guaranteed = false, exact = false, approach = false;
   bool resolution_given = false, cone_given = false;  // set when the option is on the command line
+  EngineArgs engine;
   RunOptions run;
 };
 
@@ -99,6 +100,7 @@ int run_region(const RegionArgs& a) {
   physics::PushOptions push_options;
   push_options.time = parse_rational(a.time_text, "--time");
   push_options.control = run_control();
+  apply_engine_options(a.engine, push_options);
   if (push_options.time <= 0) throw InputError("--time", a.time_text, "must be > 0");
   if (a.push_text == "sustained") return run_sustained_region(scene, a, push_options);
   if (a.approach) throw InputError("--approach", "", "needs --push sustained (J' refines the sustained-push set J)");
@@ -199,6 +201,7 @@ Command add_region(CLI::App& app) {
   // The contract's grammar nests these: [--validate N [--time T]], [--exact [--digits D]].
   cmd->add_option("--time", a->time_text, "With --validate: hold each push for T time steps h (default 20)")
       ->needs(validate);
+  add_engine_options(cmd, a->engine, validate);
   auto* exact =
       cmd->add_flag("--exact", a->exact,
                     "Exact ends by root isolation instead of subdivision: no partial stretch (docs/theory.md §12)");

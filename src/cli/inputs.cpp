@@ -39,6 +39,28 @@ CLI::Validator decimal_integer() {
       "INTEGER");
 }
 
+void add_engine_options(CLI::App* cmd, EngineArgs& engine, CLI::Option* needs) {
+  const std::string with = needs != nullptr ? "With --validate: " : "";
+  CLI::Option* added[] = {
+      cmd->add_option("--steps-per-h", engine.steps_per_h,
+                      with + "engine steps per time step h, at least 1000 (default 1000: dt = h/1000)")
+          ->transform(decimal_integer()),
+      cmd->add_option("--velocity-iterations", engine.velocity_iterations,
+                      with + "Box2D velocity iterations per step, 1 to 1000 (default 20)")
+          ->transform(decimal_integer()),
+      cmd->add_option("--position-iterations", engine.position_iterations,
+                      with + "Box2D position iterations per step, 1 to 1000 (default 10)")
+          ->transform(decimal_integer())};
+  if (needs != nullptr)
+    for (CLI::Option* o : added) o->needs(needs);
+}
+
+void apply_engine_options(const EngineArgs& engine, physics::PushOptions& options) {
+  options.steps_per_h = engine.steps_per_h;
+  options.velocity_iterations = engine.velocity_iterations;
+  options.position_iterations = engine.position_iterations;
+}
+
 // Loading polls the run's control block: a huge part shows a "load: ..."
 // progress line on a terminal and obeys --max-seconds and Ctrl-C.
 Scene read_scene(const std::string& path) {

@@ -460,6 +460,33 @@ def test_push_runs_the_engine_and_agrees_with_the_cli():
         fixel.push(fixel.Scene.load(path))
 
 
+def test_push_takes_the_engines_accuracy_as_the_cli_does():
+    path = SCENE_DIR / "polygon.json"
+    scene = fixel.Scene.load(path)
+    r = fixel.push(scene, at="0:1/2", time=2, steps_per_h=4000, velocity_iterations=30, position_iterations=15)
+    engine = ["--steps-per-h", "4000", "--velocity-iterations", "30", "--position-iterations", "15"]
+    code, out, err = run_cli("push", path, "--at", "0:1/2", "--time", "2", *engine, "--json")
+    assert code == 0, err
+    cli = json.loads(out)
+    assert (r["steps_per_h"], r["velocity_iterations"], r["position_iterations"]) == (4000, 30, 15)
+    assert r["outcome"] == cli["outcome"] and r["steps"] == cli["steps"] and r["final_pose"] == cli["final_pose"]
+    assert r["dt"] == cli["dt"] == 1 / 4000  # h = 1 s
+    for field, value, message in [
+        ("steps_per_h", 999, "must be >= 1000"),
+        ("velocity_iterations", 0, "must be 1 to 1000"),
+        ("position_iterations", 1001, "must be 1 to 1000"),
+    ]:
+        with pytest.raises(fixel.InputError, match=f"^{field}: {value} {message}") as e:
+            fixel.push(scene, at="0:1/2", **{field: value})
+        assert e.value.field == field and e.value.value == str(value)
+        region = fixel.region(scene, push="sustained", resolution="1/16")
+        with pytest.raises(fixel.InputError) as e:
+            region.validate(1, **{field: value})
+        assert e.value.field == field
+    with pytest.raises(TypeError):
+        fixel.push(scene, at="0:1/2", steps_per_h=1000.0)
+
+
 def test_exact_region_has_algebraic_ends_that_match_the_cli():
     path = SCENE_DIR / "polygon.json"
     r = fixel.region(fixel.Scene.load(path), push="sustained", exact=True, digits=8)

@@ -29,7 +29,7 @@ def test_approach_set_agrees_with_the_cli(polygon_approach):
     assert A.decided and cli["decided"]
     assert A.t_star == cli["t_star"] == "15-1*sqrt(226)"
     assert A.on_edges == cli["on_edges"]
-    assert (True if A.empty else None) == cli["empty"]
+    assert A.empty == cli["empty"] and A.empty in (True, None)
 
 
 @pytest.mark.parametrize("w", [["-1/2", "-9/10", "-3/5"], ["-1", "-3", "0"], ["-1", "-1", "0"], ["1", "0", "0"]])

@@ -188,14 +188,19 @@ def _without_seconds(doc):
         ("step", False, ["--validate", "2", "--time", "10"]),
         ("sustained", False, ["--push", "sustained", "--validate", "3"]),
         ("sustained", True, ["--push", "sustained", "--approach", "--validate", "2"]),
+        ("sustained", False, ["--push", "sustained", "--validate", "2", "--steps-per-h", "2000"]),
     ],
-    ids=["step", "sustained", "approach"],
+    ids=["step", "sustained", "approach", "finer-engine"],
 )
 def test_region_validate_agrees(push, approach, args):
     # The same engine runs on the same seeded points: the same counts, push for push.
     scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
     r = fixel.region(scene, push=push, approach=approach)
-    mine = r.validate(int(args[args.index("--validate") + 1]), time=10 if push == "step" else 20)
+    steps_per_h = int(args[args.index("--steps-per-h") + 1]) if "--steps-per-h" in args else 1000
+    mine = r.validate(
+        int(args[args.index("--validate") + 1]), time=10 if push == "step" else 20, steps_per_h=steps_per_h
+    )
+    assert mine["validation"]["steps_per_h"] == steps_per_h
     cli = cli_json("region", SCENE_DIR / "polygon.json", *args, "--quiet")
     assert _without_seconds(mine) == _without_seconds(cli)
     assert mine["validation"]["pushes"] > 0
@@ -217,3 +222,15 @@ def test_region_validate_refuses_what_the_cli_refuses():
     assert code == 2 and "needs the certified magnitudes of subdivision" in err
     with pytest.raises(fixel.StoppedError, match="^validate: time limit reached after"):
         r.validate(1000, max_seconds=1e-9)
+
+
+@pytest.mark.parametrize("p", [(0, 0, 0), (-1, 0, 0), (F(-1, 2), F(1, 3), -2)])
+def test_the_total_impulse_b0_plus_p_gives_the_clis_seat_verdict(p):
+    # The CLI adds the scene's b0 to --impulse; the library's S.contains takes the total.
+    scene = fixel.Scene.load(SCENE_DIR / "nonunique_part.json")
+    b0 = scene.background_impulse
+    assert b0 != (0, 0, 0) and all(isinstance(b, F) for b in b0)
+    cli = cli_json("seat", SCENE_DIR / "nonunique_part.json", "--impulse", ",".join(str(v) for v in p))
+    total = [b + q for b, q in zip(b0, p)]
+    assert [F(v) for v in cli["impulse"]] == total
+    assert fixel.seating_set(scene).contains(total) == cli["contains"]

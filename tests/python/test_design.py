@@ -149,7 +149,7 @@ def test_conditioning_is_the_smallest_singular_value_numpy_finds_for_the_layouts
                 rows.append([nx, ny, ((px - cx) * ny - (py - cy) * nx) / rho])
             expected = np.linalg.svd(np.array(rows).T, compute_uv=False).min()
             assert layout.conditioning == pytest.approx(expected, rel=1e-6, abs=1e-12), (name, layout.rank)
-            assert layout.nearly_singular == (expected < 0.005)
+            assert layout.nearly_singular == (expected < 0.03)
             # fig6's outline is one cubic B-spline, the polygon's a polyline.
             assert layout.curved_contacts == (3 if name == "fig6" else 0), (name, layout.rank)
     # fig6's two best layouts are the nearly singular ones (their normal lines nearly meet).
