@@ -222,13 +222,18 @@ std::string to_string(Outcome outcome) {
 Wrench to_wrench(const VectorQ& w, int dof, const std::string& field) {
   if (w.size() != dof)
     throw InputError(field, std::to_string(w.size()) + " components", "but the scene has dof " + std::to_string(dof));
-  // Checked as given: past double range it would show only as inf.
-  for (Eigen::Index k = 0; k < w.size(); ++k)
-    if (!std::isfinite(to_double(w[k]))) {
+  // Checked as given: past double range it would show only as inf, and a
+  // non-zero value below float range as 0 (then "the wrench is zero").
+  for (Eigen::Index k = 0; k < w.size(); ++k) {
+    const double x = to_double(w[k]);
+    const bool huge = !std::isfinite(x), tiny = w[k] != 0 && !(std::abs(x) >= 1e-30);
+    if (huge || tiny) {
       const std::string text = to_string(w[k]);
       throw InputError(field + "[" + std::to_string(k) + "]", text.size() > 40 ? text.substr(0, 40) + "..." : text,
-                       "is beyond double range: the engine takes floats (|x| < 1e30)");
+                       huge ? "is beyond double range: the engine takes floats (|x| < 1e30)"
+                            : "is not zero but below the engine's float range (|x| >= 1e-30, or 0)");
     }
+  }
   return {to_double(w[0]), to_double(w[1]), dof == 3 ? to_double(w[2]) : 0.0};
 }
 

@@ -100,6 +100,7 @@ expect 0 '"wrench": [' -- "$fixel" push "$tmp/square0.json" --at 0:3/4 --time 2 
 expect 2 '--time: 0 must be > 0' -- "$fixel" push "$tmp/square.json" --wrench -1,-1,0 --time 0
 # A wrench past double range is named as given (it once showed as inf); a zero wrench at rest warns.
 expect 2 '--wrench[0]: 1000000000000000000000000000000000000000... is beyond double range' -- "$fixel" push "$tmp/square.json" --wrench 1e10000,0,0
+expect 2 '--wrench[1]: 1/10000000000000000000000000000000000000... is not zero but below the engine'"'"'s float range' -- "$fixel" push "$tmp/square.json" --wrench 1,1e-400,0
 expect 0 'the wrench is zero and the part at rest' -- "$fixel" push "$tmp/square.json" --wrench 0,0,0 --time 1
 expect 2 '--time: -1 must be > 0' -- "$fixel" push "$tmp/square.json" --wrench -1,-1,0 --time -1
 expect 2 '--wrench[1]: "x" is not an exact number' -- "$fixel" push "$tmp/square.json" --wrench 1,x,0

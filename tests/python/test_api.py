@@ -485,6 +485,10 @@ def test_push_takes_the_engines_accuracy_as_the_cli_does():
         assert e.value.field == field
     with pytest.raises(TypeError):
         fixel.push(scene, at="0:1/2", steps_per_h=1000.0)
+    # A non-zero component below the engine's floats is refused, not pushed as a zero wrench.
+    with pytest.raises(fixel.InputError, match="below the engine's float range") as e:
+        fixel.push(scene, wrench=["1e-400", 0, 0])
+    assert e.value.field == "wrench[0]"
 
 
 def test_exact_region_has_algebraic_ends_that_match_the_cli():
