@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -89,6 +90,10 @@ int main(int argc, char** argv) {
     if (a == "--dump") dump = argv[i + 1];
     if (a == "--recheck") recheck = std::atoi(argv[i + 1]);
   }
+  if (!dump.empty() && !std::filesystem::is_directory(dump)) {
+    std::cerr << "--dump: " << dump << " is not a folder\n";  // else every layout would fail to save
+    return 2;
+  }
   fp::PushOptions options;
   options.time = fixel::parse_rational(time);
   options.trajectory_samples = 1;
@@ -99,7 +104,7 @@ int main(int argc, char** argv) {
 
   // Bands of conditioning: below the warning level, up to four times it,
   // above.
-  std::vector<double> edges = {0.005, 0.01, 0.02, fixel::kNearlySingular, 0.1};
+  std::vector<double> edges = {fixel::kVeryNearlySingular, 0.005, 0.01, 0.02, fixel::kNearlySingular, 0.1};
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   const std::size_t bands = edges.size() + 1;

@@ -297,6 +297,17 @@ void check_push_options(const PushOptions& options) {
                                           std::pair{options.position_iterations, "PushOptions.position_iterations"}})
     if (iterations < 1 || iterations > kMaxSolverIterations)
       throw InputError(field, std::to_string(iterations), "must be 1 to " + std::to_string(kMaxSolverIterations));
+  // Also keeps the step count a long. Named by the steps per h when those
+  // were changed from the default (they made the count too large), else by T.
+  const Rational total_q = options.time * options.steps_per_h;
+  if (total_q > kMaxPushSteps) {
+    const std::string why = "holds the push for " + to_string(total_q) + " engine steps (time · " +
+                            std::to_string(options.steps_per_h) + " per h); at most " + std::to_string(kMaxPushSteps);
+    if (options.steps_per_h != PushOptions{}.steps_per_h)
+      throw InputError("PushOptions.steps_per_h", std::to_string(options.steps_per_h),
+                       "with time " + to_string(options.time) + " " + why);
+    throw InputError("PushOptions.time", to_string(options.time), why);
+  }
 }
 
 PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options) {
@@ -355,11 +366,7 @@ PushResult push(const Scene& scene, const Wrench& w, const PushOptions& options)
   for (Eigen::Index k = 0; k < scene.body.velocity.size(); ++k) moving = moving || scene.body.velocity[k] != 0;
   if (w.fx == 0 && w.fy == 0 && w.m == 0 && !options.impulse && !moving)
     r.warnings.push_back("the wrench is zero and the part at rest: nothing moves it (the outcome is a timeout)");
-  const Rational total_q = options.time * options.steps_per_h;
-  if (total_q > kMaxPushSteps)  // also keeps the step count a long
-    throw InputError("PushOptions.time", to_string(options.time),
-                     "holds the push for " + to_string(total_q) + " engine steps (time · " +
-                         std::to_string(options.steps_per_h) + " per h); at most " + std::to_string(kMaxPushSteps));
+  const Rational total_q = options.time * options.steps_per_h;  // at most kMaxPushSteps: check_push_options
   const long total = static_cast<long>(std::ceil(to_double(total_q)));
   const long sample_every = std::max<long>(1, total / std::max(1, options.trajectory_samples));
 

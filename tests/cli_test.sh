@@ -133,10 +133,16 @@ expect 0 'dt = h/2000, 40+15 solver iterations)' -- "$fixel" region "$src/data/s
 expect 0 '"velocity_iterations": 40' -- "$fixel" region "$src/data/scenes/polygon.json" --push sustained --validate 1 --time 5 --velocity-iterations 40 --json
 expect 0 '(h/4000), 20 velocity and 30 position iterations' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --time 2 --steps-per-h 4000 --position-iterations 30
 expect 0 '"steps_per_h": 4000' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --time 2 --steps-per-h 4000 --json
-expect 2 '--steps-per-h: 500 must be >= 1000 (dt <= h/1000)' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --steps-per-h 500
+expect 2 '--steps-per-h: 500 must be 1000 to 2147483647 (dt <= h/1000)' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --steps-per-h 500
+expect 2 '--steps-per-h: 99999999999999999999 must be 1000 to 2147483647' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --steps-per-h 99999999999999999999
+expect 2 '--velocity-iterations: 3000000000 must be 1 to 1000' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --velocity-iterations 3000000000
 expect 2 '--velocity-iterations: 0 must be 1 to 1000' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --velocity-iterations 0
 expect 2 '--position-iterations: 1001 must be 1 to 1000' -- "$fixel" region "$src/data/scenes/polygon.json" --validate 1 --position-iterations 1001
 expect 2 '--steps-per-h requires --validate' -- "$fixel" region "$src/data/scenes/polygon.json" --steps-per-h 2000
+# The step limit (time x steps per h at most 10^8) names the steps per h that broke it, also for a region with no IN
+# interval to push (example2_rounded's J region has none).
+expect 2 '--steps-per-h: 99999999 with time 20 holds the push for 1999999980 engine steps' -- "$fixel" region "$src/data/scenes/example2_rounded.json" --push sustained --validate 1 --steps-per-h 99999999
+expect 2 '--steps-per-h: 99999999 with time 20 holds the push for' -- "$fixel" push "$src/data/scenes/polygon.json" --at 0:1/2 --steps-per-h 99999999
 for cmd in seat dump verify simulate solutions region sample push; do expect 0 'Usage' -- "$fixel" "$cmd" --help; done
 
 expect 2 '--impulse: "1,2" has 2 components but the scene has dof 3' -- "$fixel" seat "$src/data/scenes/example2.json" --impulse 1,2

@@ -222,7 +222,7 @@ GTEST_TEST(Physics, ANonFiniteOrHugeImpulseAndNonPositiveSolverIterationsAreInpu
 // validate_region checks the engine settings before its first push, so a
 // region with no IN interval (no push at all) refuses them too; every push
 // reports the settings it ran with.
-GTEST_TEST(Physics, ValidatingARegionWithoutAnInIntervalStillRefusesBadEngineSettings) {
+GTEST_TEST(Physics, ValidatingARegionWithoutAnInIntervalStillRefusesBadEngineSettingsAndTheStepLimit) {
   const Scene s = square();
   const Region none;  // no interval, so nothing to push
   const PushModel model = [](const RegionInterval&, const Rational&) { return Wrench{-1, -1, 0}; };
@@ -239,6 +239,24 @@ GTEST_TEST(Physics, ValidatingARegionWithoutAnInIntervalStillRefusesBadEngineSet
   o = short_run();
   o.position_iterations = 0;
   EXPECT_THROW(validate_region(s, none, model, 1, 1, o), InputError);
+  // The step limit too: T·steps_per_h ≤ kMaxPushSteps, named by the steps per h that broke it.
+  o = short_run();
+  o.steps_per_h = kMaxPushSteps / 2;
+  o.time = 3;
+  try {
+    validate_region(s, none, model, 1, 1, o);
+    ADD_FAILURE() << "3 h at 5e7 steps per h was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "PushOptions.steps_per_h");
+  }
+  o.steps_per_h = PushOptions{}.steps_per_h;
+  o.time = Rational(kMaxPushSteps / PushOptions{}.steps_per_h + 1);
+  try {
+    validate_region(s, none, model, 1, 1, o);
+    ADD_FAILURE() << "a time past the step limit was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "PushOptions.time");
+  }
   o = short_run();
   o.steps_per_h = 3000;
   o.velocity_iterations = 7;

@@ -75,9 +75,10 @@ struct DesignOptions {
 /// piece. Measured on seeded random parts with rounded corners and the
 /// bundled parts (docs/design.md, "Reading a design"): Box2D at its default
 /// settings failed pushes on 51 of 188 such layouts and on none of 316
-/// above the level; a finer engine (dt = h/16000, 100 + 50 iterations)
-/// seated every push of all but 6, each below kVeryNearlySingular. On
-/// straight edges every layout seated every push.
+/// above the level (208 of them on parts the level was not chosen from); a
+/// finer engine (dt = h/16000, 100 + 50 iterations) seated every push of
+/// all but 6, each below kVeryNearlySingular. On straight edges every
+/// layout seated every push.
 constexpr double kNearlySingular = 0.03;
 /// Below this conditioning, with a contact on a curved piece, 6 of the 15
 /// layouts measured failed pushes on the finer engine too.
@@ -107,8 +108,10 @@ struct DesignLayout {
   /// The smallest singular value of W_n (the three normal wrenches, moment
   /// divided by the radius of gyration): near 0 when the normal lines nearly
   /// meet in one point (display only; NaN if unknown). Below
-  /// kNearlySingular the model's J can be wide while the engine does not
-  /// seat the part (docs/design.md, "Reading a design").
+  /// kNearlySingular, with a contact on a curved piece, Box2D at its default
+  /// settings often fails pushes a finer engine seats, and below
+  /// kVeryNearlySingular some fail there too (docs/design.md, "Reading a
+  /// design").
   double conditioning = std::numeric_limits<double>::quiet_NaN();
   /// How many of the three contacts lie on a curved piece of the outline
   /// (degree above 1); −1 if unknown. A nearly singular layout is warned of

@@ -75,11 +75,7 @@ inline physics::PushOptions push_options(const std::string& time, const EngineSe
   options.steps_per_h = engine.steps_per_h;
   options.velocity_iterations = engine.velocity_iterations;
   options.position_iterations = engine.position_iterations;
-  physics::check_push_options(options);
-  if (options.time * options.steps_per_h > physics::kMaxPushSteps)
-    throw InputError("time", time,
-                     "holds a push for more than " + std::to_string(physics::kMaxPushSteps) + " engine steps (" +
-                         std::to_string(options.steps_per_h) + " per h)");
+  physics::check_push_options(options);  // ranges and the step limit, named as Python's arguments
   options.control = run_control(control);
   return options;
 }

@@ -39,18 +39,42 @@ CLI::Validator decimal_integer() {
       "INTEGER");
 }
 
+namespace {
+
+// After decimal_integer: the same range message as the library's, before
+// CLI11 converts the text (it clamps a long past its range, and names an
+// int past its range only as "Could not convert").
+CLI::Validator whole_in(long long lo, long long hi, const std::string& rule) {
+  return CLI::Validator(
+      [lo, hi, rule](std::string& text) {
+        long long x = 0;
+        try {
+          x = std::stoll(text);
+        } catch (const std::exception&) {
+          return text + " " + rule;  // past long long: out of range too
+        }
+        return x >= lo && x <= hi ? std::string() : text + " " + rule;
+      },
+      rule);
+}
+
+}  // namespace
+
 void add_engine_options(CLI::App* cmd, EngineArgs& engine, CLI::Option* needs) {
   const std::string with = needs != nullptr ? "With --validate: " : "";
-  CLI::Option* added[] = {
-      cmd->add_option("--steps-per-h", engine.steps_per_h,
-                      with + "engine steps per time step h, at least 1000 (default 1000: dt = h/1000)")
-          ->transform(decimal_integer()),
-      cmd->add_option("--velocity-iterations", engine.velocity_iterations,
-                      with + "Box2D velocity iterations per step, 1 to 1000 (default 20)")
-          ->transform(decimal_integer()),
-      cmd->add_option("--position-iterations", engine.position_iterations,
-                      with + "Box2D position iterations per step, 1 to 1000 (default 10)")
-          ->transform(decimal_integer())};
+  const std::string steps = needs != nullptr ? "engine steps" : "Engine steps";
+  CLI::Option* added[] = {cmd->add_option("--steps-per-h", engine.steps_per_h,
+                                          with + steps + " per time step h, at least 1000 (default 1000: dt = h/1000)")
+                              ->transform(decimal_integer())
+                              ->check(whole_in(1000, 2147483647, "must be 1000 to 2147483647 (dt <= h/1000)")),
+                          cmd->add_option("--velocity-iterations", engine.velocity_iterations,
+                                          with + "Box2D velocity iterations per step, 1 to 1000 (default 20)")
+                              ->transform(decimal_integer())
+                              ->check(whole_in(1, physics::kMaxSolverIterations, "must be 1 to 1000")),
+                          cmd->add_option("--position-iterations", engine.position_iterations,
+                                          with + "Box2D position iterations per step, 1 to 1000 (default 10)")
+                              ->transform(decimal_integer())
+                              ->check(whole_in(1, physics::kMaxSolverIterations, "must be 1 to 1000"))};
   if (needs != nullptr)
     for (CLI::Option* o : added) o->needs(needs);
 }

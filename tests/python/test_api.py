@@ -485,6 +485,10 @@ def test_push_takes_the_engines_accuracy_as_the_cli_does():
         assert e.value.field == field
     with pytest.raises(TypeError):
         fixel.push(scene, at="0:1/2", steps_per_h=1000.0)
+    # The step limit names the steps per h that broke it, as the CLI does.
+    with pytest.raises(fixel.InputError, match="^steps_per_h: 99999999 with time 20 holds the push for") as e:
+        fixel.push(scene, at="0:1/2", steps_per_h=99999999)
+    assert e.value.field == "steps_per_h"
     # A non-zero component below the engine's floats is refused, not pushed as a zero wrench.
     with pytest.raises(fixel.InputError, match="below the engine's float range") as e:
         fixel.push(scene, wrench=["1e-400", 0, 0])
