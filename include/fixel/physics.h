@@ -68,8 +68,10 @@ struct PushOptions {
 };
 
 /// Checks `options`' ranges (time > 0, steps_per_h >= 1000, iterations 1 to
-/// kMaxSolverIterations); throws InputError naming the field. push() and
-/// validate_region() call it first.
+/// kMaxSolverIterations) and the step limit time · steps_per_h <=
+/// kMaxPushSteps (named by steps_per_h when it is not the default, else by
+/// time); throws InputError naming the field. push() and validate_region()
+/// call it first.
 void check_push_options(const PushOptions& options);
 
 /// The most engine steps one push may take, time · steps_per_h (the

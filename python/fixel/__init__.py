@@ -284,8 +284,9 @@ _SHORT_SIMULATION = 100
 def simulate(scene, impulse, steps=1, max_seconds=None):
     """Simulates ``steps`` steps, applying ``impulse`` in the first (or a list
     of impulses, one per step): total impulses (N·s, N·s, N·m·s; world
-    frame), b₀ not added (Scene.background_impulse). Returns SimpleNamespace(seated, steps) where
-    each step has q, velocity, gaps, p_n, p_f (Fractions) and pivots.
+    frame), b₀ not added (Scene.background_impulse). Returns
+    SimpleNamespace(seated, steps) where each step has q (x m, y m, θ rad),
+    velocity, gaps, p_n, p_f (Fractions) and pivots.
     ``max_seconds`` and Ctrl-C stop it as in region (Ctrl-C only past 100
     steps: a shorter run is not worth a worker thread)."""
     scene = _scene(scene)
@@ -313,9 +314,10 @@ def _is_list_of_vectors(x):
 
 
 def solutions(scene, impulse, max_seconds=None):
-    """Every distinct outcome of one step at the total ``impulse`` (the CLI's
-    ``solutions`` at b₀ + p; b₀ is not added here: Scene.background_impulse): SimpleNamespaces with seated, modes, velocity, gaps, p_n,
-    p_t, isolated. ``max_seconds`` and Ctrl-C stop it as in region."""
+    """Every distinct outcome of one step at the total ``impulse`` (the
+    CLI's ``solutions`` at b₀ + p; b₀ is not added here:
+    Scene.background_impulse): SimpleNamespaces with seated, modes,
+    velocity, gaps, p_n, p_t, isolated. ``max_seconds`` and Ctrl-C stop it as in region."""
     scene = _scene(scene)
     keys = {"velocity", "gaps", "p_n", "p_t"}
     p = vector(impulse, "impulse")
@@ -416,7 +418,7 @@ def push(
     mass, moment about it) or ``at="K:U"`` (a frictionless unit push at
     parameter U of curve K, at the seated pose), held for ``time`` steps h
     (at most 10^8 engine steps). The engine's accuracy: dt = h/``steps_per_h``
-    (at least 1000) and Box2D's ``velocity_iterations`` and
+    (1000 to 2^31 − 1) and Box2D's ``velocity_iterations`` and
     ``position_iterations`` per step (1 to 1000); a failure that goes away
     with finer settings was the solver's (docs/physics.md, "Engine
     settings"). Returns the ``fixel push --json`` document as a dict:

@@ -56,10 +56,6 @@ struct Control {
 /// &control->run, or nullptr for None.
 inline RunControl* run_control(Control* control) { return control ? &control->run : nullptr; }
 
-/// The engine's options for a push held `time` time steps h (Python's
-/// `time` argument, exact text), polling `control`: InputError naming
-/// `time` when it is not > 0 or asks for more engine steps than the core
-/// runs (physics::kMaxPushSteps).
 /// The engine's accuracy as Python passes it: dt = h/steps_per_h and Box2D's
 /// solver iterations (docs/physics.md, "Engine settings").
 struct EngineSettings {
@@ -68,6 +64,11 @@ struct EngineSettings {
   int position_iterations = physics::PushOptions{}.position_iterations;
 };
 
+/// The engine's options for a push held `time` time steps h (Python's
+/// `time` argument, exact text), polling `control`: InputError naming
+/// `time` when it is not > 0 or asks for more engine steps than the core
+/// runs (physics::kMaxPushSteps), and the engine settings by their argument
+/// names when out of range (physics::check_push_options).
 inline physics::PushOptions push_options(const std::string& time, const EngineSettings& engine, Control* control) {
   physics::PushOptions options;
   options.time = parse_rational(time, "time");

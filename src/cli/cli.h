@@ -94,8 +94,9 @@ CLI::Validator decimal_integer();
 // The engine's accuracy for push and region --validate (docs/physics.md,
 // "Engine settings"): --steps-per-h, --velocity-iterations and
 // --position-iterations, each needing `needs` (if given) on the command
-// line. The library checks their ranges (PushOptions' fields, mapped to the
-// flags in main.cpp).
+// line. Their ranges are checked as they are parsed (CLI11 would clamp a
+// long), and again by the library with the step limit (PushOptions'
+// fields, mapped to the flags in main.cpp).
 struct EngineArgs {
   long steps_per_h = physics::PushOptions{}.steps_per_h;
   int velocity_iterations = physics::PushOptions{}.velocity_iterations;
