@@ -67,7 +67,11 @@ class Scene:
             raise TypeError(f"{source}: a scene is a dict in the scene-file format, not {type(d).__name__}")
         # Serialised and parsed by the C++ parser, so validation and messages
         # are exactly those of the CLI.
-        text = json.dumps(_jsonable(d, ""))
+        try:
+            text = json.dumps(_jsonable(d, ""))
+        except RecursionError:
+            # The scene loader refuses nesting deeper than 64 levels anyway.
+            raise InputError.make(source, "a dict", "is nested too deeply to be a scene") from None
         return cls(stoppable(lambda c: _fixel.parse_scene(text, source, c), max_seconds))
 
     def to_dict(self):
@@ -164,11 +168,15 @@ def _same_scene(owner_scene, scene, field):
 
 
 def _scene(scene):
+    """A Scene from a Scene, a scene dict or a scene file's path (str or
+    os.PathLike), as every function that takes a scene accepts."""
     if isinstance(scene, Scene):
         return scene
     if isinstance(scene, dict):
         return Scene.from_dict(scene)
-    raise TypeError(f"scene: expected a fixel.Scene or a scene dict, not {type(scene).__name__}")
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.load(scene)
+    raise TypeError(f"scene: expected a fixel.Scene, a scene dict or a path, not {type(scene).__name__}")
 
 
 class SeatingSet:
@@ -226,14 +234,34 @@ def seating_set(scene):
     return SeatingSet(scene, _fixel.seating_set(scene._impl))
 
 
+def _rows(rows):
+    return [(fracs(a), frac(c)) for a, c in rows]
+
+
 class GuaranteedSet:
-    """G ⊂ S: the impulses whose every one-step outcome seats the part."""
+    """G ⊂ S: the impulses whose every one-step outcome seats the part.
+
+    ``pieces``: G as disjoint convex pieces (the JSON's "pieces"), each a
+    SimpleNamespace(dimension, closed, strict): the total impulses p (b₀
+    included) with a·p ≥ c for every (a, c) in ``closed`` and a·p > c for
+    every (a, c) in ``strict`` (Fractions). A piece of dimension below dof
+    has no volume but is kept, so that the pieces partition G exactly.
+    ``non_seating``: (modes, open_fixel) of each non-seating set that meets
+    S, and ``non_seating_impulses`` its impulses in the same order, as
+    SimpleNamespace(closed, strict)."""
 
     def __init__(self, seating, impl):
         self._seating = seating
         self._impl = impl
         self.num_pieces = impl.num_pieces
         self.non_seating = [(tuple(modes), fixel) for modes, fixel in impl.non_seating]
+        self.pieces = [
+            SimpleNamespace(dimension=dim, closed=_rows(closed), strict=_rows(strict))
+            for dim, closed, strict in impl.pieces
+        ]
+        self.non_seating_impulses = [
+            SimpleNamespace(closed=_rows(closed), strict=_rows(strict)) for closed, strict in impl.non_seating_rows
+        ]
 
     seating = property(lambda self: self._seating, doc="The SeatingSet G refines (read-only).")
 
@@ -589,3 +617,9 @@ def filter_stats(reset=False):
     if reset:
         _fixel.reset_filter_stats()
     return stats
+
+
+def __dir__():
+    # dir(fixel) lists the public API, not the helpers the module imports
+    # (np, os, json, ...); they stay reachable for fixel's own submodules.
+    return sorted(set(__all__) | {"__version__"} | ({"plot"} & globals().keys()))

@@ -410,6 +410,13 @@ def _check_resumed(output, rec, number, first, count):
         )
 
 
+# Tests only: (batch number, marker path) makes that batch of the cluster
+# path fail once, as a worker that dies mid-batch would (_run_batch). A
+# module variable rather than an argument, so design()'s signature shows
+# only what a user may pass.
+_FAIL_ONCE = None
+
+
 def design(
     part,
     candidates="boundary",
@@ -430,7 +437,6 @@ def design(
     timeout=10,
     exhaustive=False,
     max_seconds=None,
-    _fail_once=None,
 ):
     """The best `top` layouts of three fixels for `part` (a Scene, a scene
     dict or a path; its fixels are ignored except for the default mu).
@@ -454,7 +460,8 @@ def design(
     batches. An address is connected to within `timeout` seconds, and that
     Client is closed when the call returns or raises. The cluster path
     takes no `max_seconds`, and Ctrl-C does not stop this process's bound
-    computation (it takes effect when that returns). Returns a `Design`.
+    computation (it takes effect when that returns). There `stats["jobs"]`
+    is the cluster's worker count (docs/formats.md). Returns a `Design`.
 
     On the thread pool, `progress=True` shows a tqdm bar per stage (pair
     bounds, triple bounds, layouts), or a callable(task, done, total, unit)
@@ -473,10 +480,10 @@ def design(
         raise InputError.make("max_seconds", repr(max_seconds), "applies to the thread pool, not to a cluster")
     batch_size, wave, output, retries, timeout = _cluster_arguments(client, batch_size, wave, output, retries, timeout)
     if not isinstance(client, str):
-        return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _fail_once)
+        return _design_dask(scene, cands, options, client, batch_size, wave, output, progress, retries, _FAIL_ONCE)
     own = _connect(client, timeout)  # opened here, so closed here, also on an error
     try:
-        return _design_dask(scene, cands, options, own, batch_size, wave, output, progress, retries, _fail_once)
+        return _design_dask(scene, cands, options, own, batch_size, wave, output, progress, retries, _FAIL_ONCE)
     finally:
         own.close()
 

@@ -110,6 +110,14 @@ class Region:
     guaranteed: object = field(default=None, repr=False)  # the GuaranteedSet classified against, if any
     corners: list = field(default_factory=list)  # (curve, u, status): corners whose status an interval ending there lacks
 
+    def __reduce__(self):
+        # Unpickling by recomputation, as S, G and J do, would redo the whole
+        # region in the receiving process (a pool's parent, say): refused.
+        raise TypeError(
+            "a fixel.Region does not pickle (its exact data lives in the C++ core): return region.to_json() "
+            "from a worker process, or pass the scene and arguments and call fixel.region there"
+        )
+
     def __repr__(self):
         # Short: a sampled region can hold tens of thousands of intervals.
         c = self.counts()

@@ -106,6 +106,24 @@ void bind_sets(py::module_& m) {
                                  out.append(py::make_tuple(mode_names(n.modes), n.open_fixel));
                                return out;
                              })
+      // (dimension, closed rows, strict rows) per piece, and (closed, strict)
+      // per non-seating set: the JSON's "pieces" and "non_seating" rows.
+      .def_property_readonly("pieces",
+                             [](const GuaranteedHandle& g) {
+                               py::list out;
+                               for (std::size_t i = 0; i < g.G.pieces.size(); ++i)
+                                 out.append(py::make_tuple(g.G.dimensions.at(i), halfspaces(g.G.pieces[i].closed),
+                                                           halfspaces(g.G.pieces[i].strict)));
+                               return out;
+                             })
+      .def_property_readonly(
+          "non_seating_rows",
+          [](const GuaranteedHandle& g) {
+            py::list out;
+            for (const auto& n : g.G.non_seating)
+              out.append(py::make_tuple(halfspaces(n.impulses.closed), halfspaces(n.impulses.strict)));
+            return out;
+          })
       .def(
           "lost_fraction",
           [](const GuaranteedHandle& g, int grid) {

@@ -116,7 +116,9 @@ def test_other_scene_errors_name_their_field(tmp_path):
     with pytest.raises(TypeError):
         fixel.Scene.load(None)
     with pytest.raises(TypeError):
-        fixel.seating_set("example2.json")
+        fixel.seating_set(b"example2.json")  # bytes name no path here
+    with pytest.raises(fixel.InputError, match="cannot be opened"):
+        fixel.seating_set(str(tmp_path / "example2.json"))  # a path is read, and this one is missing
 
 
 def test_a_singular_scene_is_a_scene_error_naming_the_fixel(tmp_path):

@@ -254,22 +254,34 @@ def test_too_many_range_batches_is_a_clear_error_before_any_is_mapped(client):
     assert "11655753980 triples" in str(e.value)
 
 
-def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, twelve_candidates, tmp_path):
+def _fail_once(monkeypatch, batch, marker):
+    """The cluster path's batch `batch` fails once (the first call that finds
+    `marker` missing creates it and raises), as a worker dying mid-batch."""
+    import fixel._design as design_module
+
+    monkeypatch.setattr(design_module, "_FAIL_ONCE", (batch, marker))
+
+
+def test_a_batch_that_raises_once_is_retried_without_losing_a_result(client, twelve_candidates, tmp_path, monkeypatch):
     pool = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=1, **SMALL)
     marker = str(tmp_path / "failed-once")
+    _fail_once(monkeypatch, 1, marker)
     d = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, client=client, batch_size=3, wave=1,
-                     retries=1, _fail_once=(1, marker), **SMALL)  # fmt: skip
+                     retries=1, **SMALL)  # fmt: skip
     assert (tmp_path / "failed-once").exists()  # it did fail once
     assert d.ranking() == pool.ranking()
+    assert d.stats["jobs"] == len(client.scheduler_info()["workers"])  # the cluster's workers, not jobs=
 
 
-def test_a_rerun_with_the_output_file_resumes_after_a_failed_batch(client, polygon_candidates, tmp_path):
+def test_a_rerun_with_the_output_file_resumes_after_a_failed_batch(client, polygon_candidates, tmp_path, monkeypatch):
     pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=1, **SMALL)
     out = str(tmp_path / "design.jsonl")
     marker = str(tmp_path / "failed-once")
     with pytest.raises(fixel.Error, match="rerun with it to resume"):
+        _fail_once(monkeypatch, 3, marker)
         fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
-                     retries=0, output=out, exhaustive=True, _fail_once=(3, marker), **SMALL)  # fmt: skip
+                     retries=0, output=out, exhaustive=True, **SMALL)  # fmt: skip
+    monkeypatch.undo()
     with open(out) as f:
         assert len(f.readlines()) == 5  # 6 batches of 56 triples, one failed
     d = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, client=client, batch_size=10,
@@ -278,13 +290,15 @@ def test_a_rerun_with_the_output_file_resumes_after_a_failed_batch(client, polyg
     assert d.ranking() == pool.ranking()
 
 
-def test_a_bounded_rerun_resumes_the_batches_it_would_hand_out_again(client, twelve_candidates, tmp_path):
+def test_a_bounded_rerun_resumes_the_batches_it_would_hand_out_again(client, twelve_candidates, tmp_path, monkeypatch):
     every = fixel.design(SCENE_DIR / "polygon.json", candidates=twelve_candidates, jobs=1, exhaustive=True, **SMALL)
     out = str(tmp_path / "design.jsonl")
     marker = str(tmp_path / "failed-once")
     run = dict(candidates=twelve_candidates, client=client, batch_size=3, wave=2, retries=0, output=out, **SMALL)
     with pytest.raises(fixel.Error, match="rerun with it to resume"):
-        fixel.design(SCENE_DIR / "polygon.json", _fail_once=(2, marker), **run)
+        _fail_once(monkeypatch, 2, marker)
+        fixel.design(SCENE_DIR / "polygon.json", **run)
+    monkeypatch.undo()
     with open(out) as f:
         recorded = [json.loads(line) for line in f]
     assert [r["batch"] for r in recorded] == [0, 1]  # the pilot, and batch 2's partner in its round
@@ -385,9 +399,12 @@ def test_a_recorded_score_that_the_triple_does_not_have_is_refused(client, polyg
         (dict(output=5), TypeError, "output"),
     ],
 )
-def test_dask_arguments_are_checked_before_any_batch_runs(client, polygon_candidates, tmp_path, bad, exc, field):
+def test_dask_arguments_are_checked_before_any_batch_runs(
+    client, polygon_candidates, tmp_path, bad, exc, field, monkeypatch
+):
     marker = tmp_path / "a-batch-ran"
-    args = dict(candidates=polygon_candidates, client=client, retries=0, _fail_once=(0, str(marker)), **SMALL)
+    _fail_once(monkeypatch, 0, str(marker))
+    args = dict(candidates=polygon_candidates, client=client, retries=0, **SMALL)
     args.update({k: v.format(tmp=tmp_path) if isinstance(v, str) else v for k, v in bad.items()})
     t0 = time.monotonic()
     with pytest.raises(exc) as e:
@@ -413,7 +430,8 @@ def test_a_client_opened_from_an_address_is_closed_also_on_an_error(client, poly
     pool = fixel.design(SCENE_DIR / "polygon.json", candidates=polygon_candidates, jobs=1, **SMALL)
     assert fixel.design(SCENE_DIR / "polygon.json", **run).ranking() == pool.ranking()
     with pytest.raises(fixel.Error, match="failed after 0 retries"):
-        fixel.design(SCENE_DIR / "polygon.json", retries=0, _fail_once=(0, str(tmp_path / "failed")), **run)
+        monkeypatch.setattr(design_module, "_FAIL_ONCE", (0, str(tmp_path / "failed")))
+        fixel.design(SCENE_DIR / "polygon.json", retries=0, **run)
     assert len(opened) == 2 and all(c.status == "closed" for c in opened)
     t0 = time.monotonic()
     while clients() != before and time.monotonic() - t0 < 10:

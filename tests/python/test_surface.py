@@ -1,0 +1,116 @@
+"""The module's surface: what every scene argument accepts, what dir(fixel)
+lists, what does not pickle, and G's pieces against a second method."""
+
+import inspect
+import itertools
+import pickle
+from fractions import Fraction as F
+
+import pytest
+
+import fixel
+
+from conftest import SCENE_DIR, cli_json
+
+
+def _rows_text(rows):
+    return [([str(x) for x in a], str(c)) for a, c in rows]
+
+
+def _json_rows(rows):
+    return [(r["a"], r["c"]) for r in rows]
+
+
+def _in_piece(piece, p):
+    """Membership in one piece from its rows alone, in Fractions."""
+
+    def dot(a):
+        return sum(x * y for x, y in zip(a, p))
+
+    return all(dot(a) >= c for a, c in piece.closed) and all(dot(a) > c for a, c in piece.strict)
+
+
+@pytest.mark.parametrize("name", ["nonunique_part.json", "polygon.json", "example2.json"])
+def test_gs_pieces_and_non_seating_sets_are_the_clis_rows(name):
+    G = fixel.guaranteed_set(SCENE_DIR / name)
+    cli = cli_json("seat", SCENE_DIR / name, "--guaranteed")["guaranteed_set"]
+    assert [p.dimension for p in G.pieces] == [p["dimension"] for p in cli["pieces"]]
+    assert [(_rows_text(p.closed), _rows_text(p.strict)) for p in G.pieces] == [
+        (_json_rows(p["closed"]), _json_rows(p["strict"])) for p in cli["pieces"]
+    ]
+    assert [(_rows_text(n.closed), _rows_text(n.strict)) for n in G.non_seating_impulses] == [
+        (_json_rows(n["closed"]), _json_rows(n["strict"])) for n in cli["non_seating"]
+    ]
+    assert [(list(m), f) for m, f in G.non_seating] == [(n["modes"], n["open_fixel"]) for n in cli["non_seating"]]
+
+
+@pytest.mark.parametrize("name", ["nonunique_part.json", "nonunique.json"])  # the scenes where G is not S
+def test_gs_pieces_partition_g_and_recount_its_lost_fraction(name):
+    # A second method: lost_fraction's own sample of S (apex + t·Σ w_j r_j,
+    # w on the simplex grid, five magnitudes t), judged here by the pieces'
+    # rows in Fractions, gives the C++ count exactly, and no point lies in
+    # two pieces.
+    G = fixel.guaranteed_set(SCENE_DIR / name)
+    S = G.seating
+    grid, k = 4, len(S.rays)
+    lost = total = 0
+    for w in itertools.product(range(grid + 1), repeat=k):
+        if sum(w) != grid:
+            continue
+        d = [sum(F(wj, grid) * r[i] for wj, r in zip(w, S.rays)) for i in range(S.dof)]
+        for t in (F(1, 4), F(1, 2), F(1), F(2), F(4)):
+            p = [a + t * x for a, x in zip(S.apex, d)]
+            inside = [_in_piece(piece, p) for piece in G.pieces]
+            assert sum(inside) <= 1, p  # disjoint
+            assert any(inside) == G.contains(p), p
+            total += 1
+            lost += not any(inside)
+    assert 0 < lost < total  # the sample sees both G and S minus G
+    assert F(lost, total) == G.lost_fraction(grid)
+
+
+def test_every_function_that_takes_a_scene_takes_its_path_too():
+    path = SCENE_DIR / "polygon.json"
+    scene = fixel.Scene.load(path)
+    assert fixel.seating_set(str(path)).halfspaces == fixel.seating_set(scene).halfspaces
+    assert fixel.sustained_set(path).cones == fixel.sustained_set(scene).cones
+    assert fixel.region(path, resolution="1/16").to_json()["intervals"] == fixel.region(
+        scene, resolution="1/16"
+    ).to_json()["intervals"]
+    assert fixel.push_plan(path, at="0:1/2") == fixel.push_plan(scene, at="0:1/2")
+    apex = fixel.seating_set(scene).apex
+    assert fixel.simulate(path, apex).seated == fixel.simulate(scene, apex).seated
+    with pytest.raises(fixel.InputError) as e:
+        fixel.seating_set(SCENE_DIR / "no_such_scene.json")
+    assert "no_such_scene.json" in str(e.value)
+    with pytest.raises(TypeError, match="a fixel.Scene, a scene dict or a path"):
+        fixel.seating_set(42)
+
+
+def test_dir_lists_the_public_api_and_no_imported_helper():
+    names = dir(fixel)
+    assert set(fixel.__all__) <= set(names)
+    for helper in ("np", "os", "json", "contextlib", "frac", "fracs", "text", "whole", "vector", "stoppable"):
+        assert helper not in names
+        assert hasattr(fixel, helper)  # still there for the submodules
+    assert all(hasattr(fixel, n) for n in names)
+
+
+def test_design_shows_no_test_hook_in_its_signature():
+    assert [p for p in inspect.signature(fixel.design).parameters if p.startswith("_")] == []
+
+
+def test_a_region_refuses_to_pickle_and_says_what_to_send_instead():
+    r = fixel.region(SCENE_DIR / "polygon.json", resolution="1/16")
+    with pytest.raises(TypeError, match="to_json"):
+        pickle.dumps(r)
+
+
+def test_a_scene_dict_nested_past_the_recursion_limit_is_an_input_error():
+    d = x = {}
+    for _ in range(100_000):
+        x["a"] = {}
+        x = x["a"]
+    with pytest.raises(fixel.InputError) as e:
+        fixel.Scene.from_dict(d, source="deep")
+    assert e.value.field == "deep" and "nested too deeply" in str(e.value)
