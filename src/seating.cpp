@@ -53,14 +53,67 @@ SeatingSet seating_set(const Scene& scene) {
   return S;
 }
 
+namespace {
+
+// Exact equality that also compares sizes (Eigen's == asserts on a size
+// mismatch, and S may come from anywhere).
+bool same(const VectorQ& a, const VectorQ& b) { return a.size() == b.size() && a == b; }
+
+// What of S differs from the set seating_set(scene) builds, checked from
+// its defining data (ν⁺ against the scene's eq. (20), then the values and
+// generators derived from it, then the rows' support of the cone); empty
+// when nothing does. A few mat-vec products: no solve, no facet search.
+std::string seating_set_mismatch(const Scene& scene, const SeatingSet& S) {
+  const int nc = scene.num_contacts();
+  const ContactMatrices W = contact_matrices(scene);
+  if (S.nu_plus.size() != S.dof || S.tangential_velocity.size() != nc) return "velocity vector length";
+  VectorQ psi(nc);
+  for (int i = 0; i < nc; ++i) psi[i] = scene.fixels[i].gap;
+  if (!same(W.Wn.transpose() * S.nu_plus, VectorQ(-psi / scene.time_step))) return "seating velocity nu_plus";
+  if (!same(S.tangential_velocity, W.Wt.transpose() * S.nu_plus)) return "tangential velocity v_t";
+  if (!same(S.apex, W.M * (S.nu_plus - scene.body.velocity))) return "apex";
+  std::vector<VectorQ> generators;
+  std::vector<int> owners;
+  for (int i = 0; i < nc; ++i) {
+    const int sigma = sign(S.tangential_velocity[i]);
+    if (S.sliding[i] != sigma) return "sliding sign list";
+    const Rational& mu = scene.fixels[i].mu;
+    for (int s : sigma == 0 ? std::vector<int>{1, -1} : std::vector<int>{-sigma}) {
+      if (sigma == 0 && s == -1 && mu == 0) break;
+      generators.push_back(W.Wn.col(i) + Rational(s) * mu * W.Wt.col(i));
+      owners.push_back(i);
+    }
+  }
+  if (S.generators.size() != generators.size() || S.generator_fixel != owners || S.rays.size() != generators.size())
+    return "generator list";
+  for (std::size_t k = 0; k < generators.size(); ++k) {
+    if (!same(S.generators[k], generators[k])) return "generator list";
+    if (!same(S.rays[k], VectorQ(-generators[k]))) return "ray list";
+  }
+  for (const Halfspace& h : S.halfspaces) {
+    if (h.a.dot(S.apex) != h.c) return "halfspace list";
+    for (const VectorQ& r : S.rays)
+      if (h.a.dot(r) < 0) return "halfspace list";
+  }
+  return "";
+}
+
+}  // namespace
+
 void check_seating_set_of(const Scene& scene, const SeatingSet& S, const std::string& field) {
   const int dof = scene.body.dof, nc = scene.num_contacts();
   bool rows_fit = true;
   for (const auto& h : S.halfspaces) rows_fit = rows_fit && h.a.size() == dof;
+  const std::string shape = "dof " + std::to_string(S.dof) + ", " + std::to_string(S.sliding.size()) + " fixels";
   if (S.dof != dof || S.apex.size() != dof || static_cast<int>(S.sliding.size()) != nc || !rows_fit)
-    throw InputError(field, "dof " + std::to_string(S.dof) + ", " + std::to_string(S.sliding.size()) + " fixels",
+    throw InputError(field, shape,
                      "is not this scene's seating set (dof " + std::to_string(dof) + ", " + std::to_string(nc) +
                          " fixels): build it with seating_set(scene)");
+  const std::string differs = seating_set_mismatch(scene, S);
+  if (!differs.empty())
+    throw InputError(
+        field, shape,
+        "is not this scene's seating set (its " + differs + " is not this scene's): build it with seating_set(scene)");
 }
 
 SeatingSystem seating_system(const Scene& scene, const SeatingSet& S) {

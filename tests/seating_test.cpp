@@ -276,5 +276,51 @@ GTEST_TEST(SeatingSet, ASetOfAnotherShapeBesideASceneIsAnInputErrorNamingS) {
   EXPECT_THROW(system.linear_part(test::v2(1, 2)), InputError);
 }
 
+// A set of another scene of the same shape is refused too (it used to pass
+// and give that scene's answers), naming the first part that differs; a set
+// of an equal scene, or of one that differs only in what S does not read
+// (b₀), is accepted.
+GTEST_TEST(SeatingSet, ASetOfAnotherSceneOfTheSameShapeIsAnInputErrorNamingWhatDiffers) {
+  const Scene example2 = test::scene_file("example2"), polygon = test::scene_file("polygon");
+  const SeatingSet of_polygon = seating_set(polygon), of_example2 = seating_set(example2);
+  const auto message = [&](const Scene& scene, const SeatingSet& S) -> std::string {
+    try {
+      seating_system(scene, S);
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "S");
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message(example2, of_polygon).find("its seating velocity nu_plus is not this scene's"), std::string::npos);
+  EXPECT_THROW(guaranteed_set(example2, of_polygon), InputError);
+  EXPECT_THROW(seat_and_stay(example2, of_polygon), InputError);
+  EXPECT_EQ(message(example2, of_example2), "");
+  EXPECT_EQ(message(test::scene_file("example2"), of_example2), "");
+  Scene pushed = example2;
+  pushed.background_impulse[0] += 1;  // S does not depend on b₀
+  EXPECT_EQ(message(pushed, of_example2), "");
+  // Each part changed alone is named.
+  Scene faster = example2;
+  faster.body.velocity[1] += 1;  // ν⁺ and v_t stay; the apex M(ν⁺ − ν) moves
+  EXPECT_NE(message(faster, of_example2).find("its apex is"), std::string::npos);
+  Scene rougher = example2;
+  rougher.fixels[0].mu += Rational(1, 7);
+  EXPECT_NE(message(rougher, of_example2).find("its generator list is"), std::string::npos);
+  SeatingSet edited = of_example2;
+  edited.halfspaces[0].c += 1;
+  EXPECT_NE(message(example2, edited).find("its halfspace list is"), std::string::npos);
+  edited = of_example2;
+  edited.halfspaces[0].a = -edited.halfspaces[0].a;  // through the apex, but the rays leave it
+  edited.halfspaces[0].c = -edited.halfspaces[0].c;
+  EXPECT_NE(message(example2, edited).find("its halfspace list is"), std::string::npos);
+  edited = of_example2;
+  edited.rays[1] = VectorQ(2);  // a ray of the wrong length: refused, not an Eigen assertion
+  EXPECT_NE(message(example2, edited).find("its ray list is"), std::string::npos);
+  edited = of_example2;
+  edited.sliding[2] = -edited.sliding[2];
+  EXPECT_NE(message(example2, edited).find("its sliding sign list is"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace fixel
