@@ -54,3 +54,23 @@ if [ -n "$pkg" ]; then
   (cd "$tmp" && PYTHONPATH=$(dirname "$pkg") /usr/bin/python3 -c \
     "import fixel; S = fixel.seating_set(fixel.Scene.load('$src/data/scenes/example2.json')); assert S.contains((-1, -1, -1)); print('python: import fixel from', fixel.__file__)")
 fi
+# Added by a parent with add_subdirectory and no build type, fixel's own
+# sources get -O2 (CMakeLists.txt); the parent keeps its empty build type and
+# its own targets get no -O flag. Configured only: the flags are in the
+# generated files.
+mkdir -p "$tmp/parent"
+printf 'int main() { return 0; }\n' > "$tmp/parent/main.cpp"
+cat > "$tmp/parent/CMakeLists.txt" <<PARENT
+cmake_minimum_required(VERSION 3.16)
+project(parent LANGUAGES CXX)
+add_subdirectory("$src" fixel)
+add_executable(parent_main main.cpp)
+target_link_libraries(parent_main PRIVATE fixel::fixel)
+PARENT
+cmake -S "$tmp/parent" -B "$tmp/parent-build" -G "Unix Makefiles" -DFIXEL_BUILD_PYTHON=OFF -DFIXEL_BUILD_CLI=OFF > /dev/null
+grep -q "^CMAKE_BUILD_TYPE:STRING=$" "$tmp/parent-build/CMakeCache.txt"
+grep -q -- "-O2" "$tmp/parent-build/fixel/CMakeFiles/fixel.dir/flags.make"
+if grep -q -- "-O[0-9s]" "$tmp/parent-build/CMakeFiles/parent_main.dir/flags.make"; then
+  echo "FAIL: the parent's own target got an -O flag"; exit 1
+fi
+echo "add_subdirectory without a build type: fixel's sources at -O2, the parent's untouched"
