@@ -54,8 +54,10 @@ int main(int argc, char** argv) {
   fixel::bench::check_study_args(
       argc, argv,
       "usage: approach_bench [--random N] [--samples N] [--region-pushes N] [--plan-points N] [--seed S] "
-      "[--gap G] [--mu M] [--time T] [--dump DIR]   (docs/physics.md, \"J' in the engine\")",
-      {"--random", "--samples", "--region-pushes", "--plan-points", "--seed", "--gap", "--mu", "--time", "--dump"});
+      "[--gap G] [--mu M] [--time T] [--dump DIR]" +
+          std::string(fixel::bench::kEngineUsage) + "   (docs/physics.md, \"J' in the engine\")",
+      fixel::bench::with_engine_args({"--random", "--samples", "--region-pushes", "--plan-points", "--seed", "--gap",
+                                      "--mu", "--time", "--dump"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--random") random_parts = std::atoi(argv[i + 1]);
@@ -71,6 +73,8 @@ int main(int argc, char** argv) {
   fp::PushOptions options;
   options.time = fixel::parse_rational(time);
   options.trajectory_samples = 1;
+  fixel::bench::read_engine_args(argc, argv, options);
+  std::cout << fixel::bench::engine_line(options) << "\n\n";
   std::mt19937_64 rng(seed), plan_rng(seed + 1);  // the plan points draw apart: the parts stay those of before
   std::uniform_real_distribution<double> U(0.05, 1);
 

@@ -9,6 +9,8 @@
 // outcome seated). Prints a Markdown table.
 //
 //   physics_bench [--samples N] [--random K] [--seed S] [--time T]
+//                 [--steps-per-h N] [--velocity-iterations N] [--position-iterations N]
+// (the engine options apply to all three pushes)
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -58,6 +60,9 @@ std::string row(const Count& c) {
 // Runs p as p/h for h and as a sustained push.
 void run(const fixel::Scene& scene, const fp::Wrench& w, const fp::PushOptions& sustained, Count& c) {
   fp::PushOptions one;
+  one.steps_per_h = sustained.steps_per_h;  // the engine's accuracy, as asked for
+  one.velocity_iterations = sustained.velocity_iterations;
+  one.position_iterations = sustained.position_iterations;
   one.time = 1;
   one.stop_at_outcome = false;
   one.trajectory_samples = 1;
@@ -96,10 +101,10 @@ int main(int argc, char** argv) {
   int samples = 40, random_parts = 8;
   std::uint64_t seed = 1;
   std::string time = "20";
-  fixel::bench::check_study_args(
-      argc, argv,
-      "usage: physics_bench [--samples N] [--random N] [--seed S] [--time T]   (docs/physics.md, \"Measured\")",
-      {"--samples", "--random", "--seed", "--time"});
+  fixel::bench::check_study_args(argc, argv,
+                                 "usage: physics_bench [--samples N] [--random N] [--seed S] [--time T]" +
+                                     std::string(fixel::bench::kEngineUsage) + "   (docs/physics.md, \"Measured\")",
+                                 fixel::bench::with_engine_args({"--samples", "--random", "--seed", "--time"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--samples") samples = std::atoi(argv[i + 1]);
@@ -110,6 +115,8 @@ int main(int argc, char** argv) {
   fp::PushOptions sustained;
   sustained.time = fixel::parse_rational(time);
   sustained.trajectory_samples = 1;
+  fixel::bench::read_engine_args(argc, argv, sustained);
+  std::cout << fixel::bench::engine_line(sustained) << "\n\n";
 
   std::vector<fixel::Scene> parts = bench::bundled_parts(std::string(FIXEL_SOURCE_DIR) + "/data/scenes");
   std::mt19937_64 rng(seed);

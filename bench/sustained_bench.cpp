@@ -8,6 +8,7 @@
 // Prints a Markdown table and the pooled seated fractions side by side.
 //
 //   sustained_bench [--pushes N] [--random K] [--seed S] [--time T]
+//                   [--steps-per-h N] [--velocity-iterations N] [--position-iterations N]
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -51,11 +52,11 @@ int main(int argc, char** argv) {
   int pushes = 10, random_parts = 12;
   std::uint64_t seed = 1;
   std::string time = "20";
-  fixel::bench::check_study_args(
-      argc, argv,
-      "usage: sustained_bench [--pushes N] [--random N] [--seed S] [--time T]   (docs/physics.md, \"The "
-      "sustained-push region\")",
-      {"--pushes", "--random", "--seed", "--time"});
+  fixel::bench::check_study_args(argc, argv,
+                                 "usage: sustained_bench [--pushes N] [--random N] [--seed S] [--time T]" +
+                                     std::string(fixel::bench::kEngineUsage) +
+                                     "   (docs/physics.md, \"The sustained-push region\")",
+                                 fixel::bench::with_engine_args({"--pushes", "--random", "--seed", "--time"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--pushes") pushes = std::atoi(argv[i + 1]);
@@ -66,6 +67,8 @@ int main(int argc, char** argv) {
   fp::PushOptions options;
   options.time = fixel::parse_rational(time);
   options.trajectory_samples = 1;
+  fixel::bench::read_engine_args(argc, argv, options);
+  std::cout << fixel::bench::engine_line(options) << "\n\n";
 
   std::vector<fixel::Scene> parts = bench::bundled_parts(std::string(FIXEL_SOURCE_DIR) + "/data/scenes");
   std::mt19937_64 rng(seed);
