@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "fixel/error.h"
 #include "fixel/guaranteed.h"
@@ -349,20 +350,21 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
         }
       }
       const std::vector<Magnitudes> parts = ray_magnitudes(G_, S_, b0_, gens[0]);
-      if (set) {
-        // Report Euclidean |p| like every other magnitude: τ|d| with |d|
-        // irrational, so each end is rounded inward (a certified subset).
-        set->clear();
-        const Rational d2 = d_first.x * d_first.x + d_first.y * d_first.y;
-        for (const auto& t : parts) {
-          Magnitudes m = t;
-          m.lo = t.lo * internal::sqrt_upper(d2);
-          if (t.hi) m.hi = *t.hi * internal::sqrt_lower(d2);
-          if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) continue;
-          set->push_back(m);
-        }
+      // Report Euclidean |p| like every other magnitude: τ|d| with |d|
+      // irrational, so each end is rounded inward (a certified subset).
+      // Made also without `set`: a point test (push-plan) reads only `out`,
+      // which used to stay empty then.
+      std::vector<Magnitudes> windows;
+      const Rational d2 = d_first.x * d_first.x + d_first.y * d_first.y;
+      for (const auto& t : parts) {
+        Magnitudes m = t;
+        m.lo = t.lo * internal::sqrt_upper(d2);
+        if (t.hi) m.hi = *t.hi * internal::sqrt_lower(d2);
+        if (Magnitudes::ends_cross(m.lo, m.lo_closed, m.hi, m.hi_closed)) continue;
+        windows.push_back(m);
       }
-      if (out) *out = set && !set->empty() ? set->front() : Magnitudes{};
+      if (out) *out = windows.empty() ? Magnitudes{} : windows.front();
+      if (set) *set = std::move(windows);
       return parts.empty() ? RegionStatus::kOut : RegionStatus::kIn;
     }
     RegionInterval tmp;

@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 
+#include "fixel/guaranteed.h"
 #include "fixel/io.h"
 #include "fixel/progress.h"
 #include "fixel/region_target.h"
@@ -123,6 +126,37 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
 // fan also holds the right edge's normal (−1, 0), whose ray misses (by hand
 // in region_test.cpp). The status is OUT, so no impulse is shown "inside
 // the window": there is none. Just past the corner, on the roof, there is.
+// push-plan --guaranteed gives G's magnitude window at a point (a point
+// test used to leave it empty, and the report said "no single certified
+// window"). Checked against G itself: an impulse b0 + τg whose |p| = τ|d|
+// lies in the window (decided on squares, exactly) is in G, and the window
+// lies in S's (G ⊂ S).
+GTEST_TEST(PushPlan, GivesGsMagnitudeWindowAtAPointAndItsImpulsesAreInG) {
+  const std::tuple<const char*, int, Rational> points[] = {{"polygon", 0, Rational(5, 2)},
+                                                           {"nonunique_part", 0, Rational(8)}};
+  for (const auto& [name, curve, u] : points) {
+    const Scene scene = test::scene_file(name);
+    const PushPlan plan = plan_push(scene, curve, u, true);
+    ASSERT_TRUE(plan.in_G.has_value()) << name;
+    ASSERT_EQ(*plan.in_G, RegionStatus::kIn) << name;
+    const Magnitudes& m = plan.magnitudes_G;
+    ASSERT_FALSE(m.empty) << name;
+    EXPECT_GE(m.lo, plan.magnitudes_S.lo) << name;
+    const VectorQ& g = plan.wrench_direction;
+    const Rational d2 = g[0] * g[0] + g[1] * g[1];
+    // A magnitude inside the window, then τ = |p|/|d| as the exact value of
+    // a double; its |p| is checked to be inside on squares.
+    const double p_mid = m.hi ? (to_double(m.lo) + to_double(*m.hi)) / 2 : 2 * to_double(m.lo) + 1;
+    const Rational tau(p_mid / std::sqrt(to_double(d2)));
+    const Rational p2 = tau * tau * d2;
+    ASSERT_GT(p2, m.lo * m.lo) << name;
+    if (m.hi) ASSERT_LT(p2, *m.hi * *m.hi) << name;
+    const SeatingSet S = seating_set(scene);
+    const GuaranteedSet G = guaranteed_set(scene, S);
+    EXPECT_TRUE(G.contains(VectorQ(scene.background_impulse + tau * g), S)) << name;
+  }
+}
+
 GTEST_TEST(PushPlan, AnOutCornerShowsNoSampleImpulseThoughItsNextEdgesRayHits) {
   Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/polygon.json");
   for (Fixel& f : scene.fixels) f.gap = 0;
