@@ -64,7 +64,9 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
   doc["sustained"] = plan.in_J ? json{{"meaning", "sustained push: seats and stays"}, {"status", to_string(*plan.in_J)}}
                                : json{{"note", plan.J_note}};
   if (plan.approach) {
-    json a = {{"meaning", "sustained push, approach-aware J'"}};
+    json a = {
+        {"meaning",
+         "sustained push: seats and stays, no pair holding the part on the way"}};  // region --approach's meaning.in
     if (plan.in_J_approach)
       a["status"] = to_string(*plan.in_J_approach);
     else

@@ -126,7 +126,8 @@ int run_design(const DesignArgs& a) {
 Command add_design(CLI::App& app) {
   auto a = std::make_shared<DesignArgs>();
   auto* cmd = app.add_subcommand("design", "Fixture design: the three fixels whose pushing region is largest");
-  cmd->add_option("part", a->scene_path, "Scene file with a boundary; its fixels may be empty")->required();
+  cmd->add_option("part", a->scene_path, "Scene file with a boundary; its fixels may be empty; - reads standard input")
+      ->required();
   cmd->add_option("--candidates", a->candidates,
                   "boundary (default: points every --spacing of arc length) or FILE.json {\"candidates\": [...]}");
   cmd->add_option("--spacing", a->spacing, "Arc length between boundary candidates (default: 24 evenly spaced)");

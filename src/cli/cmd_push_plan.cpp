@@ -31,7 +31,8 @@ int run_push_plan(const PlanArgs& a) {
 Command add_push_plan(CLI::App& app) {
   auto a = std::make_shared<PlanArgs>();
   auto* cmd = app.add_subcommand("push-plan", "How hard to push at one boundary point: magnitude windows per model");
-  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md)")->required();
+  cmd->add_option("scene", a->scene_path, "Scene file with a boundary (JSON, docs/formats.md); - reads standard input")
+      ->required();
   cmd->add_option("--at", a->at_text, "The boundary point: parameter U of curve K, as K:U (exact numbers)")->required();
   cmd->add_flag("--guaranteed", a->guaranteed, "Also the window in G (every one-step outcome seats; dof 3)");
   cmd->add_flag("--json", a->json, "Print one JSON document on stdout");
