@@ -61,8 +61,8 @@ bool same(const VectorQ& a, const VectorQ& b) { return a.size() == b.size() && a
 
 // What of S differs from the set seating_set(scene) builds, checked from
 // its defining data (ν⁺ against the scene's eq. (20), then the values and
-// generators derived from it, then the rows' support of the cone); empty
-// when nothing does. A few mat-vec products: no solve, no facet search.
+// generators derived from it, then the rows: S's facets); empty when
+// nothing does.
 std::string seating_set_mismatch(const Scene& scene, const SeatingSet& S) {
   const int nc = scene.num_contacts();
   const ContactMatrices W = contact_matrices(scene);
@@ -90,11 +90,13 @@ std::string seating_set_mismatch(const Scene& scene, const SeatingSet& S) {
     if (!same(S.generators[k], generators[k])) return "generator list";
     if (!same(S.rays[k], VectorQ(-generators[k]))) return "ray list";
   }
-  for (const Halfspace& h : S.halfspaces) {
-    if (h.a.dot(S.apex) != h.c) return "halfspace list";
-    for (const VectorQ& r : S.rays)
-      if (h.a.dot(r) < 0) return "halfspace list";
-  }
+  // The rows are S's facets, in seating_set's order: a dropped row would
+  // make S (and its region) larger without a word. At most 2 n_c rays, so
+  // the facet search is small.
+  const std::vector<VectorQ> normals = cone_facet_normals(S.rays, S.dof);
+  if (S.halfspaces.size() != normals.size()) return "halfspace list";
+  for (std::size_t k = 0; k < normals.size(); ++k)
+    if (!same(S.halfspaces[k].a, normals[k]) || S.halfspaces[k].c != normals[k].dot(S.apex)) return "halfspace list";
   return "";
 }
 

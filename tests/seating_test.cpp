@@ -315,6 +315,11 @@ GTEST_TEST(SeatingSet, ASetOfAnotherSceneOfTheSameShapeIsAnInputErrorNamingWhatD
   edited.halfspaces[0].c = -edited.halfspaces[0].c;
   EXPECT_NE(message(example2, edited).find("its halfspace list is"), std::string::npos);
   edited = of_example2;
+  edited.halfspaces.pop_back();  // a facet dropped: S (and its region) would grow
+  EXPECT_NE(message(example2, edited).find("its halfspace list is"), std::string::npos);
+  edited.halfspaces.clear();
+  EXPECT_NE(message(example2, edited).find("its halfspace list is"), std::string::npos);
+  edited = of_example2;
   edited.rays[1] = VectorQ(2);  // a ray of the wrong length: refused, not an Eigen assertion
   EXPECT_NE(message(example2, edited).find("its ray list is"), std::string::npos);
   edited = of_example2;

@@ -46,9 +46,9 @@ Magnitudes ray_magnitudes(const SeatingSet& S, const VectorQ& b0, const VectorQ&
 /// Throws InputError naming `field` unless S is the scene's seating set:
 /// its shape (dof, one sliding flag per fixel, rows and apex of length
 /// dof), then, exactly, its ν⁺ (W_nᵀ ν⁺ = −Ψ/h), v_t, apex, sliding signs,
-/// generators and rays as seating_set(scene) derives them, and rows that
-/// pass through the apex and hold every ray. The message names the first
-/// part that differs. A few matrix-vector products, no facet search.
+/// generators and rays as seating_set(scene) derives them, and its rows,
+/// which must be the facets of that cone through the apex, in
+/// seating_set's order. The message names the first part that differs.
 void check_seating_set_of(const Scene& scene, const SeatingSet& S, const std::string& field = "S");
 
 /// Computes S for a validated scene (n_c == dof, W_n nonsingular), for
