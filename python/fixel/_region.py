@@ -1,5 +1,6 @@
 """The pushing region: exact result objects and progress reporting."""
 
+import dataclasses
 import json
 import time
 from dataclasses import dataclass, field
@@ -109,6 +110,11 @@ class Region:
     resolution_length: Optional[Fraction] = None  # with region(resolution_length=L): L (m); resolution is then None
     guaranteed: object = field(default=None, repr=False)  # the GuaranteedSet classified against, if any
     corners: list = field(default_factory=list)  # (curve, u, status): corners whose status an interval ending there lacks
+
+    def __copy__(self):
+        # copy.copy goes through __reduce__ otherwise: a shallow copy shares
+        # the C++ region, as the original's fields do.
+        return dataclasses.replace(self)
 
     def __reduce__(self):
         # Unpickling by recomputation, as S, G and J do, would redo the whole

@@ -114,3 +114,11 @@ def test_a_scene_dict_nested_past_the_recursion_limit_is_an_input_error():
     with pytest.raises(fixel.InputError) as e:
         fixel.Scene.from_dict(d, source="deep")
     assert e.value.field == "deep" and "nested too deeply" in str(e.value)
+
+
+def test_a_region_copies_shallowly_and_shares_its_core():
+    import copy
+
+    r = fixel.region(SCENE_DIR / "polygon.json", resolution="1/16")
+    c = copy.copy(r)
+    assert c is not r and c._impl is r._impl and c.to_json() == r.to_json()
