@@ -67,10 +67,16 @@ add_subdirectory("$src" fixel)
 add_executable(parent_main main.cpp)
 target_link_libraries(parent_main PRIVATE fixel::fixel)
 PARENT
-cmake -S "$tmp/parent" -B "$tmp/parent-build" -G "Unix Makefiles" -DFIXEL_BUILD_PYTHON=OFF -DFIXEL_BUILD_CLI=OFF > /dev/null
+CXXFLAGS= cmake -S "$tmp/parent" -B "$tmp/parent-build" -G "Unix Makefiles" -DFIXEL_BUILD_PYTHON=OFF -DFIXEL_BUILD_CLI=OFF > /dev/null
 grep -q "^CMAKE_BUILD_TYPE:STRING=$" "$tmp/parent-build/CMakeCache.txt"
 grep -q -- "-O2" "$tmp/parent-build/fixel/CMakeFiles/fixel.dir/flags.make"
 if grep -q -- "-O[0-9s]" "$tmp/parent-build/CMakeFiles/parent_main.dir/flags.make"; then
   echo "FAIL: the parent's own target got an -O flag"; exit 1
 fi
-echo "add_subdirectory without a build type: fixel's sources at -O2, the parent's untouched"
+# A parent that chose its own -O flag keeps it for fixel too.
+CXXFLAGS= cmake -S "$tmp/parent" -B "$tmp/parent-o0" -G "Unix Makefiles" -DFIXEL_BUILD_PYTHON=OFF -DFIXEL_BUILD_CLI=OFF \
+  -DCMAKE_CXX_FLAGS="-O0 -g" > /dev/null
+if grep -q -- "-O2" "$tmp/parent-o0/fixel/CMakeFiles/fixel.dir/flags.make"; then
+  echo "FAIL: fixel overrode the parent's own -O0"; exit 1
+fi
+echo "add_subdirectory without a build type: fixel's library at -O2, the parent's untouched; a parent's -O0 kept"
