@@ -121,11 +121,6 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
       << push_plan_text(scene, corner);
 }
 
-// The bundled polygon with every gap 0: at the corner u = 2 the next edge's
-// normal (the roof's, the direction printed) has a ray that hits S, but the
-// fan also holds the right edge's normal (−1, 0), whose ray misses (by hand
-// in region_test.cpp). The status is OUT, so no impulse is shown "inside
-// the window": there is none. Just past the corner, on the roof, there is.
 // push-plan --guaranteed gives G's magnitude window at a point (a point
 // test used to leave it empty, and the report said "no single certified
 // window"). Checked against G itself: an impulse b0 + τg whose |p| = τ|d|
@@ -157,6 +152,11 @@ GTEST_TEST(PushPlan, GivesGsMagnitudeWindowAtAPointAndItsImpulsesAreInG) {
   }
 }
 
+// The bundled polygon with every gap 0: at the corner u = 2 the next edge's
+// normal (the roof's, the direction printed) has a ray that hits S, but the
+// fan also holds the right edge's normal (−1, 0), whose ray misses (by hand
+// in region_test.cpp). The status is OUT, so no impulse is shown "inside
+// the window": there is none. Just past the corner, on the roof, there is.
 GTEST_TEST(PushPlan, AnOutCornerShowsNoSampleImpulseThoughItsNextEdgesRayHits) {
   Scene scene = load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/polygon.json");
   for (Fixel& f : scene.fixels) f.gap = 0;
