@@ -23,11 +23,11 @@ namespace {
 
 using internal::common_magnitudes;
 
-// No ray of the cone (τ > 0) meets the convex piece Q: the set
-// {μ >= 0 : b0 + Σ μ_j g_j ∈ Q} is empty (exact LP with strict rows). When
-// b0 itself lies in Q (μ = 0) this cannot be certified this way.
+// No ray of the cone (τ > 0) meets the convex piece Q: no μ ≥ 0 with
+// Σ μ_j > 0 puts b0 + Σ μ_j g_j in Q (exact LP with strict rows). The strict
+// row Σ μ_j > 0 matters only when b0 itself lies in Q: the push's magnitude
+// is positive, so μ = 0 is no push (as for S, docs/theory.md §8).
 bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<VectorQ>& gens, const Polyhedron& Q) {
-  if (Q.contains(b0)) return false;
   if (stats) ++stats->lp_tests;
   const int n = static_cast<int>(gens.size());
   Polyhedron lifted;
@@ -40,6 +40,7 @@ bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<
   for (const auto& h : Q.closed) lifted.closed.push_back(lift(h));
   for (const auto& h : Q.strict) lifted.strict.push_back(lift(h));
   for (int j = 0; j < n; ++j) lifted.closed.push_back({VectorQ::Unit(n, j), Rational(0)});
+  lifted.strict.push_back({VectorQ::Ones(n), Rational(0)});
   return is_empty(lifted);
 }
 
@@ -137,12 +138,14 @@ struct PieceEnclosure {
     return internal::some_combination(gens.data(), n, strictly_inside);
   }
 
-  // A Farkas certificate that no μ ≥ 0 puts b0 + Σ μ_j g_j in the piece's
-  // closure, so none puts it in the piece: y ≥ 0 with Σ_h y_h a_h·g_j ≤ 0
-  // for every j and y·β > 0. Candidates are one row (y = e_h), then two
-  // (y = (1 − t)e_h + t e_k, t mid-way in the interval where the doubles
-  // satisfy every condition); each is checked in intervals with y taken as
-  // exact. True only when certified.
+  // A Farkas certificate that no μ ≥ 0 with Σ μ_j > 0 puts b0 + Σ μ_j g_j
+  // in the piece's closure, so none puts it in the piece: y ≥ 0 with
+  // Σ_h y_h a_h·g_j ≤ 0 for every j and y·β > 0; or, for b0 on the rows y
+  // uses (β_h = 0, as when b0 is the apex of S and G = S), Σ_h y_h a_h·g_j
+  // < 0 for every j and y·β ≥ 0 (docs/theory.md §8). Candidates are one row
+  // (y = e_h), then two (y = (1 − t)e_h + t e_k, t mid-way in the interval
+  // where the doubles satisfy every condition); each is checked in
+  // intervals with y taken as exact. True only when certified.
   bool certify_missed(const std::vector<std::array<FI, 3>>& gens) const {
     const std::size_t m = beta.size(), n = gens.size();
     if (m == 0 || m > 64 || n == 0) return false;
@@ -152,9 +155,12 @@ struct PieceEnclosure {
       for (std::size_t j = 0; j < n; ++j)
         alpha[h * n + j] = a[h][0] * gens[j][0] + a[h][1] * gens[j][1] + a[h][2] * gens[j][2];
     for (std::size_t h = 0; h < m; ++h) {
-      bool ok = beta[h].inf() > 0;
-      for (std::size_t j = 0; ok && j < n; ++j) ok = alpha[h * n + j].sup() <= 0;
-      if (ok) return true;
+      bool weak = beta[h].inf() > 0, strict = beta[h].inf() >= 0;
+      for (std::size_t j = 0; (weak || strict) && j < n; ++j) {
+        weak = weak && alpha[h * n + j].sup() <= 0;
+        strict = strict && alpha[h * n + j].sup() < 0;
+      }
+      if (weak || strict) return true;
     }
     auto mid = [](const FI& x) { return (x.inf() + x.sup()) / 2; };
     for (std::size_t h = 0; h < m; ++h)
@@ -176,9 +182,14 @@ struct PieceEnclosure {
         if (!(lo < hi)) continue;
         const double t = (lo + hi) / 2, s = 1 - t;
         if (!(t >= 0) || !(s >= 0)) continue;
-        bool ok = (FI(s) * beta[h] + FI(t) * beta[k]).inf() > 0;
-        for (std::size_t j = 0; ok && j < n; ++j) ok = (FI(s) * alpha[h * n + j] + FI(t) * alpha[k * n + j]).sup() <= 0;
-        if (ok) return true;
+        const FI yb = FI(s) * beta[h] + FI(t) * beta[k];
+        bool weak = yb.inf() > 0, strict = yb.inf() >= 0;
+        for (std::size_t j = 0; (weak || strict) && j < n; ++j) {
+          const FI ya = FI(s) * alpha[h * n + j] + FI(t) * alpha[k * n + j];
+          weak = weak && ya.sup() <= 0;
+          strict = strict && ya.sup() < 0;
+        }
+        if (weak || strict) return true;
       }
     return false;
   }
@@ -188,10 +199,7 @@ struct PieceEnclosure {
 class GuaranteedTarget final : public RegionTarget, public internal::IntervalTarget {
  public:
   GuaranteedTarget(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0) : G_(G), S_(S), b0_(b0) {
-    for (const auto& piece : G_.pieces) {
-      enclosures_.emplace_back(piece, b0_);
-      b0_inside_.push_back(piece.contains(b0_));
-    }
+    for (const auto& piece : G_.pieces) enclosures_.emplace_back(piece, b0_);
   }
   const char* push_model() const override { return "step"; }
   const char* name() const override { return "G"; }
@@ -231,7 +239,7 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
   }
 
   // misses() of any cone that is not IN, decision by decision in its order:
-  // per piece, a generator's ray that hits it, b0 inside it, then the
+  // per piece, a generator's ray that hits it, then the
   // certificates that stand for its LP (counted as the LP would be). Nothing
   // is counted unless the whole answer is certified.
   bool out_test_sees_hits() const override { return true; }
@@ -246,7 +254,7 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
         if (h == kUndecided) return kUndecided;
         hit = h == 1;
       }
-      if (hit || b0_inside_[p]) {
+      if (hit) {
         answer = 0;
         break;
       }
@@ -315,7 +323,6 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
         fg.push_back({internal::to_interval(g[0]), internal::to_interval(g[1]), internal::to_interval(g[2])});
     for (std::size_t p = 0; p < G_.pieces.size(); ++p) {
       if (hits_known && piece_hit_[p]) return false;
-      if (b0_inside_[p]) return false;  // μ = 0 (cone_misses_piece's first test)
       if (!force_exact()) {
         const bool missed = enclosures_[p].certify_missed(fg);
         const bool met = !missed && enclosures_[p].certify_met(fg);
@@ -380,7 +387,6 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
   const SeatingSet S_;
   VectorQ b0_;
   std::vector<PieceEnclosure> enclosures_;
-  std::vector<bool> b0_inside_;    // b0 in piece p: the cone meets it at μ = 0
   std::vector<VectorQ> hit_gens_;  // the generators of the last contains_cone
   std::vector<bool> piece_hit_;    // per piece: some generator's ray hit it
 };

@@ -197,6 +197,57 @@ GTEST_TEST(GuaranteedRegion, IsInsideTheOrdinaryRegionAndSoundBySampling) {
   for (const auto& r : against_s.intervals) EXPECT_EQ(r.status, RegionStatus::kIn);
 }
 
+GTEST_TEST(GuaranteedRegion, IsOutWhereverTheOrdinaryRegionIsOutWhenB0IsTheApexOfS) {
+  // Every gap 0: b0 = 0 is S's apex and lies in G (= S here). A push has a
+  // positive magnitude, so a cone that meets G only at b0 misses it; G's OUT
+  // test once let b0 alone make every piece "met", and left PARTIAL the
+  // 82% of the polygon's outline where S is OUT.
+  Scene scene = scene_file("polygon");
+  for (auto& f : scene.fixels) f.gap = 0;
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  ASSERT_EQ(S.apex, scene.background_impulse);
+  ASSERT_TRUE(G.contains(scene.background_impulse, S));
+  RegionOptions opt;
+  opt.resolution = Rational(1, 256);
+  const Region against_s = compute_region(scene, S, opt);
+  opt.guaranteed = &G;
+  reset_filter_stats();
+  const Region against_g = compute_region(scene, S, opt);
+  const FilterCounts out_tests = filter_stats().at(FilterSite::kOutTest);
+  Region exact_g;
+  {
+    ForceExactScope scope(true);
+    exact_g = compute_region(scene, S, opt);
+  }
+  // G ⊆ S: no stretch OUT for S is IN or PARTIAL for G (intervals overlapping
+  // in more than an end). Corners are left out: S's corner is IN or OUT
+  // (OUT when not all of its fan is in S), G's can be PARTIAL.
+  int s_out = 0, g_out = 0;
+  for (const auto& r : against_s.intervals) {
+    if (r.status != RegionStatus::kOut) continue;
+    ++s_out;
+    for (const auto& q : against_g.intervals)
+      if (q.curve == r.curve && q.u0 < q.u1 && q.u0 < r.u1 && r.u0 < q.u1) {
+        EXPECT_EQ(q.status, RegionStatus::kOut)
+            << "S is OUT on [" << to_string(r.u0) << ", " << to_string(r.u1) << "], G is not on [" << to_string(q.u0)
+            << ", " << to_string(q.u1) << "]";
+      }
+  }
+  for (const auto& q : against_g.intervals) g_out += q.status == RegionStatus::kOut;
+  EXPECT_GT(s_out, 0);
+  EXPECT_GT(g_out, 0);
+  // Second method: the forced exact path (the LP with Σμ > 0) agrees, and
+  // the filter certified misses with b0 on the piece's rows (the strict
+  // Farkas form) instead of sending every one to the LP.
+  ASSERT_EQ(exact_g.intervals.size(), against_g.intervals.size());
+  for (std::size_t i = 0; i < exact_g.intervals.size(); ++i) {
+    EXPECT_EQ(exact_g.intervals[i].u0, against_g.intervals[i].u0);
+    EXPECT_EQ(exact_g.intervals[i].status, against_g.intervals[i].status);
+  }
+  EXPECT_GT(out_tests.certified, out_tests.fallbacks);
+}
+
 GTEST_TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {
   const Scene scene = scene_file("nonunique_part");
   const SeatingSet S = seating_set(scene);
