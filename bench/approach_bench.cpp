@@ -60,18 +60,24 @@ int main(int argc, char** argv) {
                                       "--mu", "--time", "--dump"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--random") random_parts = std::atoi(argv[i + 1]);
-    if (a == "--samples") samples = std::atoi(argv[i + 1]);
-    if (a == "--region-pushes") region_pushes = std::atoi(argv[i + 1]);
-    if (a == "--plan-points") plan_points = std::atoi(argv[i + 1]);
-    if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
-    if (a == "--gap") gap = std::atoi(argv[i + 1]);
-    if (a == "--mu") mu = std::atoi(argv[i + 1]);
+    if (a == "--random")
+      random_parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--samples")
+      samples = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--region-pushes")
+      region_pushes = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--plan-points")
+      plan_points = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
+    if (a == "--gap")
+      gap = static_cast<int>(
+          fixel::bench::study_int(argv[i], argv[i + 1], 1, 1000));  // thousandths; random_part draws % gap
+    if (a == "--mu") mu = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, 1000));
     if (a == "--time") time = argv[i + 1];
     if (a == "--dump") dump = argv[i + 1];
   }
   fp::PushOptions options;
-  options.time = fixel::parse_rational(time);
+  options.time = fixel::bench::study_positive_rational("--time", time.c_str());
   options.trajectory_samples = 1;
   fixel::bench::read_engine_args(argc, argv, options);
   std::cout << fixel::bench::engine_line(options) << "\n\n";

@@ -79,23 +79,28 @@ int main(int argc, char** argv) {
        "--recheck"});
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--parts") parts = std::atoi(argv[i + 1]);
-    if (a == "--rounded") rounded = std::atoi(argv[i + 1]);
-    if (a == "--bundled") bundled = std::atoi(argv[i + 1]);
-    if (a == "--candidates") ncand = std::atoi(argv[i + 1]);
-    if (a == "--top") top = std::atoi(argv[i + 1]);
-    if (a == "--pushes") pushes = std::atoi(argv[i + 1]);
-    if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
+    if (a == "--parts")
+      parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--rounded")
+      rounded = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--bundled") bundled = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, 1));
+    if (a == "--candidates")
+      ncand = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--top")
+      top = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--pushes")
+      pushes = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
     if (a == "--dump") dump = argv[i + 1];
-    if (a == "--recheck") recheck = std::atoi(argv[i + 1]);
+    if (a == "--recheck") recheck = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, 1));
   }
   if (!dump.empty() && !std::filesystem::is_directory(dump)) {
     std::cerr << "--dump: " << dump << " is not a folder\n";  // else every layout would fail to save
     return 2;
   }
   fp::PushOptions options;
-  options.time = fixel::parse_rational(time);
+  options.time = fixel::bench::study_positive_rational("--time", time.c_str());
   options.trajectory_samples = 1;
   fixel::DesignOptions o;
   o.top = top;

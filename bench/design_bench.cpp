@@ -21,6 +21,7 @@
 #include "fixel/scene_json.h"
 #include "fixel/seating.h"
 #include "fixel/sustained.h"
+#include "study_args.h"
 
 namespace {
 
@@ -148,13 +149,13 @@ int main(int argc, char** argv) {
     if (a == "--part")
       part_name = next();
     else if (a == "--candidates")
-      n = std::atoi(next().c_str());
+      n = static_cast<int>(fixel::bench::study_int(a.c_str(), next().c_str(), 0, fixel::bench::kMaxStudyCount));
     else if (a == "--resolution")
       resolution = next();
     else if (a == "--jobs")
-      jobs = std::atoi(next().c_str());
+      jobs = static_cast<int>(fixel::bench::study_int(a.c_str(), next().c_str(), 0, 256));
     else if (a == "--top")
-      top = std::atoi(next().c_str());
+      top = static_cast<int>(fixel::bench::study_int(a.c_str(), next().c_str(), 0, fixel::bench::kMaxStudyCount));
     else if (a == "--stages")
       want_stages = true;
     else if (a == "--parts")

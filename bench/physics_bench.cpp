@@ -107,13 +107,15 @@ int main(int argc, char** argv) {
                                  fixel::bench::with_engine_args({"--samples", "--random", "--seed", "--time"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--samples") samples = std::atoi(argv[i + 1]);
-    if (a == "--random") random_parts = std::atoi(argv[i + 1]);
-    if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
+    if (a == "--samples")
+      samples = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--random")
+      random_parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
   }
   fp::PushOptions sustained;
-  sustained.time = fixel::parse_rational(time);
+  sustained.time = fixel::bench::study_positive_rational("--time", time.c_str());
   sustained.trajectory_samples = 1;
   fixel::bench::read_engine_args(argc, argv, sustained);
   std::cout << fixel::bench::engine_line(sustained) << "\n\n";

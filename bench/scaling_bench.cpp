@@ -17,6 +17,7 @@
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
 #include "fixel/seating.h"
+#include "study_args.h"
 
 namespace {
 
@@ -62,8 +63,13 @@ double fitted_exponent(const std::vector<double>& n, const std::vector<double>& 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int max_edges = argc > 1 ? std::atoi(argv[1]) : 100000;
-  const bool filtered_only = argc > 2 && std::string(argv[2]) == "--filtered-only";
+  if (argc > 3 || (argc == 3 && std::string(argv[2]) != "--filtered-only")) {
+    std::cerr << "usage: scaling_bench [MAX_EDGES] [--filtered-only]\n";
+    return 2;
+  }
+  const int max_edges =
+      argc > 1 ? static_cast<int>(fixel::bench::study_int("MAX_EDGES", argv[1], 0, INT32_MAX)) : 100000;
+  const bool filtered_only = argc > 2;
   std::vector<double> ns, tf, te;
   std::cout << "edges  filtered s  exact-only s  ratio  cone tests  filter certified/fallbacks  (where)"
                "  (region at resolution 1/1024)\n";

@@ -3,10 +3,16 @@
 // name or a name without its value prints the usage and exits (0, or 2 on a
 // mistake), so a typo never starts a long run with the defaults.
 
+#include <charconv>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include "fixel/error.h"
+#include "fixel/rational.h"
 
 namespace fixel::bench {
 
@@ -27,10 +33,51 @@ inline void check_study_args(int argc, char** argv, const std::string& usage, co
   }
 }
 
+// A mistaken value also stops the study before it runs: exit 2 with the
+// option and the value named (atoi read "1e4" as 1 and "x" as 0).
+[[noreturn]] inline void study_value_error(const char* name, const char* text, const std::string& wanted) {
+  std::cerr << name << ": '" << text << "' is not " << wanted << "\n";
+  std::exit(2);
+}
+
+// The whole text a whole number from lo to hi.
+inline long long study_int(const char* name, const char* text, long long lo, long long hi) {
+  long long v = 0;
+  const char* end = text + std::strlen(text);
+  const auto [at, ec] = std::from_chars(text, end, v);
+  if (ec != std::errc() || at != end || v < lo || v > hi)
+    study_value_error(name, text, "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return v;
+}
+
+// A seed: the whole text a number from 0 to 2^64 − 1.
+inline std::uint64_t study_seed(const char* name, const char* text) {
+  std::uint64_t v = 0;
+  const char* end = text + std::strlen(text);
+  const auto [at, ec] = std::from_chars(text, end, v);
+  if (ec != std::errc() || at != end) study_value_error(name, text, "a whole number from 0 to 2^64 - 1");
+  return v;
+}
+
+// An exact rational ("20", "1/2", "0.25"), positive.
+inline fixel::Rational study_positive_rational(const char* name, const char* text) {
+  try {
+    const fixel::Rational r = fixel::parse_rational(text, name);
+    if (r > 0) return r;
+  } catch (const fixel::Error&) {
+  }
+  study_value_error(name, text, "a positive exact number (as 20, 1/2 or 0.25)");
+}
+
+// A count of samples, pushes, parts or candidates.
+inline constexpr long long kMaxStudyCount = 1000000;
+
 // The engine's accuracy, as `fixel push` takes it (docs/physics.md, "Engine
 // settings"): pass kEngineArgs to check_study_args beside a study's own
-// names, then read them into its PushOptions. The value is checked by
-// physics::check_push_options when the first push runs.
+// names, then read them into its PushOptions. Each value is checked here,
+// and then the whole PushOptions (the step limit time · steps_per_h) by
+// check_push_options, so a study never starts with settings its first push
+// would refuse.
 inline const std::vector<std::string> kEngineArgs = {"--steps-per-h", "--velocity-iterations", "--position-iterations"};
 inline const char* const kEngineUsage = " [--steps-per-h N] [--velocity-iterations N] [--position-iterations N]";
 
@@ -38,9 +85,17 @@ template <class PushOptions>
 void read_engine_args(int argc, char** argv, PushOptions& options) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--steps-per-h") options.steps_per_h = std::atoi(argv[i + 1]);
-    if (a == "--velocity-iterations") options.velocity_iterations = std::atoi(argv[i + 1]);
-    if (a == "--position-iterations") options.position_iterations = std::atoi(argv[i + 1]);
+    // Whole numbers here; their ranges are check_push_options' below.
+    auto whole = [&] { return static_cast<int>(study_int(argv[i], argv[i + 1], INT32_MIN, INT32_MAX)); };
+    if (a == "--steps-per-h") options.steps_per_h = whole();
+    if (a == "--velocity-iterations") options.velocity_iterations = whole();
+    if (a == "--position-iterations") options.position_iterations = whole();
+  }
+  try {
+    check_push_options(options);  // found by argument-dependent lookup: fixel::physics
+  } catch (const fixel::Error& e) {
+    std::cerr << e.what() << "\n";
+    std::exit(2);
   }
 }
 

@@ -59,13 +59,15 @@ int main(int argc, char** argv) {
                                  fixel::bench::with_engine_args({"--pushes", "--random", "--seed", "--time"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--pushes") pushes = std::atoi(argv[i + 1]);
-    if (a == "--random") random_parts = std::atoi(argv[i + 1]);
-    if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 10);
+    if (a == "--pushes")
+      pushes = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--random")
+      random_parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
   }
   fp::PushOptions options;
-  options.time = fixel::parse_rational(time);
+  options.time = fixel::bench::study_positive_rational("--time", time.c_str());
   options.trajectory_samples = 1;
   fixel::bench::read_engine_args(argc, argv, options);
   std::cout << fixel::bench::engine_line(options) << "\n\n";
