@@ -111,6 +111,8 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   out << "  one-step: can seat: " << to_string(plan.in_S);
   if (plan.in_S == RegionStatus::kIn)
     out << ", |p| in " << plan.magnitudes_S.describe_readable() << " N*s" << width_text(plan.magnitudes_S);
+  else if (plan.corner && plan.in_S == RegionStatus::kOut)
+    out << " (a corner: not every push of its fan lands in S)";
   out << "\n";
   if (plan.sample_impulse) {
     const OutcomeCount& c = plan.sample_outcomes;
@@ -129,6 +131,11 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
       out << ", |p| in " << plan.magnitudes_G.describe_readable() << " N*s" << width_text(plan.magnitudes_G);
     else if (*plan.in_G == RegionStatus::kIn)
       out << " for some magnitudes (no single certified window; test one with `seat --guaranteed --impulse`)";
+    else if (plan.corner && *plan.in_G == RegionStatus::kPartial)
+      out << " (a corner: some pushes of its fan land in G, perhaps not all; G is not convex, so its fan is not "
+             "judged IN or OUT as S's is)";
+    else if (plan.corner && *plan.in_G == RegionStatus::kOut)
+      out << " (a corner: no push of its fan lands in G)";
     out << "\n";
   }
   if (plan.in_J)

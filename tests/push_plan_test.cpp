@@ -8,6 +8,7 @@
 #include <string>
 #include <tuple>
 
+#include "fixel/geometry.h"
 #include "fixel/guaranteed.h"
 #include "fixel/io.h"
 #include "fixel/progress.h"
@@ -119,6 +120,42 @@ GTEST_TEST(PushPlan, ReportsJPrimeAndThePairThatHoldsThePartInTextAndJson) {
   EXPECT_NE(push_plan_text(scene, corner).find("approach-aware J': out (a corner: not every push of its fan is in J'"),
             std::string::npos)
       << push_plan_text(scene, corner);
+}
+
+// At a corner S's status is IN or OUT for the whole fan (OUT: not every
+// push lands in S), while G's can be PARTIAL (some push lands, perhaps not
+// all). With
+// every gap 0, G = S on the polygon, and at u = 3 a middle stretch of the
+// fan lands in S: "out" beside "partial" read as G ⊄ S, so the text says
+// what each means. Second method: the fan's pushes tested one by one,
+// exactly, against S's rows (b0 is S's apex, so a push lands iff its
+// wrench is in S).
+GTEST_TEST(PushPlan, AtACornerSaysWhatSsOutAndGsPartialMean) {
+  Scene scene = test::scene_file("polygon");
+  for (auto& f : scene.fixels) f.gap = 0;
+  const PushPlan plan = plan_push(scene, 0, Rational(3), true);
+  ASSERT_TRUE(plan.corner);
+  ASSERT_TRUE(plan.in_G.has_value());
+  EXPECT_EQ(plan.in_S, RegionStatus::kOut);
+  EXPECT_EQ(*plan.in_G, RegionStatus::kPartial);
+  const SeatingSet S = seating_set(scene);
+  ASSERT_EQ(S.apex, scene.background_impulse);
+  const Vec2 p{Rational(1, 4), Rational(3, 2)}, r{p.x - scene.body.p_AoCm_A.x, p.y - scene.body.p_AoCm_A.y};
+  const Vec2 n_in{Rational(-1), Rational(-5, 4)}, n_out{Rational(1), Rational(-5, 4)};  // the edges' inward normals
+  int landed = 0, missed = 0;
+  for (int k = 0; k <= 20; ++k) {
+    const Rational s(k, 20);
+    const Vec2 d{(1 - s) * n_in.x + s * n_out.x, (1 - s) * n_in.y + s * n_out.y};
+    (S.contains(contact_wrench(r, d, 3)) ? landed : missed) += 1;
+  }
+  EXPECT_GT(landed, 0);
+  EXPECT_GT(missed, 0);
+  const std::string text = push_plan_text(scene, plan);
+  EXPECT_NE(text.find("one-step: can seat: out (a corner: not every push of its fan lands in S)"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("one-step: guaranteed: partial (a corner: some pushes of its fan land in G, perhaps not all"),
+            std::string::npos)
+      << text;
 }
 
 // push-plan --guaranteed gives G's magnitude window at a point (a point
