@@ -67,11 +67,8 @@ class Scene:
             raise TypeError(f"{source}: a scene is a dict in the scene-file format, not {type(d).__name__}")
         # Serialised and parsed by the C++ parser, so validation and messages
         # are exactly those of the CLI.
-        try:
-            text = json.dumps(_jsonable(d, ""))
-        except RecursionError:
-            # The scene loader refuses nesting deeper than 64 levels anyway.
-            raise InputError.make(source, "a dict", "is nested too deeply to be a scene") from None
+        _check_nesting(d, source, "")
+        text = json.dumps(_jsonable(d, ""))
         return cls(stoppable(lambda c: _fixel.parse_scene(text, source, c), max_seconds))
 
     def to_dict(self):
@@ -125,6 +122,27 @@ class Scene:
 
     def __repr__(self):
         return f"<fixel.Scene {self.name!r} dof={self.dof} contacts={self.num_contacts}>"
+
+
+_MAX_SCENE_DEPTH = 64  # the C++ scene loader's limit, with the same message
+
+
+def _check_nesting(x, source, path, depth=1, on_path=()):
+    """Before anything recurses over the dict: a dict or list that contains
+    itself is an InputError naming where, and nesting past 64 levels the
+    ParseError the scene loader gives for the same text (both used to be a
+    RecursionError, or "nested too deeply" past Python's limit)."""
+    if not isinstance(x, (dict, list, tuple)):
+        return
+    if id(x) in on_path:
+        kind = "a dict" if isinstance(x, dict) else "a list"
+        raise InputError.make(path or source, kind, "contains itself: a scene is a tree of dicts and lists")
+    if depth > _MAX_SCENE_DEPTH:
+        raise ParseError.make(source, f"depth {depth}", f"nests deeper than {_MAX_SCENE_DEPTH} levels")
+    items = x.items() if isinstance(x, dict) else enumerate(x)
+    for k, v in items:
+        where = (f"{path}.{k}" if path else str(k)) if isinstance(x, dict) else f"{path}[{k}]"
+        _check_nesting(v, source, where, depth + 1, on_path + (id(x),))
 
 
 def _jsonable(x, path):

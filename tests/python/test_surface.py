@@ -2,6 +2,7 @@
 lists, what does not pickle, and G's pieces against a second method."""
 
 import inspect
+import json
 import itertools
 import pickle
 from fractions import Fraction as F
@@ -106,14 +107,41 @@ def test_a_region_refuses_to_pickle_and_says_what_to_send_instead():
         pickle.dumps(r)
 
 
-def test_a_scene_dict_nested_past_the_recursion_limit_is_an_input_error():
+def _nested(depth):
     d = x = {}
-    for _ in range(100_000):
+    for _ in range(depth - 1):
         x["a"] = {}
         x = x["a"]
+    return d
+
+
+def test_a_scene_dict_nested_too_deeply_gets_the_loaders_own_parse_error_at_any_depth():
+    from fixel import _fixel
+
+    # The scene loader's message for the same text (second method).
+    with pytest.raises(fixel.ParseError) as loader:
+        _fixel.parse_scene(json.dumps(_nested(65)), "deep", None)
+    for depth in (65, 400, 100_000):  # 65 to about 490 once reached the loader, deeper a RecursionError
+        with pytest.raises(fixel.ParseError) as e:
+            fixel.Scene.from_dict(_nested(depth), source="deep")
+        # The first level past 64 is named, as the loader names it.
+        assert (e.value.field, e.value.value) == ("deep", "depth 65")
+        assert str(e.value) == str(loader.value) == "deep: depth 65 nests deeper than 64 levels"
+    with pytest.raises(fixel.SceneError):  # 64 levels pass the nesting check: the scene itself is wrong
+        fixel.Scene.from_dict(_nested(64), source="deep")
+
+
+def test_a_scene_dict_that_contains_itself_is_named_where():
+    d = json.loads((SCENE_DIR / "polygon.json").read_text())
+    d["fixels"][1]["extra"] = d["fixels"]
     with pytest.raises(fixel.InputError) as e:
-        fixel.Scene.from_dict(d, source="deep")
-    assert e.value.field == "deep" and "nested too deeply" in str(e.value)
+        fixel.Scene.from_dict(d, source="loop")
+    assert e.value.field == "fixels[1].extra" and e.value.value == "a list"
+    assert "contains itself" in str(e.value)
+    d["fixels"][1]["extra"] = {}
+    d["self"] = d
+    with pytest.raises(fixel.InputError, match="^self: a dict contains itself"):
+        fixel.Scene.from_dict(d, source="loop")
 
 
 def test_a_region_copies_shallowly_and_shares_its_core():
