@@ -125,6 +125,7 @@ ApproachSet approach_set(const Scene& scene, const SustainedSet& J) {
   const SeatedPose& q = J.pose;
   A.theta_star = q.approx[2];
   if (!J.data) throw InputError("J", "", "has no data (default-constructed SustainedSet)");
+  internal::check_built_from(*J.data, scene, "J");
   // J of another scene (its shape, at least): J' reads the scene's outline at J's contacts.
   if (scene.body.dof != 3 || !scene.body.boundary)
     throw SceneError(scene.body.dof != 3 ? "body.dof" : "body.boundary", scene.body.dof != 3 ? "2" : "",

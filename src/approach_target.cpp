@@ -118,6 +118,7 @@ std::unique_ptr<RegionTarget> approach_target(const ApproachSet& A) {
   }
   in->data = std::move(d_in);
   out->data = std::move(d_out);
+  in->built_from = A.J.data->built_from;  // J′ answers for J's scene
   return internal::sustained_target(std::move(in), std::move(out), A.empty);
 }
 

@@ -267,6 +267,9 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
     return answer;
   }
 
+  // S exactly (G's pieces carry no scene: G itself is checked by shape).
+  void check_scene(const Scene& scene) const override { check_seating_set_of(scene, S_); }
+
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)
       throw UnsupportedError("RegionOptions.pusher_mu", to_string(mu),

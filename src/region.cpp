@@ -333,6 +333,7 @@ void check_region_scene(const Scene& scene) {
 
 void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {
   check_region_scene(scene);
+  target.check_scene(scene);
   target.check_pusher(mu);
   if (mu < 0) throw InputError("RegionOptions.pusher_mu", to_string(mu), "must be >= 0");
 }
@@ -346,7 +347,8 @@ bool in_half_line(const RegionTarget& target, const RegionInterval& r) {
 
 std::unique_ptr<RegionTarget> step_target(const Scene& scene, const SeatingSet& S, const GuaranteedSet* G) {
   check_region_scene(scene);  // before a target is built from S: a point mass's S has two dimensions
-  check_seating_set_of(scene, S);
+  // S against the scene: the target's check_scene, which every region,
+  // point and sample function asks first (once, not here too).
   if (G) return guaranteed_target(*G, S, scene.background_impulse);
   return seating_target(S, scene.background_impulse);
 }

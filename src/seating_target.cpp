@@ -248,6 +248,8 @@ class SeatingTarget final : public RegionTarget, public internal::IntervalTarget
     for (const auto& h : S.halfspaces) beta_.push_back(h.c - h.a.dot(b0));
   }
 
+  void check_scene(const Scene& scene) const override { check_seating_set_of(scene, S_); }
+
   // ray_magnitudes(S, b0, g) with β_k = c_k − a_k·b0 computed once.
   Magnitudes magnitudes(const VectorQ& g) const {
     Magnitudes m;

@@ -190,6 +190,7 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
   }
   const char* push_model() const override { return "sustained"; }
   const char* name() const override { return out_ || empty_ ? "J'" : "J"; }
+  void check_scene(const Scene& scene) const override { check_built_from(*d_, scene, name()); }
 
   // The region's interval pre-test (exact q* only): segments and points
   // decided on enclosures of J's rows and of the wrench cone, with the

@@ -145,11 +145,17 @@ Rational inside(const ApproachSet& A, int k, int n) {
 }
 
 // J of another scene: example2 has no outline for J' to read (it
-// segfaulted); a J with other fixels is refused by its count.
+// segfaulted); a J with other fixels is refused too, each naming J.
 TEST(Approach, AJOfAnotherSceneIsAnErrorNotACrash) {
   const Scene polygon = test::scene_file("polygon");
   const SustainedSet J = sustained_set(polygon);
-  EXPECT_THROW(approach_set(test::scene_file("example2"), J), SceneError);
+  try {
+    approach_set(test::scene_file("example2"), J);
+    ADD_FAILURE() << "J of the polygon was taken beside example2";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "J");
+    EXPECT_NE(std::string(e.what()).find("its outline differs"), std::string::npos) << e.what();
+  }
   Scene fewer = polygon;
   fewer.fixels.pop_back();
   EXPECT_THROW(approach_set(fewer, J), InputError);

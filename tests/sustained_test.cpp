@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "filter_test_util.h"
+#include "fixel/approach.h"
 #include "fixel/cone.h"
 #include "fixel/error.h"
 #include "fixel/internal/exact_lu.h"
@@ -472,6 +473,71 @@ GTEST_TEST(SustainedRegion, IsSoundByExactSamplingOnThePolygon) {
     EXPECT_GT(in, 0);
     EXPECT_GT(out, 0);
   }
+}
+
+// A target answers for the scene its set was built from. J of the polygon
+// asked about the polygon with one gap changed (same name, same shape, a
+// seat turned by another angle) gave that other seat's region silently; the
+// region, point and sample functions now refuse it naming J and what
+// differs, and J′ and S the same way. An equal scene (read again) passes
+// and gives the same region, and so does one that differs only where J
+// does not look (the step's h and velocity).
+GTEST_TEST(SustainedRegion, ATargetOfAnotherSceneIsRefusedNamingItsSet) {
+  const Scene polygon = scene_file("polygon");
+  Scene moved = polygon;
+  moved.fixels[0].gap = Rational(1, 5);
+  const SustainedSet J = sustained_set(polygon);
+  const auto target = sustained_target(J);
+  RegionOptions options;
+  options.resolution = Rational(1, 64);
+  // What the refusal protects: J of `moved` has another region there.
+  const auto own = sustained_target(sustained_set(moved));
+  const Region polygon_region = compute_region(polygon, *target, options);
+  const Region moved_region = compute_region(moved, *own, options);
+  bool differs = polygon_region.intervals.size() != moved_region.intervals.size();
+  for (std::size_t i = 0; !differs && i < moved_region.intervals.size(); ++i)
+    differs = polygon_region.intervals[i].u1 != moved_region.intervals[i].u1 ||
+              polygon_region.intervals[i].status != moved_region.intervals[i].status;
+  EXPECT_TRUE(differs);
+  auto refused = [](const std::function<void()>& f, const std::string& field) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), field);
+      EXPECT_NE(std::string(e.what()).find("built from scene \"polygon\" belongs to another scene than \"polygon\": "
+                                           "fixels[0] (its point, normal, gap or friction) differs"),
+                std::string::npos)
+          << e.what();
+      return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused([&] { compute_region(moved, *target, options); }, "J"));
+  EXPECT_TRUE(refused([&] { point_status(moved, *target, 0, Rational(5, 2), Rational(0)); }, "J"));
+  EXPECT_TRUE(refused([&] { sample_region(moved, *target, 4); }, "J"));
+  EXPECT_TRUE(refused([&] { approach_set(moved, J); }, "J"));
+  const auto j_prime = approach_target(approach_set(polygon, J));
+  EXPECT_TRUE(refused([&] { compute_region(moved, *j_prime, options); }, "J'"));
+  // S is checked exactly against the scene (its own message).
+  const auto s_target = seating_target(seating_set(polygon), polygon.background_impulse);
+  try {
+    compute_region(moved, *s_target, options);
+    ADD_FAILURE() << "S of another scene was not refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "S");
+  }
+  // The same scene read again passes, with the same answer.
+  const Scene again = scene_file("polygon");
+  const Region same = compute_region(again, *target, options);
+  ASSERT_EQ(same.intervals.size(), polygon_region.intervals.size());
+  for (std::size_t i = 0; i < same.intervals.size(); ++i)
+    EXPECT_EQ(same.intervals[i].status, polygon_region.intervals[i].status);
+  EXPECT_NO_THROW(compute_region(again, *j_prime, options));
+  Scene other_step = polygon;
+  other_step.time_step = Rational(1, 100);
+  other_step.body.velocity = v3(0, -1, 0);
+  EXPECT_NO_THROW(compute_region(other_step, *target, options));
+  EXPECT_NO_THROW(compute_region(again, *s_target, options));
 }
 
 GTEST_TEST(SustainedRegion, AFrictionalPusherInIsInForTheWholeFan) {

@@ -70,6 +70,15 @@ class RegionTarget {
   /// Throws if the target cannot answer for a pusher with friction `mu`.
   virtual void check_pusher(const Rational& mu) const { (void)mu; }
 
+  /// Throws InputError (naming the set: "S", "J" or "J'") when the target's
+  /// set was built from another scene than `scene`, whose region or points
+  /// it would otherwise answer for silently. The region, point and sample
+  /// functions call it first. fixel's targets check S exactly against the
+  /// scene (check_seating_set_of), and J and J′ against the scene they were
+  /// built from where J looks (outline, centre of mass, mass, inertia,
+  /// fixels); the default accepts every scene.
+  virtual void check_scene(const Scene& scene) const { (void)scene; }
+
   /// The target's answers on interval enclosures (fixel's own targets; internal),
   /// or null: the region code then asks only the exact questions above.
   virtual internal::IntervalTarget* interval_target() { return nullptr; }

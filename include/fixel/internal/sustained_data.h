@@ -4,6 +4,7 @@
 // for polyline contacts or certified intervals for curved ones.
 
 #include <array>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -39,6 +40,10 @@ struct Data {
 
 struct SustainedData {
   std::variant<Data<Q2>, Data<IV>> data;
+  // The scene J was built from: a region or J′ asked of a scene that
+  // differs where J looks is refused (check_built_from). Null for the
+  // design's internal J: not checked.
+  std::shared_ptr<const Scene> built_from;
 };
 
 // Whether w lies in the closed jam cone.
@@ -51,6 +56,11 @@ bool in_jam(const typename Data<NT>::Jam& jam, const A3<NT>& w) {
 // the part's axes, moment about its centre of mass), "" when it is in J:
 // J.why_not of its world-frame form R(θ*)·w_B, without leaving Q(√d).
 std::string why_not_in_frame_B(const SustainedSet& J, const VectorQ& w_B);
+
+// InputError naming `field` ("J" or "J'") unless `scene` equals the scene
+// the data was built from where J looks: the outline, the centre of mass,
+// mass and inertia, and each fixel's point, normal, gap and friction.
+void check_built_from(const SustainedData& data, const Scene& scene, const char* field);
 
 inline std::string fixel_name(int i) { return "fixels[" + std::to_string(i) + "]"; }
 
