@@ -105,6 +105,7 @@ GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl
     G.pieces = std::move(next);
   }
   for (const auto& piece : G.pieces) G.dimensions.push_back(affine_dimension(piece));
+  G.built_from = std::make_shared<const Scene>(scene);
   return G;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <random>
 
@@ -246,6 +247,46 @@ GTEST_TEST(GuaranteedRegion, IsOutWhereverTheOrdinaryRegionIsOutWhenB0IsTheApexO
     EXPECT_EQ(exact_g.intervals[i].status, against_g.intervals[i].status);
   }
   EXPECT_GT(out_tests.certified, out_tests.fallbacks);
+}
+
+// G records its scene. With every gap 0 and the part at rest, S's apex is
+// 0 whatever the mass, so a heavier part has the same S and its check
+// passes; G's non-seating sets come from the step LCP, which the mass
+// enters, so G of the lighter part is refused beside the heavier one,
+// naming G and what differs.
+GTEST_TEST(GuaranteedRegion, AGOfAnotherSceneIsRefusedNamingGWhereItsSPasses) {
+  Scene scene = scene_file("polygon");
+  for (auto& f : scene.fixels) f.gap = 0;
+  const SeatingSet S = seating_set(scene);
+  const GuaranteedSet G = guaranteed_set(scene, S);
+  Scene heavier = scene;
+  heavier.body.mass *= 2;
+  heavier.body.mass_from_area = false;
+  EXPECT_NO_THROW(check_seating_set_of(heavier, S));
+  RegionOptions opt;
+  opt.resolution = Rational(1, 16);
+  opt.guaranteed = &G;
+  auto refused = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "G");
+      EXPECT_NE(std::string(e.what()).find("belongs to another scene than \"polygon\": its mass or inertia differs"),
+                std::string::npos)
+          << e.what();
+      return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused([&] { compute_region(heavier, S, opt); }));
+  EXPECT_TRUE(refused([&] { point_status(heavier, S, 0, Rational(5, 2), 0, nullptr, &G); }));
+  EXPECT_TRUE(refused([&] { guaranteed_target(G, S, heavier.background_impulse)->check_scene(heavier); }));
+  EXPECT_NO_THROW(compute_region(scene, S, opt));
+  // A G built by hand records no scene and is not checked.
+  GuaranteedSet by_hand = G;
+  by_hand.built_from = nullptr;
+  opt.guaranteed = &by_hand;
+  EXPECT_NO_THROW(compute_region(heavier, S, opt));
 }
 
 GTEST_TEST(GuaranteedRegion, RayMagnitudesAgainstGAreTheExactUnionOfIntervals) {

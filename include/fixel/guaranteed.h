@@ -3,6 +3,7 @@
 /// Past the paper: impulses whose every one-step outcome seats the part
 /// (LCP nonuniqueness, paper §6), and the seat-and-stay set (paper §3.3).
 
+#include <memory>
 #include <vector>
 
 #include "fixel/outcomes.h"
@@ -36,6 +37,12 @@ struct GuaranteedSet {
   std::vector<int> dimensions;
   /// Exact membership: p ∈ S and p in no non-seating set.
   bool contains(const VectorQ& p_ext, const SeatingSet& S) const;
+  /// The scene G was built from (set by guaranteed_set; null for a G built
+  /// by hand, which is then not checked): a region, sample or point test
+  /// against G refuses a scene that differs where G looks (h, dof, mass,
+  /// inertia, centre of mass, velocity, each fixel's point, normal, gap and
+  /// friction) with an InputError naming G.
+  std::shared_ptr<const Scene> built_from;
 };
 
 /// {τ > 0 : b0 + τ g ∈ G} exactly, as disjoint intervals in increasing order
