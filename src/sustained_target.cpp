@@ -265,6 +265,12 @@ class SustainedTarget final : public RegionTarget, public IntervalTarget {
       const bool in = std::visit([&](const auto& d) { return cone_in_J(d, gens, stats); }, d_->data);
       return in ? RegionStatus::kIn : RegionStatus::kOut;
     } catch (const Undecided&) {
+      // The enclosure of q* cannot show the cone inside J. One ray of it
+      // certainly outside J (the region's OUT test, on that ray) still makes
+      // the point OUT; without this the point stayed PARTIAL where the
+      // region, testing whole segments, proved OUT.
+      for (const VectorQ& g : gens)
+        if (misses({g})) return RegionStatus::kOut;
       return RegionStatus::kPartial;
     }
   }

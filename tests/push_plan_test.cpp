@@ -158,6 +158,51 @@ GTEST_TEST(PushPlan, AtACornerSaysWhatSsOutAndGsPartialMean) {
       << text;
 }
 
+// On curved contacts (q* only enclosed) the point test of J could not
+// show the push inside J and said PARTIAL, where the region, testing the
+// segment, proved OUT. It now asks the region's OUT test of each ray.
+// Second method: the region's own interval around the point.
+GTEST_TEST(PushPlan, OnCurvedContactsJsOutIsTheRegionsOut) {
+  const Scene scene = test::scene_file("example2_rounded");
+  const SustainedSet J = sustained_set(scene);
+  ASSERT_FALSE(J.pose.exact.has_value());  // the enclosed seat: the case at hand
+  RegionOptions opt;
+  opt.resolution = Rational(1, 128);
+  const Region region = compute_region(scene, *sustained_target(J), opt);
+  int checked = 0;
+  for (const Rational u : {Rational(39, 64), Rational(1, 4), Rational(3, 4)}) {
+    const PushPlan plan = plan_push(scene, 3, u, false);
+    ASSERT_TRUE(plan.in_J.has_value());
+    for (const auto& r : region.intervals)
+      if (r.curve == 3 && r.u0 < u && u < r.u1 && r.status != RegionStatus::kPartial) {
+        EXPECT_EQ(*plan.in_J, r.status) << to_string(u);
+        ++checked;
+      }
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+// push-plan judges a frictionless finger whatever the scene's pusher μ,
+// and says so, with both μ in its JSON: on fig6 (pusher μ 1/5) region and
+// sample judge the friction fan and can say OUT where the plan says IN.
+GTEST_TEST(PushPlan, SaysItIgnoresTheScenesPusherFriction) {
+  const Scene scene = test::scene_file("fig6");
+  ASSERT_EQ(scene.pusher_mu_upper(), Rational(1, 5));
+  const PushPlan plan = plan_push(scene, 0, Rational(9), false);
+  const std::string text = push_plan_text(scene, plan);
+  EXPECT_NE(
+      text.find("pusher: a frictionless finger pushing along the normal; the scene's pusher mu = 1/5 = 0.2 is not "
+                "used here"),
+      std::string::npos)
+      << text;
+  const auto doc = nlohmann::json::parse(push_plan_json(scene, plan));
+  EXPECT_EQ(doc.at("pusher_mu"), "0");
+  EXPECT_EQ(doc.at("scene_pusher_mu"), "1/5");
+  const Scene frictionless = test::scene_file("polygon");
+  EXPECT_EQ(push_plan_text(frictionless, plan_push(frictionless, 0, Rational(5, 2), false)).find("pusher:"),
+            std::string::npos);
+}
+
 // push-plan --guaranteed gives G's magnitude window at a point (a point
 // test used to leave it empty, and the report said "no single certified
 // window"). Checked against G itself: an impulse b0 + τg whose |p| = τ|d|
