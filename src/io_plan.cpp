@@ -47,6 +47,10 @@ std::string push_plan_json(const Scene& scene, const PushPlan& plan) {
   doc["normal"] = {to_string(plan.normal_A.x), to_string(plan.normal_A.y)};
   doc["corner"] = plan.corner;
   doc["wrench_direction"] = exact_json(plan.wrench_direction);
+  // The plan is for a frictionless finger along the normal whatever the
+  // scene's pusher μ (which region and sample use): both are stated.
+  doc["pusher_mu"] = "0";
+  doc["scene_pusher_mu"] = to_string(scene.pusher_mu_upper());
   json one = {{"meaning", "one-step: can seat"},
               {"status", to_string(plan.in_S)},
               {"magnitudes", window_json(plan.magnitudes_S)}};
@@ -104,6 +108,11 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
                         "for the whole fan"
                       : "")
       << "\n";
+  if (scene.pusher_mu_upper() != 0)
+    out << "  pusher: a frictionless finger pushing along the normal; the scene's pusher mu = "
+        << internal::readable(scene.pusher_mu_upper())
+        << " is not used here (`region` and `sample` use it: their pushes fan out over its friction cone, so they "
+           "can say out where this plan, for the normal push alone, says in)\n";
   out << "  wrench direction g = " << internal::readable(plan.wrench_direction)
       << " (force, moment about the centre of mass, frame A: N*s and N*m*s for the one-step impulse, N and N*m for "
          "a held push; a direction: its length comes from the curve's parametrization, and |p| below is the size of "

@@ -224,7 +224,7 @@ Region internal::compute_region_joined(const Scene& scene, RegionTarget& target,
   const ExactTask task("region");
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = options.pusher_mu.value_or(internal::default_pusher_mu(scene, target));
-  internal::check_region_inputs(scene, mu, target);
+  internal::check_region_inputs(scene, mu, target, !options.pusher_mu);
   check_options(options);
   Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
   const std::vector<Rational> widths = piece_widths(*scene.body.boundary, options);
@@ -300,7 +300,7 @@ namespace internal {
 bool region_reaches(const Scene& scene, RegionTarget& target, const RegionOptions& options,
                     const std::vector<Join>* given_joins) {
   const Rational mu = options.pusher_mu.value_or(default_pusher_mu(scene, target));
-  check_region_inputs(scene, mu, target);
+  check_region_inputs(scene, mu, target, !options.pusher_mu);
   check_options(options);
   Context ctx{scene, target, mu, options.cone, options.resolution, RegionStats{}, options.control};
   ctx.stop_at_reach = true;
@@ -331,10 +331,20 @@ void check_region_scene(const Scene& scene) {
   check_scene_values(scene);
 }
 
-void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target) {
+void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target, bool mu_from_scene) {
   check_region_scene(scene);
   target.check_scene(scene);
-  target.check_pusher(mu);
+  try {
+    target.check_pusher(mu);
+  } catch (const UnsupportedError& e) {
+    if (!mu_from_scene) throw;
+    // what() is "field: value reason": keep the reason, name the scene's field.
+    std::string reason = e.what();
+    const std::string prefix = e.field() + ": " + e.value() + " ";
+    if (reason.rfind(prefix, 0) == 0) reason.erase(0, prefix.size());
+    throw UnsupportedError("pusher.mu", e.value(),
+                           reason + "; it is the scene's pusher friction, taken when no pusher mu is given");
+  }
   if (mu < 0) throw InputError("RegionOptions.pusher_mu", to_string(mu), "must be >= 0");
 }
 

@@ -133,7 +133,7 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   const internal::ExactTask task("sample");
   const auto start = std::chrono::steady_clock::now();
   const Rational mu = pusher_mu.value_or(internal::default_pusher_mu(scene, target));
-  internal::check_region_inputs(scene, mu, target);
+  internal::check_region_inputs(scene, mu, target, !pusher_mu);
   // Bounded, as every loop whose length the caller sets: a million points
   // of one curve is far beyond any resolution a region needs.
   if (points_per_curve <= 0 || points_per_curve > 1000000)

@@ -77,6 +77,8 @@ expect 0 'guaranteed_0.off' -- "$fixel" dump "$src/data/scenes/nonunique.json" -
 expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --json
 expect 0 '"magnitude_intervals"' -- "$fixel" sample "$src/data/scenes/nonunique_part.json" --guaranteed --points 8 --json
 expect 2 'with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
+# fig6's own pusher mu: the error names the scene's field, not --pusher-mu.
+expect 2 "fixel: error: pusher.mu: 1/5 with --guaranteed is not supported" -- "$fixel" sample "$src/data/scenes/fig6.json" --guaranteed --points 4
 expect 0 'wrote' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
 grep -q "seating set S (one-step: can seat)" "$tmp/x.svg" || { echo "FAIL: seat --svg without G"; fail=1; }
 # push (Box2D) and region --validate: docs/physics.md.

@@ -449,7 +449,35 @@ GTEST_TEST(GuaranteedRegion, FrictionalPusherIsAClearNotSupportedError) {
   RegionOptions opt;
   opt.guaranteed = &G;
   opt.pusher_mu = Rational(1, 5);
-  EXPECT_THROW(compute_region(scene, S, opt), UnsupportedError);
+  try {
+    compute_region(scene, S, opt);
+    ADD_FAILURE() << "a frictional pusher was taken with G";
+  } catch (const UnsupportedError& e) {
+    EXPECT_EQ(e.field(), "RegionOptions.pusher_mu");
+  }
+  // The same μ from the scene (none given) names the scene's field, so the
+  // CLI does not name an option the user never gave.
+  Scene frictional = scene;
+  frictional.pusher_mu = Rational(1, 5);
+  const SeatingSet S2 = seating_set(frictional);
+  const GuaranteedSet G2 = guaranteed_set(frictional, S2);
+  opt.guaranteed = &G2;
+  opt.pusher_mu.reset();
+  for (int sample = 0; sample < 2; ++sample) {
+    try {
+      if (sample)
+        sample_region(frictional, *guaranteed_target(G2, S2, frictional.background_impulse), 4);
+      else
+        compute_region(frictional, S2, opt);
+      ADD_FAILURE() << "a frictional pusher was taken with G";
+    } catch (const UnsupportedError& e) {
+      EXPECT_EQ(e.field(), "pusher.mu");
+      EXPECT_EQ(std::string(e.what()),
+                "pusher.mu: 1/5 with --guaranteed is not supported: G is not convex, so the two friction edges "
+                "hitting G does not make every push direction between them hit G (use a frictionless pusher); it is "
+                "the scene's pusher friction, taken when no pusher mu is given");
+    }
+  }
 }
 
 // The CLI's --max-seconds and Ctrl-C reach the construction of G: a

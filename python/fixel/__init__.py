@@ -486,7 +486,9 @@ def push(
 def push_plan(scene, at, guaranteed=False, max_seconds=None):
     """How hard to push at one boundary point (``fixel push-plan``):
     ``at="K:U"`` is parameter U (exact) of curve K, pushed by a frictionless
-    finger along the inward normal at the scene pose. Returns the ``fixel
+    finger along the inward normal at the scene pose, whatever the scene's
+    pusher mu (region uses it; "pusher_mu" and "scene_pusher_mu" say
+    which). Returns the ``fixel
     push-plan --json`` document as a dict: "one_step" (S: status and the
     window of |p|), "guaranteed" (G, with ``guaranteed=True``; dof 3),
     "sustained" (J's status, and "approach": the exact verdict of the

@@ -40,7 +40,10 @@ const std::vector<EdgeFamily>& families(const Rational& mu);
 void check_region_scene(const Scene& scene);
 
 // The checks every region run makes first (InputError, SceneError).
-void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target);
+// `mu_from_scene`: mu is the scene's pusher friction (the caller gave
+// none), so a target's refusal of it names the scene's field, pusher.mu.
+void check_region_inputs(const Scene& scene, const Rational& mu, const RegionTarget& target,
+                         bool mu_from_scene = false);
 
 // A push is judged at the upper end of the pusher's friction interval: the
 // set of push directions grows with μ_p, so the region shrinks
