@@ -60,14 +60,10 @@ int main(int argc, char** argv) {
                                       "--mu", "--time", "--dump"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--random")
-      random_parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--samples")
-      samples = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--region-pushes")
-      region_pushes = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--plan-points")
-      plan_points = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--random") random_parts = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--samples") samples = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--region-pushes") region_pushes = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--plan-points") plan_points = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--gap")
       gap = static_cast<int>(

@@ -79,17 +79,12 @@ int main(int argc, char** argv) {
        "--recheck"});
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--parts")
-      parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--rounded")
-      rounded = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--parts") parts = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--rounded") rounded = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--bundled") bundled = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, 1));
-    if (a == "--candidates")
-      ncand = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--top")
-      top = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--pushes")
-      pushes = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--candidates") ncand = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--top") top = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--pushes") pushes = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
     if (a == "--dump") dump = argv[i + 1];

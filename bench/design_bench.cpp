@@ -149,13 +149,13 @@ int main(int argc, char** argv) {
     if (a == "--part")
       part_name = next();
     else if (a == "--candidates")
-      n = static_cast<int>(fixel::bench::study_int(a.c_str(), next().c_str(), 0, fixel::bench::kMaxStudyCount));
+      n = fixel::bench::study_count(a.c_str(), next().c_str());
     else if (a == "--resolution")
       resolution = next();
     else if (a == "--jobs")
       jobs = static_cast<int>(fixel::bench::study_int(a.c_str(), next().c_str(), 0, 256));
     else if (a == "--top")
-      top = static_cast<int>(fixel::bench::study_int(a.c_str(), next().c_str(), 0, fixel::bench::kMaxStudyCount));
+      top = fixel::bench::study_count(a.c_str(), next().c_str());
     else if (a == "--stages")
       want_stages = true;
     else if (a == "--parts")

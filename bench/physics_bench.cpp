@@ -107,10 +107,8 @@ int main(int argc, char** argv) {
                                  fixel::bench::with_engine_args({"--samples", "--random", "--seed", "--time"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--samples")
-      samples = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
-    if (a == "--random")
-      random_parts = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, fixel::bench::kMaxStudyCount));
+    if (a == "--samples") samples = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--random") random_parts = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
   }

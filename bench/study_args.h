@@ -72,6 +72,11 @@ inline fixel::Rational study_positive_rational(const char* name, const char* tex
 // A count of samples, pushes, parts or candidates.
 inline constexpr long long kMaxStudyCount = 1000000;
 
+// A count option's value: a whole number from 0 to kMaxStudyCount.
+inline int study_count(const char* name, const char* text) {
+  return static_cast<int>(study_int(name, text, 0, kMaxStudyCount));
+}
+
 // The engine's accuracy, as `fixel push` takes it (docs/physics.md, "Engine
 // settings"): pass kEngineArgs to check_study_args beside a study's own
 // names, then read them into its PushOptions. Each value is checked here,
