@@ -31,6 +31,10 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& paths)
 
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length, const GuaranteedSet* G) {
+  if (G)
+    check_guaranteed_set_of(scene, S, *G);
+  else
+    check_seating_set_of(scene, S);
   internal::make_output_folder(dir, "dump_off(directory)");
   const Box box = seating_dump_box(S, length);
   std::vector<Halfspace> hs = S.halfspaces;

@@ -44,24 +44,6 @@ bool cone_misses_piece(const VectorQ& b0, RegionStats* stats, const std::vector<
   return is_empty(lifted);
 }
 
-// What of the one-step model's inputs differs between two scenes, "" when
-// none does (the outline is not among them: G lives in impulse space).
-std::string step_inputs_differ(const Scene& a, const Scene& b) {
-  auto same = [](const Vec2& p, const Vec2& q) { return p.x == q.x && p.y == q.y; };
-  if (a.body.dof != b.body.dof || a.time_step != b.time_step) return "its dof or time step";
-  if (a.body.mass != b.body.mass || a.body.inertia != b.body.inertia) return "its mass or inertia";
-  if (!same(a.body.p_AoCm_A, b.body.p_AoCm_A)) return "its centre of mass";
-  if (a.body.velocity.size() != b.body.velocity.size() || a.body.velocity != b.body.velocity) return "its velocity";
-  if (a.fixels.size() != b.fixels.size()) return "its number of fixels";
-  for (std::size_t i = 0; i < a.fixels.size(); ++i) {
-    const Fixel &f = a.fixels[i], &g = b.fixels[i];
-    if (!same(f.p_AoF_A, g.p_AoF_A) || !same(f.n_A, g.n_A) || f.gap != g.gap || f.mu != g.mu ||
-        f.mu_upper() != g.mu_upper())
-      return "fixels[" + std::to_string(i) + "] (its point, normal, gap or friction)";
-  }
-  return "";
-}
-
 using internal::certain_sign;
 using internal::FI;
 using internal::kUndecided;
@@ -285,16 +267,7 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
     return answer;
   }
 
-  // S exactly, then G against the scene it was built from.
-  void check_scene(const Scene& scene) const override {
-    check_seating_set_of(scene, S_);
-    if (!G_.built_from) return;
-    const std::string differs = step_inputs_differ(*G_.built_from, scene);
-    if (!differs.empty())
-      throw InputError(
-          "G", "built from scene \"" + G_.built_from->name + "\"",
-          "belongs to another scene than \"" + scene.name + "\": " + differs + " differs; build it from this scene");
-  }
+  void check_scene(const Scene& scene) const override { check_guaranteed_set_of(scene, S_, G_); }
 
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)

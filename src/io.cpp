@@ -157,6 +157,10 @@ std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
 }  // namespace
 
 std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport& report, const GuaranteedSet* G) {
+  if (G)
+    check_guaranteed_set_of(scene, S, *G);
+  else
+    check_seating_set_of(scene, S);
   json doc;
   doc["scene"] = scene.name;
   doc["dof"] = S.dof;
@@ -187,6 +191,10 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport&
 static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const SeatReport& report);
 
 std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport& report, const GuaranteedSet* G) {
+  if (G)
+    check_guaranteed_set_of(scene, S, *G);
+  else
+    check_seating_set_of(scene, S);
   return seat_basic_text(scene, S, report) + seat_extras_text(report, G);
 }
 

@@ -11,6 +11,7 @@
 #include "fixel/internal/file_write.h"
 #include "fixel/internal/json_approx.h"
 #include "fixel/internal/off_sidecar.h"
+#include "fixel/internal/sustained_data.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
 #include "fixel/progress.h"
@@ -155,9 +156,20 @@ nlohmann::ordered_json internal::approach_json(const ApproachSet& A, const std::
   return out;
 }
 
+namespace {
+
+// J, and J′ through the J it refines, against the scene being written.
+void check_sets_of(const Scene& scene, const SustainedSet& J, const ApproachSet* approach) {
+  if (J.data) internal::check_built_from(*J.data, scene, "J");
+  if (approach && approach->J.data) internal::check_built_from(*approach->J.data, scene, "J'");
+}
+
+}  // namespace
+
 std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench,
                            bool with_seating) {
+  check_sets_of(scene, J, approach);
   json doc = json::object();
   if (with_seating) {
     try {
@@ -244,6 +256,7 @@ std::string seated_pose_json(const SeatedPose& q) {
 
 std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach, const std::optional<ApproachVerdict>& approach_wrench) {
+  check_sets_of(scene, J, approach);
   std::ostringstream out;
   const SeatedPose& q = J.pose;
   out << "Sustained push on scene \"" << scene.name << "\": the wrench set J at the seated pose q*\n";
@@ -358,6 +371,7 @@ std::vector<std::string> write_cone_off(const std::string& dir, const std::strin
 }  // namespace
 
 std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir) {
+  check_sets_of(scene, J, nullptr);
   internal::make_output_folder(dir, "dump_sustained_off(directory)");
   auto meta = [&](const std::string& what, const std::string& description) {
     return json{{"what", what},

@@ -92,6 +92,7 @@ CurvePoint parse_curve_point(const Scene& scene, const std::string& text, const 
 }
 
 PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rational& pusher_mu) {
+  check_seating_set_of(scene, S);
   const double apex = std::hypot(to_double(S.apex[0]), to_double(S.apex[1]));
   const double h = to_double(scene.time_step);
   return [&scene, &S, pusher_mu, apex, h](const RegionInterval& iv, const Rational& u) {

@@ -9,6 +9,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/file_write.h"
+#include "fixel/internal/sustained_data.h"
 #include "fixel/internal/svg_region.h"
 #include "fixel/svg.h"
 
@@ -92,6 +93,10 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
 
 void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
                       const GuaranteedSet* G) {
+  if (G)
+    check_guaranteed_set_of(scene, S, *G);
+  else
+    check_seating_set_of(scene, S);
   Picture pic;
   const VectorQ& b0 = scene.background_impulse;
   if (region.target == "G" && G) {
@@ -117,6 +122,7 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
 
 void write_sustained_region_svg(const std::string& path, const Scene& scene, const SustainedSet& J,
                                 const Region& region) {
+  if (J.data) internal::check_built_from(*J.data, scene, "J");
   // Body-frame wrench w_B → world frame at q* (display only).
   const double th = J.pose.approx[2], c = std::cos(th), s = std::sin(th);
   auto rows = [](const std::vector<std::array<QuadraticIrrational, 3>>& v) {

@@ -517,5 +517,22 @@ GTEST_TEST(GuaranteedSet, AStoppedControlStopsTheConstructionWithItsCount) {
   }
 }
 
+// The check every consumer of G runs: S first (named S), then the scene G
+// was built from (named G, even where S passes); a G built by hand passes.
+GTEST_TEST(GuaranteedSet, ItsSceneCheckNamesSThenGAndPassesAGBuiltByHand) {
+  const test::SetCheckScenes s = test::set_check_scenes();
+  const SeatingSet S = seating_set(s.scene);
+  const GuaranteedSet G = guaranteed_set(s.scene, S);
+  EXPECT_EQ(test::input_error_of([&] { check_guaranteed_set_of(s.scene, S, G); }), "(no InputError)");
+  const std::string g = test::input_error_of([&] { check_guaranteed_set_of(s.heavier, S, G); });
+  EXPECT_EQ(g.rfind("G: ", 0), 0u) << g;
+  EXPECT_NE(g.find("its mass or inertia differs"), std::string::npos) << g;
+  const std::string s_named = test::input_error_of([&] { check_guaranteed_set_of(s.gapped, S, G); });
+  EXPECT_EQ(s_named.rfind("S: ", 0), 0u) << s_named;
+  GuaranteedSet by_hand = G;
+  by_hand.built_from = nullptr;
+  EXPECT_EQ(test::input_error_of([&] { check_guaranteed_set_of(s.heavier, S, by_hand); }), "(no InputError)");
+}
+
 }  // namespace
 }  // namespace fixel

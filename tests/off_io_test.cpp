@@ -116,5 +116,21 @@ GTEST_TEST(DumpOff, AFolderNamedDashIsRefusedAndNothingIsMade) {
   EXPECT_EQ(std::filesystem::exists("-"), existed);
 }
 
+// Refused before the folder is made: nothing is written.
+GTEST_TEST(DumpOff, AnSOrAGOfAnotherSceneIsRefusedNamingItAndNothingIsWritten) {
+  const test::SetCheckScenes s = test::set_check_scenes();
+  const SeatingSet S = seating_set(s.scene);
+  const GuaranteedSet G = guaranteed_set(s.scene, S);
+  const auto dir = std::filesystem::temp_directory_path() / "fixel_off_test_other_scene";
+  std::filesystem::remove_all(dir);
+  const std::string s_named = test::input_error_of([&] { dump_off(s.gapped, S, dir.string(), Rational(1)); });
+  EXPECT_EQ(s_named.rfind("S: ", 0), 0u) << s_named;
+  const std::string g_named = test::input_error_of([&] { dump_off(s.heavier, S, dir.string(), Rational(1), &G); });
+  EXPECT_EQ(g_named.rfind("G: ", 0), 0u) << g_named;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  EXPECT_EQ(dump_off(s.scene, S, dir.string(), Rational(1), &G).empty(), false);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fixel

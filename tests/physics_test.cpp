@@ -389,6 +389,15 @@ GTEST_TEST(Physics, APushWrenchAtANonFinitePoseNamesThePose) {
   }
 }
 
+// The model read S's apex and magnitudes against any scene's outline.
+GTEST_TEST(Physics, TheOneStepPushModelRefusesAnSOfAnotherSceneNamingS) {
+  const test::SetCheckScenes s = test::set_check_scenes();
+  const SeatingSet S = seating_set(s.scene);
+  const std::string e = test::input_error_of([&] { one_step_push_model(s.gapped, S, Rational(0)); });
+  EXPECT_EQ(e.rfind("S: ", 0), 0u) << e;
+  EXPECT_EQ(test::input_error_of([&] { one_step_push_model(s.scene, S, Rational(0)); }), "(no InputError)");
+}
+
 // blob32's one-step pushes are 4.55 engine steps long: every one warns, so
 // the seated ones that warned are all the seated ones.
 GTEST_TEST(Physics, ValidationCountsTheSeatedPushesThatWarned) {

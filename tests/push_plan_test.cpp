@@ -170,7 +170,7 @@ GTEST_TEST(PushPlan, OnCurvedContactsJsOutIsTheRegionsOut) {
   opt.resolution = Rational(1, 128);
   const Region region = compute_region(scene, *sustained_target(J), opt);
   int checked = 0;
-  for (const Rational u : {Rational(39, 64), Rational(1, 4), Rational(3, 4)}) {
+  for (const Rational& u : {Rational(39, 64), Rational(1, 4), Rational(3, 4)}) {
     const PushPlan plan = plan_push(scene, 3, u, false);
     ASSERT_TRUE(plan.in_J.has_value());
     for (const auto& r : region.intervals)
@@ -227,7 +227,9 @@ GTEST_TEST(PushPlan, GivesGsMagnitudeWindowAtAPointAndItsImpulsesAreInG) {
     const Rational tau(p_mid / std::sqrt(to_double(d2)));
     const Rational p2 = tau * tau * d2;
     ASSERT_GT(p2, m.lo * m.lo) << name;
-    if (m.hi) ASSERT_LT(p2, *m.hi * *m.hi) << name;
+    if (m.hi) {
+      ASSERT_LT(p2, *m.hi * *m.hi) << name;
+    }
     const SeatingSet S = seating_set(scene);
     const GuaranteedSet G = guaranteed_set(scene, S);
     EXPECT_TRUE(G.contains(VectorQ(scene.background_impulse + tau * g), S)) << name;

@@ -59,5 +59,18 @@ GTEST_TEST(SeatReport, WrenchVerdictAgreesWithJAndSaysWhyNot) {
   EXPECT_FALSE(zero.why_not.empty());
 }
 
+// It answered with the sets it was given, whatever their scene.
+GTEST_TEST(SeatReport, RefusesAnSOrAGOfAnotherSceneNamingIt) {
+  const test::SetCheckScenes s = test::set_check_scenes();
+  const SeatingSet S = seating_set(s.scene);
+  const GuaranteedSet G = guaranteed_set(s.scene, S);
+  const VectorQ p = test::v3(-1, -1, 0);
+  const std::string s_named = test::input_error_of([&] { seat_report(s.gapped, S, std::nullopt, nullptr, false); });
+  EXPECT_EQ(s_named.rfind("S: ", 0), 0u) << s_named;
+  const std::string g_named = test::input_error_of([&] { seat_report(s.heavier, S, p, &G, false); });
+  EXPECT_EQ(g_named.rfind("G: ", 0), 0u) << g_named;
+  EXPECT_EQ(test::input_error_of([&] { seat_report(s.scene, S, p, &G, false); }), "(no InputError)");
+}
+
 }  // namespace
 }  // namespace fixel

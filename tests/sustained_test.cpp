@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <functional>
 #include <random>
 #include <sstream>
@@ -482,6 +483,32 @@ GTEST_TEST(SustainedRegion, IsSoundByExactSamplingOnThePolygon) {
 // differs, and J′ and S the same way. An equal scene (read again) passes
 // and gives the same region, and so does one that differs only where J
 // does not look (the step's h and velocity).
+// The writers printed J's (or J′'s) numbers under another scene's name.
+GTEST_TEST(SustainedSet, ItsWritersRefuseAJOrJPrimeOfAnotherSceneNamingItAndWriteNothing) {
+  const Scene polygon = scene_file("polygon");
+  Scene moved = polygon;
+  moved.fixels[0].gap = Rational(1, 5);
+  const SustainedSet J = sustained_set(polygon), J_moved = sustained_set(moved);
+  const ApproachSet A = approach_set(polygon, J);
+  auto named = [](const std::function<void()>& call) {
+    const std::string e = test::input_error_of(call);
+    EXPECT_NE(e.find("belongs to another scene than \"polygon\": fixels[0]"), std::string::npos) << e;
+    return e.substr(0, e.find(':'));
+  };
+  EXPECT_EQ(named([&] { sustained_json(moved, J, std::nullopt); }), "J");
+  EXPECT_EQ(named([&] { sustained_text(moved, J, std::nullopt); }), "J");
+  EXPECT_EQ(named([&] { sustained_json(moved, J_moved, std::nullopt, &A, std::nullopt); }), "J'");
+  EXPECT_EQ(named([&] { sustained_text(moved, J_moved, std::nullopt, &A, std::nullopt); }), "J'");
+  const auto dir = std::filesystem::temp_directory_path() / "fixel_sustained_other_scene";
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(named([&] { dump_sustained_off(moved, J, dir.string()); }), "J");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // Each scene's own sets are written.
+  EXPECT_EQ(test::input_error_of([&] { sustained_json(polygon, J, std::nullopt, &A, std::nullopt); }),
+            "(no InputError)");
+  EXPECT_EQ(test::input_error_of([&] { sustained_text(moved, J_moved, std::nullopt); }), "(no InputError)");
+}
+
 GTEST_TEST(SustainedRegion, ATargetOfAnotherSceneIsRefusedNamingItsSet) {
   const Scene polygon = scene_file("polygon");
   Scene moved = polygon;

@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "fixel/error.h"
 #include "fixel/progress.h"
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
@@ -34,6 +35,16 @@ inline std::string stop_message(const std::function<void()>& call) {
     return e.what();
   }
   return "(no stop)";
+}
+
+// "field: message" of the InputError `call` throws ("(no InputError)" if none).
+inline std::string input_error_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const InputError& e) {
+    return e.field() + ": " + e.what();
+  }
+  return "(no InputError)";
 }
 
 // A control cancelled before the run: it stops at its first check.
@@ -65,6 +76,25 @@ inline VectorQ v3(Rational a, Rational b, Rational c) { return vec({a, b, c}); }
 // A bundled scene from data/scenes/ by name.
 inline Scene scene_file(const std::string& name) {
   return load_scene(std::string(FIXEL_SOURCE_DIR) + "/data/scenes/" + name + ".json");
+}
+
+// The polygon with every gap 0, and two scenes that differ from it: a
+// heavier part (its S is the polygon's, since S's apex stays 0, but G's
+// one-step model differs) and a gap at fixel 0 (S's apex moves). For the
+// tests that a set of another scene is refused, naming the set.
+struct SetCheckScenes {
+  Scene scene, heavier, gapped;
+};
+inline SetCheckScenes set_check_scenes() {
+  SetCheckScenes s;
+  s.scene = scene_file("polygon");
+  for (auto& f : s.scene.fixels) f.gap = 0;
+  s.heavier = s.scene;
+  s.heavier.body.mass *= 2;
+  s.heavier.body.mass_from_area = false;
+  s.gapped = s.scene;
+  s.gapped.fixels[0].gap = Rational(1, 10);
+  return s;
 }
 
 // Lemke's tableau data [A | b] = [I, −B, −e | b] of LCP(B, b) in rationals,

@@ -45,6 +45,15 @@ struct GuaranteedSet {
   std::shared_ptr<const Scene> built_from;
 };
 
+/// Throws InputError unless S is this scene's seating set
+/// (check_seating_set_of, naming `S`) and G was built from a scene that
+/// agrees with this one where G looks (h, dof, mass, inertia, centre of
+/// mass, velocity, each fixel's point, normal, gap and friction), naming
+/// `G` and what differs. A G built by hand (no `built_from`) passes. The
+/// region, sample and point tests, seat_report, dump_off and the SVG
+/// writers call it before using G.
+void check_guaranteed_set_of(const Scene& scene, const SeatingSet& S, const GuaranteedSet& G);
+
 /// {τ > 0 : b0 + τ g ∈ G} exactly, as disjoint intervals in increasing order
 /// (T_S minus the T_N of every non-seating set).
 std::vector<Magnitudes> ray_magnitudes(const GuaranteedSet& G, const SeatingSet& S, const VectorQ& b0,

@@ -27,11 +27,13 @@ namespace fixel {
 /// "lost_fraction"} and, with an impulse, "guaranteed". With `stable`:
 /// "stability_cone" and "seat_and_stay" (H-forms) and, with an impulse,
 /// "seat_and_stay_contains". Numbers are exact strings. `report` comes from
-/// seat_report(scene, S, impulse, G, stable) with the same G.
+/// seat_report(scene, S, impulse, G, stable) with the same G. Throws
+/// InputError naming S or G when they are not this scene's
+/// (check_guaranteed_set_of).
 std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport& report,
                       const GuaranteedSet* G = nullptr);
 
-/// The same content as a readable report.
+/// The same content as a readable report (the same checks).
 std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport& report,
                       const GuaranteedSet* G = nullptr);
 
@@ -44,7 +46,9 @@ std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport&
 /// is not pointed have no cone). Each `.off` file is standard OFF without
 /// comments, with its metadata in a JSON sidecar of the same stem (`X.json`,
 /// docs/formats.md). Returns the written paths, sidecars included.
-/// Throws InputError if the directory cannot be created or written.
+/// Throws InputError if the directory cannot be created or written, or,
+/// before anything is written, naming S or G when they are not this
+/// scene's (check_guaranteed_set_of).
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length, const GuaranteedSet* G = nullptr);
 
@@ -86,12 +90,13 @@ std::string region_text(const Scene& scene, const Region& region);
 /// With `with_seating` (the CLI's) the keys of `seat --json` for S come
 /// first, so the document adds J's keys to S's; when S cannot be built for
 /// the scene (a friction interval: the one-step model needs one value),
-/// "seating_unavailable" gives the reason instead.
+/// "seating_unavailable" gives the reason instead. Throws InputError naming
+/// J (or J') when it was built from a scene that differs where J looks.
 std::string sustained_json(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach = nullptr,
                            const std::optional<ApproachVerdict>& approach_wrench = std::nullopt,
                            bool with_seating = false);
-/// The same as a readable report.
+/// The same as a readable report (the same checks).
 std::string sustained_text(const Scene& scene, const SustainedSet& J, const std::optional<WrenchVerdict>& wrench,
                            const ApproachSet* approach = nullptr,
                            const std::optional<ApproachVerdict>& approach_wrench = std::nullopt);
@@ -104,7 +109,8 @@ std::string seat_rotation_note(const SeatedPose& q);
 /// rows rounded to double): `sustained_cone.off`, `sustained_jam_<i>_<j>.off`
 /// and `sustained_piece_<k>.off`, each with its JSON sidecar (as dump_off).
 /// Returns the written paths, sidecars included. Throws
-/// InputError if the directory cannot be created or written.
+/// InputError if the directory cannot be created or written, or, before
+/// anything is written, naming J when it is another scene's.
 std::vector<std::string> dump_sustained_off(const Scene& scene, const SustainedSet& J, const std::string& dir);
 /// The "seated_pose" object of sustained_json, as compact JSON text.
 std::string seated_pose_json(const SeatedPose& q);

@@ -181,7 +181,8 @@ using PushModel = std::function<Wrench(const RegionInterval& interval, const Rat
 /// midpoint of the interval's certified magnitudes when bounded, twice the
 /// lower end when unbounded (the apex norm |p_apex| when that end is 0), or
 /// the point's own magnitudes when the interval has none. The model keeps
-/// references to `scene` and `S`: both must outlive it.
+/// references to `scene` and `S`: both must outlive it. Throws InputError
+/// naming S when it is not this scene's (check_seating_set_of).
 PushModel one_step_push_model(const Scene& scene, const SeatingSet& S, const Rational& pusher_mu);
 
 /// The sustained-push model: the frictionless push wrench of

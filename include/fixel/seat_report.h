@@ -39,6 +39,8 @@ struct SeatReport {
 };
 
 /// Computes the report. `G` may be null; the impulse must have length dof.
+/// Throws InputError naming S or G when they are not this scene's
+/// (check_guaranteed_set_of).
 SeatReport seat_report(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
                        const GuaranteedSet* G, bool stable);
 
