@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--random") random_parts = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--samples") samples = fixel::bench::study_count(argv[i], argv[i + 1]);
-    if (a == "--region-pushes") region_pushes = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--region-pushes") region_pushes = fixel::bench::study_count(argv[i], argv[i + 1], 1);
     if (a == "--plan-points") plan_points = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--gap")

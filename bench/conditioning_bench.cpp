@@ -82,9 +82,9 @@ int main(int argc, char** argv) {
     if (a == "--parts") parts = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--rounded") rounded = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--bundled") bundled = static_cast<int>(fixel::bench::study_int(argv[i], argv[i + 1], 0, 1));
-    if (a == "--candidates") ncand = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--candidates") ncand = fixel::bench::study_count(argv[i], argv[i + 1], 3);  // a layout is a triple
     if (a == "--top") top = fixel::bench::study_count(argv[i], argv[i + 1]);
-    if (a == "--pushes") pushes = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--pushes") pushes = fixel::bench::study_count(argv[i], argv[i + 1], 1);
     if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
     if (a == "--dump") dump = argv[i + 1];
@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
   fp::PushOptions options;
   options.time = fixel::bench::study_positive_rational("--time", time.c_str());
   options.trajectory_samples = 1;
+  fixel::bench::check_study_push_options(options);
   fixel::DesignOptions o;
   o.top = top;
   o.jobs = 1;

@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
     if (a == "--part")
       part_name = next();
     else if (a == "--candidates")
-      n = fixel::bench::study_count(a.c_str(), next().c_str());
+      n = fixel::bench::study_count(a.c_str(), next().c_str(), 3);  // a layout is a triple
     else if (a == "--resolution")
       resolution = next();
     else if (a == "--jobs")

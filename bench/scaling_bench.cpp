@@ -63,8 +63,14 @@ double fitted_exponent(const std::vector<double>& n, const std::vector<double>& 
 }  // namespace
 
 int main(int argc, char** argv) {
+  const char* const usage = "usage: scaling_bench [MAX_EDGES] [--filtered-only]\n";
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::cout << usage;
+      return 0;
+    }
   if (argc > 3 || (argc == 3 && std::string(argv[2]) != "--filtered-only")) {
-    std::cerr << "usage: scaling_bench [MAX_EDGES] [--filtered-only]\n";
+    std::cerr << usage;
     return 2;
   }
   const int max_edges =

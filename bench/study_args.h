@@ -72,9 +72,11 @@ inline fixel::Rational study_positive_rational(const char* name, const char* tex
 // A count of samples, pushes, parts or candidates.
 inline constexpr long long kMaxStudyCount = 1000000;
 
-// A count option's value: a whole number from 0 to kMaxStudyCount.
-inline int study_count(const char* name, const char* text) {
-  return static_cast<int>(study_int(name, text, 0, kMaxStudyCount));
+// A count option's value: a whole number from `least` (0 unless the
+// study cannot run with fewer, as validate_region's pushes) to
+// kMaxStudyCount.
+inline int study_count(const char* name, const char* text, int least = 0) {
+  return static_cast<int>(study_int(name, text, least, kMaxStudyCount));
 }
 
 // The engine's accuracy, as `fixel push` takes it (docs/physics.md, "Engine
@@ -86,22 +88,35 @@ inline int study_count(const char* name, const char* text) {
 inline const std::vector<std::string> kEngineArgs = {"--steps-per-h", "--velocity-iterations", "--position-iterations"};
 inline const char* const kEngineUsage = " [--steps-per-h N] [--velocity-iterations N] [--position-iterations N]";
 
+// The whole PushOptions, as the first push would check them; a study that
+// takes no engine options calls it too (its --time).
 template <class PushOptions>
-void read_engine_args(int argc, char** argv, PushOptions& options) {
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    // Whole numbers here; their ranges are check_push_options' below.
-    auto whole = [&] { return static_cast<int>(study_int(argv[i], argv[i + 1], INT32_MIN, INT32_MAX)); };
-    if (a == "--steps-per-h") options.steps_per_h = whole();
-    if (a == "--velocity-iterations") options.velocity_iterations = whole();
-    if (a == "--position-iterations") options.position_iterations = whole();
-  }
+void check_study_push_options(const PushOptions& options) {
   try {
     check_push_options(options);  // found by argument-dependent lookup: fixel::physics
   } catch (const fixel::Error& e) {
     std::cerr << e.what() << "\n";
     std::exit(2);
   }
+}
+
+template <class PushOptions>
+void read_engine_args(int argc, char** argv, PushOptions& options) {
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    // Whole numbers here; their ranges are check_push_options' below.
+    auto whole = [&] {
+      int v = 0;
+      const char *text = argv[i + 1], *end = text + std::strlen(text);
+      const auto [at, ec] = std::from_chars(text, end, v);
+      if (ec != std::errc() || at != end) study_value_error(argv[i], text, "a whole number (as 1000)");
+      return v;
+    };
+    if (a == "--steps-per-h") options.steps_per_h = whole();
+    if (a == "--velocity-iterations") options.velocity_iterations = whole();
+    if (a == "--position-iterations") options.position_iterations = whole();
+  }
+  check_study_push_options(options);
 }
 
 // Names plus the engine's, for check_study_args.

@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
                                  fixel::bench::with_engine_args({"--pushes", "--random", "--seed", "--time"}));
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
-    if (a == "--pushes") pushes = fixel::bench::study_count(argv[i], argv[i + 1]);
+    if (a == "--pushes") pushes = fixel::bench::study_count(argv[i], argv[i + 1], 1);
     if (a == "--random") random_parts = fixel::bench::study_count(argv[i], argv[i + 1]);
     if (a == "--seed") seed = fixel::bench::study_seed(argv[i], argv[i + 1]);
     if (a == "--time") time = argv[i + 1];
