@@ -10,6 +10,7 @@ See docs/python.md.
 import contextlib
 import json
 import os
+import time
 from types import SimpleNamespace
 
 import numpy as np
@@ -18,7 +19,7 @@ from . import _fixel
 from ._exact import engine_settings, exact, frac, fracs, text, vector, whole
 from ._design import Candidate, Design, Layout, design, design_candidates, design_scene
 from ._region import AlgebraicEnd, Magnitudes, Region, RegionInterval, RegionStats, region, sample
-from ._worker import stoppable
+from ._worker import seconds_limit, stoppable
 from .errors import Error, InputError, ParseError, SceneError, StoppedError, UnsupportedError
 
 __version__ = _fixel.__version__
@@ -67,9 +68,13 @@ class Scene:
             raise TypeError(f"{source}: a scene is a dict in the scene-file format, not {type(d).__name__}")
         # Serialised and parsed by the C++ parser, so validation and messages
         # are exactly those of the CLI.
-        _check_nesting(d, source, "")
-        text = json.dumps(_jsonable(d, ""))
-        return cls(stoppable(lambda c: _fixel.parse_scene(text, source, c), max_seconds))
+        limit = seconds_limit(max_seconds)
+        _fixel.Control(limit)  # a bad max_seconds is refused before any work
+        started = time.monotonic()
+        _check_nesting(d, source)
+        text = json.dumps(_jsonable(d, "", _Deadline(limit)))
+        left = None if limit is None else max(limit - (time.monotonic() - started), 1e-9)
+        return cls(stoppable(lambda c: _fixel.parse_scene(text, source, c), left))
 
     def to_dict(self):
         """The scene in the scene-file format, every number an exact string,
@@ -125,33 +130,82 @@ class Scene:
 
 
 _MAX_SCENE_DEPTH = 64  # the C++ scene loader's limit, with the same message
+# The most values a scene text within the loader's 256 MiB can hold (each
+# takes at least a digit and a comma).
+_MAX_SCENE_VALUES = (256 << 20) // 2
 
 
-def _check_nesting(x, source, path, depth=1, on_path=()):
+def _check_nesting(d, source):
     """Before anything recurses over the dict: a dict or list that contains
     itself is an InputError naming where, and nesting past 64 levels the
     ParseError the scene loader gives for the same text (both used to be a
-    RecursionError, or "nested too deeply" past Python's limit)."""
-    if not isinstance(x, (dict, list, tuple)):
-        return
-    if id(x) in on_path:
-        kind = "a dict" if isinstance(x, dict) else "a list"
-        raise InputError.make(path or source, kind, "contains itself: a scene is a tree of dicts and lists")
-    if depth > _MAX_SCENE_DEPTH:
-        raise ParseError.make(source, f"depth {depth}", f"nests deeper than {_MAX_SCENE_DEPTH} levels")
-    items = x.items() if isinstance(x, dict) else enumerate(x)
-    for k, v in items:
-        where = (f"{path}.{k}" if path else str(k)) if isinstance(x, dict) else f"{path}[{k}]"
-        _check_nesting(v, source, where, depth + 1, on_path + (id(x),))
+    RecursionError, or "nested too deeply" past Python's limit). A tree
+    whose text would pass the loader's 256 MiB is an InputError: a list
+    shared twice at each of 30 levels unrolls to 2^30 values, and the walk
+    that wrote it out took hours. Each dict or list is walked once (its
+    count of values and its height kept), so this takes time in the
+    objects, not in the values they unroll to."""
+    seen = {}  # id -> (values, height in dicts and lists)
+    on_path = set()
+
+    def walk(x, path, depth):
+        if not isinstance(x, (dict, list, tuple)):
+            return 1, 0
+        key = id(x)
+        if key in on_path:
+            kind = "a dict" if isinstance(x, dict) else "a list"
+            raise InputError.make(path or source, kind, "contains itself: a scene is a tree of dicts and lists")
+        if depth > _MAX_SCENE_DEPTH:
+            raise ParseError.make(source, f"depth {depth}", f"nests deeper than {_MAX_SCENE_DEPTH} levels")
+        if key not in seen:
+            on_path.add(key)
+            values, height = 1, 1
+            items = x.items() if isinstance(x, dict) else enumerate(x)
+            for k, v in items:
+                where = (f"{path}.{k}" if path else str(k)) if isinstance(x, dict) else f"{path}[{k}]"
+                n, h = walk(v, where, depth + 1)
+                values, height = values + n, max(height, h + 1)
+            on_path.discard(key)
+            seen[key] = (values, height)
+        values, height = seen[key]
+        if depth + height - 1 > _MAX_SCENE_DEPTH:  # met before, deeper now
+            deepest = _MAX_SCENE_DEPTH + 1
+            raise ParseError.make(source, f"depth {deepest}", f"nests deeper than {_MAX_SCENE_DEPTH} levels")
+        return values, height
+
+    values, _ = walk(d, "", 1)
+    if values > _MAX_SCENE_VALUES:
+        raise InputError.make(
+            source,
+            f"{values} values",
+            f"is larger than a scene file can be (256 MiB as text, at most {_MAX_SCENE_VALUES} values): "
+            "a list or dict shared many times?",
+        )
 
 
-def _jsonable(x, path):
+class _Deadline:
+    """from_dict's max_seconds while it writes the dict out (a shared list
+    is written once per use, as its text holds it)."""
+
+    def __init__(self, seconds):
+        self.at = None if seconds is None or not seconds < 1e9 else time.monotonic() + seconds
+        self.values = 0
+
+    def tick(self):
+        self.values += 1
+        if self.values % 4096 == 0 and self.at is not None and time.monotonic() > self.at:
+            raise StoppedError(f"load: time limit reached after {self.values} values written out; no result")
+
+
+def _jsonable(x, path, deadline=None):
     """The dict with every number as exact text; a float anywhere is a TypeError
     naming its JSON path (json.dumps would otherwise write its decimal repr)."""
+    if deadline is not None:
+        deadline.tick()
     if isinstance(x, dict):
-        return {k: _jsonable(v, f"{path}.{k}" if path else str(k)) for k, v in x.items()}
+        return {k: _jsonable(v, f"{path}.{k}" if path else str(k), deadline) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
-        return [_jsonable(v, f"{path}[{i}]") for i, v in enumerate(x)]
+        return [_jsonable(v, f"{path}[{i}]", deadline) for i, v in enumerate(x)]
     if type(x) is int and x.bit_length() > 13000:
         return text(x, path)  # beyond json.dumps (4300 digits): as exact text
     if x is None or isinstance(x, (str, bool)) or type(x) is int:

@@ -144,6 +144,55 @@ def test_a_scene_dict_that_contains_itself_is_named_where():
         fixel.Scene.from_dict(d, source="loop")
 
 
+def _shared(levels):
+    """A list holding the same list twice at each level: levels + 1 lists
+    and one string, unrolled to 2^levels strings."""
+    a = ["0"]
+    for _ in range(levels):
+        a = [a, a]
+    return a
+
+
+def test_a_scene_dict_sharing_a_list_is_counted_as_its_text_would_be_and_refused_at_once_past_the_loaders_size():
+    import time
+
+    d = json.loads((SCENE_DIR / "polygon.json").read_text())
+    d["extra"] = _shared(40)  # 2^40 strings as text; the walk that wrote it out took hours
+    started = time.monotonic()
+    with pytest.raises(fixel.InputError) as e:
+        fixel.Scene.from_dict(d, source="shared")
+    assert time.monotonic() - started < 60  # far from hours; a bound, not a timing
+    # Its count, by hand: 2^40 strings and 2^0 + 2^1 + ... + 2^40 lists
+    # (each use counts, as in the text), and the scene's own values (the
+    # same dict without it, counted by a plain walk).
+    del d["extra"]
+    own = _count(d)
+    assert e.value.field == "shared"
+    assert e.value.value == f"{2**40 + 2**41 - 1 + own} values"
+    assert "larger than a scene file can be" in str(e.value)
+    # Shared but small: a closed outline whose last point is its first
+    # point's list gives the scene the unshared tree gives.
+    points = d["body"]["boundary"][0]["points"]
+    assert points[-1] == points[0]
+    points[-1] = points[0]
+    assert fixel.Scene.from_dict(d).to_dict() == fixel.Scene.from_dict(json.loads(json.dumps(d))).to_dict()
+
+
+def _count(x):
+    if isinstance(x, dict):
+        return 1 + sum(_count(v) for v in x.values())
+    if isinstance(x, list):
+        return 1 + sum(_count(v) for v in x)
+    return 1
+
+
+def test_a_scene_dict_under_the_size_limit_but_slow_to_write_out_stops_at_max_seconds():
+    d = json.loads((SCENE_DIR / "polygon.json").read_text())
+    d["extra"] = _shared(24)  # 2^25 values: under the limit, many seconds to write out
+    with pytest.raises(fixel.StoppedError, match="^load: time limit reached after"):
+        fixel.Scene.from_dict(d, max_seconds=0.05)
+
+
 def test_a_region_copies_shallowly_and_shares_its_core():
     import copy
 
