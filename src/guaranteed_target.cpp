@@ -272,13 +272,13 @@ class GuaranteedTarget final : public RegionTarget, public internal::IntervalTar
   void check_pusher(const Rational& mu) const override {
     if (mu != 0)
       throw UnsupportedError("RegionOptions.pusher_mu", to_string(mu),
-                             "with --guaranteed is not supported: G is not convex, so the two friction edges hitting G "
-                             "does not make every push direction between them hit G (use a frictionless pusher)");
+                             "against G is not supported: G is not convex, so the two friction edges hitting G "
+                             "do not make every push direction between them hit G (use a frictionless pusher)");
   }
 
   std::vector<Polynomial> sign_polynomials(const std::vector<std::array<Polynomial, 3>>&) const override {
     throw UnsupportedError("RegionOptions.exact", "",
-                           "with --guaranteed is not supported: G is a union of pieces minus non-seating "
+                           "against G is not supported: G is a union of pieces minus non-seating "
                            "sets with strict rows, and its exact region is a separate project "
                            "(docs/theory.md §12); use subdivision");
   }

@@ -111,6 +111,9 @@ std::string push_plan_text(const Scene& scene, const PushPlan& plan) {
   if (scene.pusher_mu_upper() != 0)
     out << "  pusher: a frictionless finger pushing along the normal; the scene's pusher mu = "
         << internal::readable(scene.pusher_mu_upper())
+        << (scene.pusher_mu_hi ? " (the upper end of its interval [" + internal::readable(scene.pusher_mu) + ", " +
+                                     internal::readable(*scene.pusher_mu_hi) + "], at which every analysis judges it)"
+                               : std::string())
         << " is not used here (`region` and `sample` use it: their pushes fan out over its friction cone, so they "
            "can say out where this plan, for the normal push alone, says in)\n";
   out << "  wrench direction g = " << internal::readable(plan.wrench_direction)

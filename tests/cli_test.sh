@@ -76,9 +76,9 @@ expect 0 '"seat_and_stay_contains": true' -- "$fixel" seat "$src/data/scenes/exa
 expect 0 'guaranteed_0.off' -- "$fixel" dump "$src/data/scenes/nonunique.json" --guaranteed --off "$tmp/g"
 expect 0 '"status": "in"' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --resolution 1/64 --json
 expect 0 '"magnitude_intervals"' -- "$fixel" sample "$src/data/scenes/nonunique_part.json" --guaranteed --points 8 --json
-expect 2 'with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
+expect 2 'against G is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --guaranteed --pusher-mu 1/5
 # fig6's own pusher mu: the error names the scene's field, not --pusher-mu.
-expect 2 "fixel: error: pusher.mu: 1/5 with --guaranteed is not supported" -- "$fixel" sample "$src/data/scenes/fig6.json" --guaranteed --points 4
+expect 2 "fixel: error: pusher.mu: 1/5 against G is not supported" -- "$fixel" sample "$src/data/scenes/fig6.json" --guaranteed --points 4
 expect 0 'wrote' -- "$fixel" seat "$src/data/scenes/nonunique.json" --svg "$tmp/x.svg"
 grep -q "seating set S (one-step: can seat)" "$tmp/x.svg" || { echo "FAIL: seat --svg without G"; fail=1; }
 # push (Box2D) and region --validate: docs/physics.md.
@@ -214,7 +214,7 @@ expect 2 "--digits: '' is not a whole decimal number" -- "$fixel" region "$P" --
 expect 2 '--cone: paper cannot be combined with --exact' -- "$fixel" region "$P" --exact --cone paper
 expect 2 '--resolution: 1/3 cannot be combined with --exact' -- "$fixel" region "$P" --exact --resolution 1/3
 expect 0 "an end's own status is not decided" -- "$fixel" region "$P" --exact
-expect 2 '--exact: with --guaranteed is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --exact --guaranteed
+expect 2 '--exact: against G is not supported' -- "$fixel" region "$src/data/scenes/nonunique_part.json" --exact --guaranteed
 expect 2 '--validate: 2 needs the certified magnitudes' -- "$fixel" region "$P" --exact --validate 2
 sed 's/"mu": "1\/10"/"mu": ["1\/20", "1\/10"]/' "$P" > "$tmp/interval.json"
 expect 0 'friction used (upper ends): 1/10 1/10 1/10' -- "$fixel" seat "$tmp/interval.json" --sustained

@@ -473,8 +473,8 @@ GTEST_TEST(GuaranteedRegion, FrictionalPusherIsAClearNotSupportedError) {
     } catch (const UnsupportedError& e) {
       EXPECT_EQ(e.field(), "pusher.mu");
       EXPECT_EQ(std::string(e.what()),
-                "pusher.mu: 1/5 with --guaranteed is not supported: G is not convex, so the two friction edges "
-                "hitting G does not make every push direction between them hit G (use a frictionless pusher); it is "
+                "pusher.mu: 1/5 against G is not supported: G is not convex, so the two friction edges "
+                "hitting G do not make every push direction between them hit G (use a frictionless pusher); it is "
                 "the scene's pusher friction, taken when no pusher mu is given");
     }
   }

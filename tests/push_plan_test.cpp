@@ -201,6 +201,15 @@ GTEST_TEST(PushPlan, SaysItIgnoresTheScenesPusherFriction) {
   const Scene frictionless = test::scene_file("polygon");
   EXPECT_EQ(push_plan_text(frictionless, plan_push(frictionless, 0, Rational(5, 2), false)).find("pusher:"),
             std::string::npos);
+  // An interval's upper end is shown as what it is.
+  Scene interval = scene;
+  interval.pusher_mu = Rational(1, 10);
+  interval.pusher_mu_hi = Rational(3, 10);
+  const std::string interval_text = push_plan_text(interval, plan_push(interval, 0, Rational(9), false));
+  EXPECT_NE(interval_text.find("the scene's pusher mu = 3/10 = 0.3 (the upper end of its interval [1/10 = 0.1, 3/10 = "
+                               "0.3], at which every analysis judges it) is not used here"),
+            std::string::npos)
+      << interval_text;
 }
 
 // push-plan --guaranteed gives G's magnitude window at a point (a point

@@ -113,7 +113,7 @@ int run_region(const RegionArgs& a) {
   if (a.guaranteed && !a.exact) G = guaranteed_set(scene, S, run_control());
   if (a.guaranteed && a.exact)
     throw UnsupportedError("--exact", "",  // the library's words (as Python shows them), before G is built
-                           "with --guaranteed is not supported: G is a union of pieces minus non-seating "
+                           "against G is not supported: G is a union of pieces minus non-seating "
                            "sets with strict rows, and its exact region is a separate project "
                            "(docs/theory.md §12); use subdivision");
   std::optional<Rational> mu;
