@@ -5,6 +5,7 @@
 
 #include "fixel/cone.h"
 #include "fixel/error.h"
+#include "fixel/internal/scene_differs.h"
 #include "fixel/lcp.h"
 #include "fixel/progress.h"
 
@@ -70,36 +71,12 @@ bool GuaranteedSet::contains(const VectorQ& p, const SeatingSet& S) const {
   return true;
 }
 
-namespace {
-
-// What of the one-step model's inputs differs between two scenes, "" when
-// none does (the outline is not among them: G lives in impulse space).
-std::string step_inputs_differ(const Scene& a, const Scene& b) {
-  auto same = [](const Vec2& p, const Vec2& q) { return p.x == q.x && p.y == q.y; };
-  if (a.body.dof != b.body.dof || a.time_step != b.time_step) return "its dof or time step";
-  if (a.body.mass != b.body.mass || a.body.inertia != b.body.inertia) return "its mass or inertia";
-  if (!same(a.body.p_AoCm_A, b.body.p_AoCm_A)) return "its centre of mass";
-  if (a.body.velocity.size() != b.body.velocity.size() || a.body.velocity != b.body.velocity) return "its velocity";
-  if (a.fixels.size() != b.fixels.size()) return "its number of fixels";
-  for (std::size_t i = 0; i < a.fixels.size(); ++i) {
-    const Fixel &f = a.fixels[i], &g = b.fixels[i];
-    if (!same(f.p_AoF_A, g.p_AoF_A) || !same(f.n_A, g.n_A) || f.gap != g.gap || f.mu != g.mu ||
-        f.mu_upper() != g.mu_upper())
-      return "fixels[" + std::to_string(i) + "] (its point, normal, gap or friction)";
-  }
-  return "";
-}
-
-}  // namespace
-
 void check_guaranteed_set_of(const Scene& scene, const SeatingSet& S, const GuaranteedSet& G) {
   check_seating_set_of(scene, S);
-  if (!G.built_from) return;
-  const std::string differs = step_inputs_differ(*G.built_from, scene);
-  if (!differs.empty())
-    throw InputError(
-        "G", "built from scene \"" + G.built_from->name + "\"",
-        "belongs to another scene than \"" + scene.name + "\": " + differs + " differs; build it from this scene");
+  // The one-step model's inputs (not the outline: G lives in impulse space).
+  internal::check_same_scene(
+      G.built_from.get(), scene,
+      internal::kReadsStep | internal::kReadsMass | internal::kReadsFixels | internal::kReadsFixelLowerMu, "G");
 }
 
 GuaranteedSet guaranteed_set(const Scene& scene, const SeatingSet& S, RunControl* control) {

@@ -5,6 +5,7 @@
 
 #include "fixel/internal/json_approx.h"
 #include "fixel/internal/readable.h"
+#include "fixel/internal/scene_differs.h"
 #include "fixel/io.h"
 
 namespace fixel {
@@ -61,6 +62,7 @@ std::map<std::string, Rational> status_lengths(const Region& region) {
 }  // namespace
 
 std::string region_json(const Scene& scene, const Region& region, const SeatedPose* seat) {
+  internal::check_same_scene(region.built_from.get(), scene, internal::region_reads(region.target), "region");
   json doc;
   doc["scene"] = scene.name;
   doc["method"] = method_of(region);
@@ -150,6 +152,7 @@ std::string region_json(const Scene& scene, const Region& region, const SeatedPo
 }
 
 std::string region_text(const Scene& scene, const Region& region) {
+  internal::check_same_scene(region.built_from.get(), scene, internal::region_reads(region.target), "region");
   std::ostringstream out;
   const bool sustained = region.push == "sustained";
   const std::string meaning = in_meaning(region);

@@ -6,6 +6,7 @@
 
 #include "fixel/curve.h"
 #include "fixel/error.h"
+#include "fixel/internal/scene_differs.h"
 #include "fixel/physics.h"
 #include "fixel/progress.h"
 #include "fixel/seated_pose.h"
@@ -128,6 +129,7 @@ PushModel seated_push_model(const Scene& scene, double force) {
 RegionValidation validate_region(const Scene& scene, const Region& region, const PushModel& model, int pushes,
                                  std::uint64_t seed, const PushOptions& options) {
   if (pushes < 1) throw InputError("validate_region(pushes)", std::to_string(pushes), "must be >= 1");
+  internal::check_same_scene(region.built_from.get(), scene, internal::region_reads(region.target), "region");
   check_push_options(options);  // also when no interval is IN, so no option goes unchecked
   RegionValidation out;
   out.seed = seed;

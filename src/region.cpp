@@ -239,6 +239,7 @@ Region internal::compute_region_joined(const Scene& scene, RegionTarget& target,
     internal::settle(raw, deferred, options.merge);
   }
   Region region;
+  region.built_from = std::make_shared<const Scene>(scene);
   region.corners = internal::corner_ends(raw, corner_entries);
   region.intervals = options.merge ? internal::merge_runs(std::move(raw)) : std::move(raw);
   if (options.exact) {

@@ -144,6 +144,7 @@ Region sample_region(const Scene& scene, RegionTarget& target, int points_per_cu
   const std::vector<internal::Join> js = internal::joins(b);
   const long total = static_cast<long>(b.curves.size()) * points_per_curve;
   Region region;
+  region.built_from = std::make_shared<const Scene>(scene);
   for (std::size_t c = 0; c < b.curves.size(); ++c) {
     const Curve& curve = b.curves[c];
     for (int k = 0; k < points_per_curve; ++k) {

@@ -8,6 +8,7 @@
 #include "fixel/curve.h"
 #include "fixel/error.h"
 #include "fixel/internal/cone3.h"
+#include "fixel/internal/scene_differs.h"
 #include "fixel/internal/sustained_core.h"
 #include "fixel/internal/sustained_data.h"
 #include "fixel/progress.h"
@@ -311,45 +312,8 @@ SustainedSet sustained_set(const Scene& scene, bool check_stability) {
 
 namespace internal {
 
-namespace {
-
-bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
-
-bool same_outline(const std::shared_ptr<const Boundary>& a, const std::shared_ptr<const Boundary>& b) {
-  if (a == b) return true;
-  if (!a || !b || a->pieces.size() != b->pieces.size()) return false;
-  for (std::size_t k = 0; k < a->pieces.size(); ++k) {
-    const BezierPiece &p = a->pieces[k], &q = b->pieces[k];
-    if (p.curve != q.curve || p.u0 != q.u0 || p.u1 != q.u1 || p.control.size() != q.control.size()) return false;
-    for (std::size_t j = 0; j < p.control.size(); ++j)
-      if (!same(p.control[j], q.control[j])) return false;
-  }
-  return true;
-}
-
-// What of J's inputs differs between two scenes, "" when none does.
-std::string what_differs(const Scene& a, const Scene& b) {
-  if (a.body.dof != b.body.dof || !same_outline(a.body.boundary, b.body.boundary)) return "its outline";
-  if (!same(a.body.p_AoCm_A, b.body.p_AoCm_A)) return "its centre of mass";
-  if (a.body.mass != b.body.mass || a.body.inertia != b.body.inertia) return "its mass or inertia";
-  if (a.fixels.size() != b.fixels.size()) return "its number of fixels";
-  for (std::size_t i = 0; i < a.fixels.size(); ++i) {
-    const Fixel &f = a.fixels[i], &g = b.fixels[i];
-    if (!same(f.p_AoF_A, g.p_AoF_A) || !same(f.n_A, g.n_A) || f.gap != g.gap || f.mu_upper() != g.mu_upper())
-      return fixel_name(static_cast<int>(i)) + " (its point, normal, gap or friction)";
-  }
-  return "";
-}
-
-}  // namespace
-
 void check_built_from(const SustainedData& data, const Scene& scene, const char* field) {
-  if (!data.built_from) return;
-  const std::string differs = what_differs(*data.built_from, scene);
-  if (differs.empty()) return;
-  throw InputError(
-      field, "built from scene \"" + data.built_from->name + "\"",
-      "belongs to another scene than \"" + scene.name + "\": " + differs + " differs; build it from this scene");
+  check_same_scene(data.built_from.get(), scene, kReadsOutline | kReadsMass | kReadsFixels, field);
 }
 
 SustainedCore sustained_core(const Scene& scene) {

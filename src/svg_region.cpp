@@ -9,6 +9,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/file_write.h"
+#include "fixel/internal/scene_differs.h"
 #include "fixel/internal/sustained_data.h"
 #include "fixel/internal/svg_region.h"
 #include "fixel/svg.h"
@@ -97,6 +98,7 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
     check_guaranteed_set_of(scene, S, *G);
   else
     check_seating_set_of(scene, S);
+  internal::check_same_scene(region.built_from.get(), scene, internal::region_reads(region.target), "region");
   Picture pic;
   const VectorQ& b0 = scene.background_impulse;
   if (region.target == "G" && G) {
@@ -123,6 +125,7 @@ void write_region_svg(const std::string& path, const Scene& scene, const Seating
 void write_sustained_region_svg(const std::string& path, const Scene& scene, const SustainedSet& J,
                                 const Region& region) {
   if (J.data) internal::check_built_from(*J.data, scene, "J");
+  internal::check_same_scene(region.built_from.get(), scene, internal::region_reads(region.target), "region");
   // Body-frame wrench w_B → world frame at q* (display only).
   const double th = J.pose.approx[2], c = std::cos(th), s = std::sin(th);
   auto rows = [](const std::vector<std::array<QuadraticIrrational, 3>>& v) {

@@ -21,6 +21,7 @@
 #include "fixel/scene.h"
 #include "fixel/scene_json.h"
 #include "fixel/seating.h"
+#include "other_scene_region.h"
 #include "test_util.h"
 
 namespace fixel::physics {
@@ -396,6 +397,14 @@ GTEST_TEST(Physics, TheOneStepPushModelRefusesAnSOfAnotherSceneNamingS) {
   const std::string e = test::input_error_of([&] { one_step_push_model(s.gapped, S, Rational(0)); });
   EXPECT_EQ(e.rfind("S: ", 0), 0u) << e;
   EXPECT_EQ(test::input_error_of([&] { one_step_push_model(s.scene, S, Rational(0)); }), "(no InputError)");
+}
+
+GTEST_TEST(Physics, ValidationRefusesARegionOfAnotherSceneNamingIt) {
+  const Scene polygon = test::scene_file("polygon");
+  const Region region = test::rounded_region();
+  const std::string e =
+      test::input_error_of([&] { validate_region(polygon, region, seated_push_model(polygon), 1, 1, short_run("2")); });
+  EXPECT_EQ(e.rfind("region: ", 0), 0u) << e;
 }
 
 // blob32's one-step pushes are 4.55 engine steps long: every one warns, so

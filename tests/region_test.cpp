@@ -15,6 +15,7 @@
 #include "fixel/region_target.h"
 #include "fixel/scene_json.h"
 #include "fixel/sustained.h"
+#include "other_scene_region.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -702,6 +703,51 @@ GTEST_TEST(Region, ACornerWhoseStatusAnIntervalEndingThereLacksIsListed) {
   }
   // With the scene's own gaps no interval ends at a corner of another status.
   EXPECT_TRUE(compute_region(scene_file("polygon"), seating_set(scene_file("polygon")), o).corners.empty());
+}
+
+// Printed beside another scene, a region's stretches were labelled with
+// that scene's name and placed on its outline.
+GTEST_TEST(Region, ItsWritersRefuseAnotherScenesRegionNamingTheFieldThatDiffers) {
+  const Scene rounded = test::scene_file("example2_rounded");
+  const Scene polygon = test::scene_file("polygon");
+  const Region region = test::rounded_region();
+  const Region sampled = sample_region(rounded, seating_set(rounded), 3);
+  for (const Region* r : {&region, &sampled}) {
+    for (const std::string& e : {test::input_error_of([&] { region_json(polygon, *r); }),
+                                 test::input_error_of([&] { region_text(polygon, *r); })}) {
+      EXPECT_EQ(e.rfind("region: region: built from scene \"example2_rounded\" belongs to another scene than "
+                        "\"polygon\": body.boundary has ",
+                        0),
+                0u)
+          << e;
+    }
+  }
+  // Where S's region looks: b0 (the background impulse) too.
+  Scene pushed = rounded;
+  pushed.background_impulse[0] += 1;
+  EXPECT_NE(test::input_error_of([&] { region_json(pushed, region); }).find("background_impulse is ("),
+            std::string::npos);
+  // What no region reads (the name), and a region built by hand, pass.
+  Scene renamed = rounded;
+  renamed.name = "renamed";
+  EXPECT_EQ(test::input_error_of([&] { region_json(renamed, region); }), "(no InputError)");
+  Region by_hand = region;
+  by_hand.built_from = nullptr;
+  EXPECT_EQ(test::input_error_of([&] { region_text(pushed, by_hand); }), "(no InputError)");
+}
+
+// J's region reads the outline, mass properties and fixels only.
+GTEST_TEST(Region, ASustainedRegionPassesASceneThatDiffersOnlyWhereJDoesNotLook) {
+  const Scene polygon = test::scene_file("polygon");
+  RegionOptions options;
+  options.resolution = Rational(1, 16);
+  const Region region = compute_region(polygon, *sustained_target(sustained_set(polygon)), options);
+  Scene other = polygon;
+  other.background_impulse[0] += 1;
+  other.time_step *= 2;
+  EXPECT_EQ(test::input_error_of([&] { region_json(other, region); }), "(no InputError)");
+  other.fixels[2].gap += Rational(1, 100);
+  EXPECT_NE(test::input_error_of([&] { region_json(other, region); }).find("fixels[2].gap is "), std::string::npos);
 }
 
 }  // namespace

@@ -531,8 +531,9 @@ GTEST_TEST(SustainedRegion, ATargetOfAnotherSceneIsRefusedNamingItsSet) {
       f();
     } catch (const InputError& e) {
       EXPECT_EQ(e.field(), field);
-      EXPECT_NE(std::string(e.what()).find("built from scene \"polygon\" belongs to another scene than \"polygon\": "
-                                           "fixels[0] (its point, normal, gap or friction) differs"),
+      EXPECT_NE(std::string(e.what()).find(
+                    "built from scene \"polygon\" belongs to another scene than \"polygon\": "
+                    "fixels[0].gap is 1/5 here, 1/10 in the scene it was built from; build it from this scene"),
                 std::string::npos)
           << e.what();
       return true;

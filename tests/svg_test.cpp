@@ -8,6 +8,7 @@
 
 #include "fixel/error.h"
 #include "fixel/region_target.h"
+#include "other_scene_region.h"
 #include "test_util.h"
 
 namespace fixel {
@@ -62,6 +63,17 @@ GTEST_TEST(Svg, TheSustainedPictureRefusesAJOfAnotherSceneAndWritesNothing) {
   write_sustained_region_svg(path.string(), polygon, J, region);
   EXPECT_NE(read_all(path).find("<svg"), std::string::npos);
   std::filesystem::remove(path);
+}
+
+GTEST_TEST(Svg, TheRegionPictureRefusesARegionOfAnotherSceneAndWritesNothing) {
+  const Scene polygon = test::scene_file("polygon");
+  const Region region = test::rounded_region();
+  const auto path = std::filesystem::temp_directory_path() / "fixel_svg_test_other_region.svg";
+  std::filesystem::remove(path);
+  const std::string e =
+      test::input_error_of([&] { write_region_svg(path.string(), polygon, seating_set(polygon), region); });
+  EXPECT_EQ(e.rfind("region: ", 0), 0u) << e;
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 }  // namespace

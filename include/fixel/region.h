@@ -4,6 +4,7 @@
 /// push seats the part, and how hard to push.
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -126,6 +127,13 @@ struct Region {
   /// by locate_intervals, which compute_region and sample_region call).
   std::vector<IntervalPlace> places;
   double outline_length = 0;  ///< Arc length of the whole boundary, m (display).
+  /// The scene it was computed for (set by compute_region and
+  /// sample_region; null for a region built by hand, which is not checked).
+  /// region_json, region_text, the SVG writers and validate_region refuse a
+  /// scene that differs where the region looks (the outline, mass
+  /// properties, fixels and, for S and G, h, velocity and b0) with an
+  /// InputError naming `region` and the field.
+  std::shared_ptr<const Scene> built_from;
 };
 
 /// What "in" means for this region's target, as every report labels it:

@@ -230,13 +230,38 @@ def _same_scene(owner_scene, scene, field):
     object was built from) is ``scene``: the same object, or one equal to it
     in the scene-file format. An object of another scene would give a wrong
     answer silently."""
-    if owner_scene is scene or owner_scene._impl is scene._impl or owner_scene.to_dict() == scene.to_dict():
+    if owner_scene is scene or owner_scene._impl is scene._impl:
+        return
+    there, here = owner_scene.to_dict(), scene.to_dict()
+    if there == here:
         return
     raise InputError.make(
         field,
         f"built from scene {owner_scene.name!r}",
-        f"belongs to another scene than {scene.name!r}; build it from this scene",
+        f"belongs to another scene than {scene.name!r}: {_first_difference(there, here, '')}; "
+        "build it from this scene",
     )
+
+
+def _first_difference(there, here, path):
+    """Where two scene dicts first differ, with both values: "fixels[0].gap
+    is '1/5' here, '1/10' in the scene it was built from" (the name and
+    description last: they change no answer)."""
+    if isinstance(there, dict) and isinstance(here, dict):
+        keys = list(there) + [k for k in here if k not in there]
+        for key in sorted(keys, key=lambda k: not path and k in ("name", "description")):
+            where = f"{path}.{key}" if path else key
+            if key not in here or key not in there:
+                return f"{where} is {'absent' if key not in here else 'given'} here, " \
+                    f"{'absent' if key not in there else 'given'} in the scene it was built from"
+            if there[key] != here[key]:
+                return _first_difference(there[key], here[key], where)
+    if isinstance(there, list) and isinstance(here, list) and len(there) == len(here):
+        for i, (a, b) in enumerate(zip(there, here)):
+            if a != b:
+                return _first_difference(a, b, f"{path}[{i}]")
+    shown = [repr(v) if not isinstance(v, (dict, list)) else f"a {type(v).__name__} of {len(v)}" for v in (here, there)]
+    return f"{path} is {shown[0]} here, {shown[1]} in the scene it was built from"
 
 
 def _scene(scene):

@@ -132,6 +132,25 @@ def test_a_seating_set_of_another_scene_is_refused_by_every_call(polygon, rounde
         assert e.value.field == field
 
 
+def test_the_refusal_names_the_first_field_that_differs_and_both_values(polygon):
+    d = polygon.to_dict()
+    d["fixels"][0]["gap"] = "1/5"
+    moved = fixel.Scene.from_dict(d, source="moved")
+    with pytest.raises(fixel.InputError) as e:
+        fixel.region(moved, guaranteed=fixel.guaranteed_set(polygon))
+    assert e.value.field == "guaranteed"
+    want = polygon.to_dict()["fixels"][0]["gap"]  # the polygon's own gap, as its dict writes it
+    assert str(e.value) == (
+        f"guaranteed: built from scene 'polygon' belongs to another scene than {moved.name!r}: "
+        f"fixels[0].gap is '1/5' here, {want!r} in the scene it was built from; build it from this scene"
+    )
+    # A description only: the Python layer wants equal scenes, and says which key.
+    d = polygon.to_dict()
+    d["description"] = "another"
+    with pytest.raises(fixel.InputError, match=r": description is .another. here, "):
+        fixel.region(fixel.Scene.from_dict(d, source="polygon"), guaranteed=fixel.guaranteed_set(polygon))
+
+
 def test_a_set_of_an_equal_scene_loaded_twice_is_accepted(rounded):
     again = fixel.Scene.load(SCENE_DIR / "example2_rounded.json")
     assert again is not rounded
