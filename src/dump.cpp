@@ -9,6 +9,7 @@
 #include "fixel/internal/file_write.h"
 #include "fixel/internal/json_exact.h"
 #include "fixel/internal/off_sidecar.h"
+#include "fixel/internal/seating_sets_check.h"
 #include "fixel/io.h"
 #include "fixel/off_io.h"
 #include "fixel/wrench_cone.h"
@@ -31,10 +32,7 @@ void append(std::vector<std::string>& to, const std::vector<std::string>& paths)
 
 std::vector<std::string> dump_off(const Scene& scene, const SeatingSet& S, const std::string& dir,
                                   const Rational& length, const GuaranteedSet* G) {
-  if (G)
-    check_guaranteed_set_of(scene, S, *G);
-  else
-    check_seating_set_of(scene, S);
+  internal::check_seating_sets_of(scene, S, G);
   internal::make_output_folder(dir, "dump_off(directory)");
   const Box box = seating_dump_box(S, length);
   std::vector<Halfspace> hs = S.halfspaces;

@@ -12,6 +12,7 @@
 #include "fixel/error.h"
 #include "fixel/internal/json_exact.h"
 #include "fixel/internal/readable.h"
+#include "fixel/internal/seating_sets_check.h"
 #include "fixel/off_io.h"
 #include "fixel/wrench_cone.h"
 
@@ -157,10 +158,7 @@ std::string seat_extras_text(const SeatReport& report, const GuaranteedSet* G) {
 }  // namespace
 
 std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport& report, const GuaranteedSet* G) {
-  if (G)
-    check_guaranteed_set_of(scene, S, *G);
-  else
-    check_seating_set_of(scene, S);
+  internal::check_seating_sets_of(scene, S, G);
   json doc;
   doc["scene"] = scene.name;
   doc["dof"] = S.dof;
@@ -191,10 +189,7 @@ std::string seat_json(const Scene& scene, const SeatingSet& S, const SeatReport&
 static std::string seat_basic_text(const Scene& scene, const SeatingSet& S, const SeatReport& report);
 
 std::string seat_text(const Scene& scene, const SeatingSet& S, const SeatReport& report, const GuaranteedSet* G) {
-  if (G)
-    check_guaranteed_set_of(scene, S, *G);
-  else
-    check_seating_set_of(scene, S);
+  internal::check_seating_sets_of(scene, S, G);
   return seat_basic_text(scene, S, report) + seat_extras_text(report, G);
 }
 

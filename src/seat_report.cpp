@@ -3,15 +3,13 @@
 #include <algorithm>
 
 #include "fixel/error.h"
+#include "fixel/internal/seating_sets_check.h"
 
 namespace fixel {
 
 SeatReport seat_report(const Scene& scene, const SeatingSet& S, const std::optional<VectorQ>& impulse,
                        const GuaranteedSet* G, bool stable) {
-  if (G)
-    check_guaranteed_set_of(scene, S, *G);
-  else
-    check_seating_set_of(scene, S);
+  internal::check_seating_sets_of(scene, S, G);
   SeatReport r;
   if (G) r.lost_fraction = lost_fraction(S, *G);
   r.stable = stable;

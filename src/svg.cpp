@@ -5,6 +5,7 @@
 
 #include "fixel/error.h"
 #include "fixel/internal/file_write.h"
+#include "fixel/internal/seating_sets_check.h"
 #include "fixel/svg.h"
 
 namespace fixel {
@@ -19,10 +20,7 @@ Rational default_slice_theta(const SeatingSet& S) {
 void write_guaranteed_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const GuaranteedSet* G,
                           const Rational& theta, const std::optional<VectorQ>& impulse) {
   if (S.dof != 3) throw InputError("S.dof", std::to_string(S.dof), "is a point mass's: the S/G picture needs dof 3");
-  if (G)
-    check_guaranteed_set_of(scene, S, *G);
-  else
-    check_seating_set_of(scene, S);
+  internal::check_seating_sets_of(scene, S, G);
   // The window: the apex, the tips apex + 2 r of every ray, and where each
   // ray's line meets the slice (apex + t r with t > 0), in (px, py).
   Rational x0 = S.apex[0], x1 = S.apex[0], y0 = S.apex[1], y1 = S.apex[1];

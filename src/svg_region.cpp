@@ -10,6 +10,7 @@
 #include "fixel/error.h"
 #include "fixel/internal/file_write.h"
 #include "fixel/internal/scene_differs.h"
+#include "fixel/internal/seating_sets_check.h"
 #include "fixel/internal/sustained_data.h"
 #include "fixel/internal/svg_region.h"
 #include "fixel/svg.h"
@@ -94,10 +95,7 @@ void draw_region(const std::string& path, const Scene& scene, const Region& regi
 
 void write_region_svg(const std::string& path, const Scene& scene, const SeatingSet& S, const Region& region,
                       const GuaranteedSet* G) {
-  if (G)
-    check_guaranteed_set_of(scene, S, *G);
-  else
-    check_seating_set_of(scene, S);
+  internal::check_seating_sets_of(scene, S, G);
   internal::check_same_scene(region.built_from.get(), scene, internal::region_reads(region.target), "region");
   Picture pic;
   const VectorQ& b0 = scene.background_impulse;
