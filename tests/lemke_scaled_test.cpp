@@ -101,6 +101,37 @@ GTEST_TEST(ScaledProblem, ScalesRowsWhoseLcmPassesAMachineWordAsDefined) {
   }
 }
 
+GTEST_TEST(ScaledProblem, ScalesRightHandSidesWithDenominatorsBeyondAWordAsDefined) {
+  // As on the seating LCPs' normal rows: L_i of about 40 bits (two 20-bit
+  // denominators per row of B) and den(b_i) = L_i·q·2^30 of about 90 bits,
+  // sharing L_i, so that δ = q·2^30 is a word. Then den(b_i) with a 70-bit
+  // part of its own (δ beyond a word), and with three limbs. Each must
+  // give the entries as defined, whichever path computes them.
+  std::mt19937_64 rng(14);
+  std::uniform_int_distribution<long long> twenty_bits(1LL << 19, (1LL << 20) - 1), numerator(-99999, 99999);
+  for (int trial = 0; trial < 120; ++trial) {
+    const int n = 2 + trial % 6;
+    const int kind = trial % 3;
+    const Integer q(twenty_bits(rng));
+    MatrixQ B(n, n);
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) {
+      const long long den[2] = {twenty_bits(rng), twenty_bits(rng)};
+      for (int j = 0; j < n; ++j) B(i, j) = Rational(numerator(rng), den[j % 2]);
+      const Rational top(numerator(rng));
+      if (kind == 0)
+        b[i] = top / Rational(row_lcm(B, i) * q * (Integer(1) << 30));
+      else if (kind == 1)
+        b[i] = top / Rational(row_lcm(B, i) * ((Integer(1) << 70) + Integer(twenty_bits(rng))));
+      else
+        b[i] = top / Rational((Integer(1) << 130) + Integer(twenty_bits(rng)));
+      if (i % 3 == 2) b[i] = b[i - 1];
+    }
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    expect_scaled_as_defined(B, b);
+  }
+}
+
 GTEST_TEST(ScaledProblem, ScalesARowWhoseLcmGrowsAfterEarlierQuotientsAsDefined) {
   // Denominators 2, 3, 2, 4, 6, 1: the lcm grows 2 → 6 → 12 after the
   // quotients of the first 2 and 3 were taken, so theirs must grow with it
