@@ -51,8 +51,12 @@ struct Fmpq {
   Fmpq& operator=(const Fmpq&) = delete;
 };
 
-// Storage reused from call to call (one per thread).
+// Storage reused from call to call (one per thread). The FLINT values
+// keep their limbs too: made afresh per reconstruction, a value of more
+// than 62 bits took and gave back one of FLINT's pooled integers each time.
 struct Workspace {
+  Fmpz residue, flint_modulus, num_bound, den_bound;
+  Fmpq reconstructed;
   ModularLu lu;
   std::vector<mp_limb_t> digit, rhs;
   std::vector<Integer> residual, lifted, candidate;
@@ -151,13 +155,11 @@ namespace {
 
 // Rational reconstruction of a mod M (0 ≤ a < M): its denominator into
 // `den`, false if there is none.
-bool reconstruct_denominator(const Integer& a, const Workspace& ws, Integer& den) {
-  Fmpz residue, modulus;  // FLINT values stay local: none outlives FLINT's per-thread pools
-  Fmpq q;
-  fmpz_set_mpz(residue.v, mp(a));
-  fmpz_set_mpz(modulus.v, mp(ws.modulus));
-  if (!fmpq_reconstruct_fmpz(q.v, residue.v, modulus.v)) return false;
-  fmpz_get_mpz(mp(den), fmpq_denref(q.v));
+bool reconstruct_denominator(const Integer& a, Workspace& ws, Integer& den) {
+  fmpz_set_mpz(ws.residue.v, mp(a));
+  fmpz_set_mpz(ws.flint_modulus.v, mp(ws.modulus));
+  if (!fmpq_reconstruct_fmpz(ws.reconstructed.v, ws.residue.v, ws.flint_modulus.v)) return false;
+  fmpz_get_mpz(mp(den), fmpq_denref(ws.reconstructed.v));
   return true;
 }
 
@@ -182,18 +184,24 @@ bool reconstruct_denominator_bounded(const Integer& a, double bound, Workspace& 
   const long b = std::ilogb(std::ceil(bound) + 1) + 1;
   const long e = (m - 3 - b) / 2;
   if (m - 3 - b < 0) return false;
-  Fmpz residue, modulus, num_bound, den_bound;
-  Fmpq q;
-  fmpz_one_2exp(den_bound.v, static_cast<ulong>(e));  // a small fmpz (no allocation) below 2^62
-  fmpz_one_2exp(num_bound.v, static_cast<ulong>(m - 2 - e));
-  fmpz_set_mpz(residue.v, mp(a));
-  fmpz_set_mpz(modulus.v, mp(ws.modulus));
-  if (!fmpq_reconstruct_fmpz_2(q.v, residue.v, modulus.v, num_bound.v, den_bound.v)) return false;
-  fmpz_get_mpz(mp(den), fmpq_denref(q.v));
+  fmpz_one_2exp(ws.den_bound.v, static_cast<ulong>(e));  // a small fmpz (no allocation) below 2^62
+  fmpz_one_2exp(ws.num_bound.v, static_cast<ulong>(m - 2 - e));
+  fmpz_set_mpz(ws.residue.v, mp(a));
+  fmpz_set_mpz(ws.flint_modulus.v, mp(ws.modulus));
+  fmpq* const q = ws.reconstructed.v;
+  if (!fmpq_reconstruct_fmpz_2(q, ws.residue.v, ws.flint_modulus.v, ws.num_bound.v, ws.den_bound.v)) return false;
+  fmpz_get_mpz(mp(den), fmpq_denref(q));
   // Only the filter below reads the value: one division of the doubles when
-  // both parts are small fmpz (the usual case), else FLINT's conversion.
-  const fmpz n = *fmpq_numref(q.v), d = *fmpq_denref(q.v);
-  value = !COEFF_IS_MPZ(n) && !COEFF_IS_MPZ(d) ? static_cast<double>(n) / static_cast<double>(d) : fmpq_get_d(q.v);
+  // both parts are small fmpz (the usual case), else from both mantissas.
+  const fmpz* n = fmpq_numref(q);
+  const fmpz* d = fmpq_denref(q);
+  if (!COEFF_IS_MPZ(*n) && !COEFF_IS_MPZ(*d)) {
+    value = static_cast<double>(*n) / static_cast<double>(*d);
+  } else {
+    slong n_exp = 0, d_exp = 0;
+    const double n_mantissa = fmpz_get_d_2exp(&n_exp, n), d_mantissa = fmpz_get_d_2exp(&d_exp, d);
+    value = std::ldexp(n_mantissa / d_mantissa, static_cast<int>(std::clamp<slong>(n_exp - d_exp, -4000, 4000)));
+  }
   return true;
 }
 
@@ -224,6 +232,31 @@ bool plausible(const Integer& v, const Scaled& d, const DixonHint& hint, int j) 
   return within(value, lo, hi, std::max(std::abs(lo), std::abs(hi)));
 }
 
+// The least f in 2..kSmallFactor with f·d·x_j an integer, judged by the
+// hint, else 0: v ≡ d·x_j (mod M), 0 ≤ v < M, and f·v's symmetric residue
+// over f·d must lie in x_j's enclosure. A factor that d lacks is usually
+// small (2, 3, 4, 5 or 8 on the bench's LCPs: the combination's numerator
+// is divisible by a prime p of its denominator about once in p), and a
+// trial is one addition mod M, far cheaper than a reconstruction. Like
+// the reconstruction it goes before, it only proposes: the exact check
+// decides.
+constexpr int kSmallFactor = 16;
+int small_missing_factor(const Integer& v, const Scaled& d, const DixonHint& hint, int j, Workspace& ws) {
+  mpz_set(mp(ws.t), mp(v));  // f·v mod M
+  for (int f = 2; f <= kSmallFactor; ++f) {
+    mpz_add(mp(ws.t), mp(ws.t), mp(v));
+    if (mpz_cmp(mp(ws.t), mp(ws.modulus)) >= 0) mpz_sub(mp(ws.t), mp(ws.t), mp(ws.modulus));
+    if (mpz_cmp(mp(ws.t), mp(ws.half)) > 0)
+      mpz_sub(mp(ws.factor), mp(ws.t), mp(ws.modulus));
+    else
+      mpz_set(mp(ws.factor), mp(ws.t));
+    Scaled scaled = d;
+    scaled.mantissa *= f;
+    if (plausible(ws.factor, scaled, hint, j)) return f;
+  }
+  return 0;
+}
+
 // With x ≡ lifted (mod M): d from the rational reconstruction of a fixed
 // combination of the x_j (usually the lcm of their denominators), then
 // each u_j = d·x_j as the symmetric residue mod M. A u_j that fails the
@@ -234,7 +267,7 @@ bool plausible(const Integer& v, const Scaled& d, const DixonHint& hint, int j) 
 // is bounded by the hint's magnitude and the test is the hint's
 // enclosure; without, both are balanced: |u_j|·max(d, 2⁶⁴) < M/2.
 bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, bool in_words,
-                 std::vector<Integer>& u, Integer& d, Workspace& ws, const DixonHint* hint) {
+                 std::vector<Integer>& u, Integer& d, Workspace& ws, const DixonHint* hint, DixonTrace& record) {
   mpz_set_ui(mp(ws.combination), 0);
   for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
   mpz_mod(mp(ws.combination), mp(ws.combination), mp(ws.modulus));
@@ -282,14 +315,22 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
     const double lo_j = hint != nullptr ? hint->lo[j] * scale : 0, hi_j = hint != nullptr ? hint->hi[j] * scale : 0;
     const double bound_j = std::max(std::abs(lo_j), std::abs(hi_j));
     if (hint != nullptr && bound_j < 0x1p1000) {
-      // x_j·d's reconstruction, bounded by the hint and inside its
-      // enclosure (times d), else M is still too small.
+      // A small factor by trial; else x_j·d's reconstruction, bounded by
+      // the hint and inside its enclosure (times d), else M is still too
+      // small.
       double value = 0;
-      if (!reconstruct_denominator_bounded(v, bound_j, ws, ws.factor, value) || mpz_cmp_ui(mp(ws.factor), 1) == 0 ||
-          !within(value, lo_j, hi_j, bound_j))
-        return false;
-      mpz_mul(mp(d), mp(d), mp(ws.factor));
+      if (const int f = small_missing_factor(v, d_scaled, *hint, j, ws); f != 0) {
+        mpz_mul_ui(mp(d), mp(d), static_cast<unsigned long>(f));
+        ++record.factors_by_trial;
+      } else {
+        ++record.factors_by_reconstruction;
+        if (!reconstruct_denominator_bounded(v, bound_j, ws, ws.factor, value) || mpz_cmp_ui(mp(ws.factor), 1) == 0 ||
+            !within(value, lo_j, hi_j, bound_j))
+          return false;
+        mpz_mul(mp(d), mp(d), mp(ws.factor));
+      }
     } else {
+      ++record.factors_by_reconstruction;
       if (!reconstruct_denominator(v, ws, ws.t) || mpz_cmp_ui(mp(ws.t), 1) == 0) return false;
       mpz_mul(mp(d), mp(d), mp(ws.t));
       if (!small_denominator(d, ws)) return false;
@@ -398,8 +439,14 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       // the balanced reconstruction success.
       const bool last = step + 1 == limit;
       if (hint == nullptr && step == 0) continue;
+      // With a hint, none after the second step either: a two-limb
+      // reconstruction costs more than a lifting step, and on the seating
+      // LCPs it rarely succeeds where one limb failed (on 11% of the
+      // bench's solves; 58% need three steps). This costs time only:
+      // every later step tries.
+      if (hint != nullptr && step == 1 && !last) continue;
       ++record.attempts;
-      if (reconstruct(k, c, y, in_words, u, d, ws, last ? nullptr : hint)) return true;
+      if (reconstruct(k, c, y, in_words, u, d, ws, last ? nullptr : hint, record)) return true;
     }
     return false;  // beyond the bound: not expected (p ∤ det C), and the caller solves another way
   }

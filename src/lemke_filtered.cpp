@@ -18,6 +18,7 @@ namespace fixel::internal {
 namespace {
 
 std::atomic<long> g_dixon_values{0}, g_factored_values{0}, g_lifting_steps{0}, g_reconstructions{0};
+std::atomic<long> g_factors_by_trial{0}, g_factors_by_reconstruction{0};
 std::atomic<long> g_z0_settled{0}, g_z0_reruns{0};
 std::atomic<bool> g_defer_every_z0_comparison{false};
 
@@ -130,6 +131,8 @@ class FilteredRun {
         ++(equations_hold ? g_dixon_values : g_factored_values);
         g_lifting_steps += trace.steps;
         g_reconstructions += trace.attempts;
+        g_factors_by_trial += trace.factors_by_trial;
+        g_factors_by_reconstruction += trace.factors_by_reconstruction;
         if (!equations_hold) exact().basic_values(T_.rhs(), final_);
       }
       thread_local std::vector<int> row_of;
@@ -392,8 +395,16 @@ bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, Lem
 }
 
 FinalValueCounts final_value_counts() {
-  return {g_dixon_values.load(),    g_factored_values.load(), g_lifting_steps.load(),
-          g_reconstructions.load(), g_z0_settled.load(),      g_z0_reruns.load()};
+  FinalValueCounts counts;
+  counts.dixon = g_dixon_values;
+  counts.factored = g_factored_values;
+  counts.lifting_steps = g_lifting_steps;
+  counts.reconstructions = g_reconstructions;
+  counts.factors_by_trial = g_factors_by_trial;
+  counts.factors_by_reconstruction = g_factors_by_reconstruction;
+  counts.z0_settled = g_z0_settled;
+  counts.z0_reruns = g_z0_reruns;
+  return counts;
 }
 
 void reset_final_value_counts() {
@@ -401,6 +412,8 @@ void reset_final_value_counts() {
   g_factored_values = 0;
   g_lifting_steps = 0;
   g_reconstructions = 0;
+  g_factors_by_trial = 0;
+  g_factors_by_reconstruction = 0;
   g_z0_settled = 0;
   g_z0_reruns = 0;
 }

@@ -351,6 +351,71 @@ GTEST_TEST(DixonSolve, StopsLiftingEarlierWithAHint) {
   EXPECT_EQ(Rational(u[0], d), Rational(1, 3));
 }
 
+GTEST_TEST(DixonSolve, FindsASmallFactorTheFirstDenominatorLacksByTrial) {
+  // x = (1/2, 1/4): the combination x_0 + 2·x_1 = 1 has denominator 1, so
+  // d = 1 lacks 2 for x_0 (d becomes 2), then 2 for x_1 (d becomes 4),
+  // both found by trial against the hint, no reconstruction of x_j·d.
+  System s;
+  s.k = 2;
+  s.c = {Integer(2), Integer(0), Integer(0), Integer(4)};
+  s.y = {Integer(1), Integer(1)};
+  VectorQ x(2);
+  x << Rational(1, 2), Rational(1, 4);
+  const DixonHint hint = hint_from(x);
+  std::vector<Integer> u;
+  Integer d;
+  DixonTrace trace;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, &hint, &trace));
+  EXPECT_EQ(d, Integer(4));
+  EXPECT_EQ(Rational(u[0], d), x[0]);
+  EXPECT_EQ(Rational(u[1], d), x[1]);
+  EXPECT_EQ(trace.factors_by_trial, 2);
+  EXPECT_EQ(trace.factors_by_reconstruction, 0);
+}
+
+GTEST_TEST(DixonSolve, ReconstructsAFactorTheFirstDenominatorLacksWhenTrialCannotFindIt) {
+  // x = (1/17, 8/17): x_0 + 2·x_1 = 1 again, and the factor d lacks for
+  // x_0 is 17, above the trials (2 to 16): x_0·d's reconstruction finds it,
+  // and then x_1·17 = 8 needs nothing.
+  System s;
+  s.k = 2;
+  s.c = {Integer(17), Integer(0), Integer(0), Integer(17)};
+  s.y = {Integer(1), Integer(8)};
+  VectorQ x(2);
+  x << Rational(1, 17), Rational(8, 17);
+  const DixonHint hint = hint_from(x);
+  std::vector<Integer> u;
+  Integer d;
+  DixonTrace trace;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, &hint, &trace));
+  EXPECT_EQ(d, Integer(17));
+  EXPECT_EQ(Rational(u[0], d), x[0]);
+  EXPECT_EQ(Rational(u[1], d), x[1]);
+  EXPECT_EQ(trace.factors_by_trial, 0);
+  EXPECT_EQ(trace.factors_by_reconstruction, 1);
+}
+
+GTEST_TEST(DixonSolve, WithAHintTriesAfterTheFirstStepThenFromTheThird) {
+  // x = 1/D with D = 2^40 + 15: one prime's modulus (about 2^62) is below
+  // 8·2·D², two primes' (2^124) is above it, but with a hint the attempt
+  // after the second step is skipped, so the answer comes after the third:
+  // 3 steps, 2 attempts. Hadamard's bound allows 4 steps here, so the
+  // third is not the last (which always tries).
+  const Integer D = (Integer(1) << 40) + 15;
+  System s;
+  s.k = 1;
+  s.c = {D};
+  s.y = {Integer(1)};
+  const DixonHint hint = hint_from(VectorQ::Constant(1, Rational(Integer(1), D)));
+  std::vector<Integer> u;
+  Integer d;
+  DixonTrace trace;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, &hint, &trace));
+  EXPECT_EQ(Rational(u[0], d), Rational(Integer(1), D));
+  EXPECT_EQ(trace.steps, 3);
+  EXPECT_EQ(trace.attempts, 2);
+}
+
 GTEST_TEST(DixonSolve, NeedsNoMoreStepsWithAHintWhenTheValuesAreHuge) {
   // 200-bit entries: denominators of about 1,000 bits, past double range.
   // The hint's tests must not overflow into rejecting every candidate

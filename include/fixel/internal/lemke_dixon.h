@@ -30,6 +30,9 @@ struct DixonTrace {
   int steps = 0;       // lifting steps made with the prime that answered
   int attempts = 0;    // reconstructions tried (each a rational reconstruction or more)
   bool words = false;  // whether the lifting ran in machine words (small entries) rather than GMP
+  // Factors the combination's denominator d lacked, for some x_j: found by
+  // trial of 2..16 against the hint, or by a reconstruction of d·x_j.
+  int factors_by_trial = 0, factors_by_reconstruction = 0;
 };
 
 // Test switch: with `on` false, dixon_solve lifts with GMP even when the
@@ -53,7 +56,8 @@ bool dixon_accepts(int k, const std::vector<const Integer*>& c, const std::vecto
 // reconstruction passed that check within the lifting steps that
 // Hadamard's bound says suffice: the caller then solves another way.
 // The pointers must stay valid during the call. `hint` (k enclosures, or
-// null) lets reconstruction start earlier (docs/theory.md §6).
+// null) lets reconstruction start earlier: after the first step, then
+// from the third on (docs/theory.md §6).
 bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
                  std::vector<Integer>& u, Integer& d, const DixonHint* hint = nullptr, DixonTrace* trace = nullptr);
 

@@ -40,7 +40,8 @@ bool filtered_lemke_path(const MatrixQ& B, const VectorQ& b, int max_pivots, Lem
 // final values' signs, or rerun because a value was negative.
 struct FinalValueCounts {
   long dixon = 0, factored = 0;
-  long lifting_steps = 0, reconstructions = 0;  // summed over the dixon runs (DixonTrace)
+  long lifting_steps = 0, reconstructions = 0;               // summed over the dixon runs (DixonTrace)
+  long factors_by_trial = 0, factors_by_reconstruction = 0;  // likewise
   long z0_settled = 0, z0_reruns = 0;
 };
 FinalValueCounts final_value_counts();
