@@ -208,7 +208,7 @@ void check_design(const Scene& part, const DesignOptions& o) {
     throw InputError("DesignOptions.jobs", std::to_string(o.jobs), "must be between 0 (one per core) and 256");
   if (o.push == DesignPush::kStep && o.mu_hi)
     throw UnsupportedError("DesignOptions.mu", to_string(o.mu) + "," + to_string(*o.mu_hi),
-                           "is an interval: the one-step ranking (--push step) needs one value");
+                           "is an interval: the one-step ranking (push step) needs one value");
 }
 
 void rank_layouts(std::vector<DesignLayout>& layouts, int top) {

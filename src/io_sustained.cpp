@@ -320,9 +320,9 @@ namespace {
 // (a Rational of an infinite double would abort in GMP).
 Rational drawable(double x) {
   if (!std::isfinite(x))
-    throw InputError("dump --off --sustained", std::to_string(x),
-                     "a row of J is beyond double range: the scene's numbers are too large to draw (seat --sustained "
-                     "--json gives J exactly)");
+    throw InputError("J", std::to_string(x),
+                     "a row of J is beyond double range: the scene's numbers are too large to draw (J itself is "
+                     "exact: sustained_json gives it)");
   return Rational(x);
 }
 

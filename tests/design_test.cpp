@@ -193,6 +193,25 @@ GTEST_TEST(Design, RankedByTheOneStepPushATripleWithoutFormClosureIsScoredAsItsR
   EXPECT_EQ(*r.layouts[0].step_score, Rational(119, 320));
 }
 
+// The one-step ranking takes one μ: an interval is refused naming the
+// option's field, in the library's words (the message named the CLI's
+// "--push step").
+GTEST_TEST(Design, TheOneStepRankingRefusesAFrictionIntervalNamingIt) {
+  const Scene part = pentagon();
+  DesignOptions o = pentagon_options();
+  o.push = DesignPush::kStep;
+  o.mu_hi = o.mu + Rational(1, 10);
+  try {
+    design(part, pentagon_candidates(part), o);
+    ADD_FAILURE() << "no UnsupportedError";
+  } catch (const UnsupportedError& e) {
+    EXPECT_EQ(e.field(), "DesignOptions.mu");
+    EXPECT_EQ(e.value(), to_string(o.mu) + "," + to_string(*o.mu_hi));
+    EXPECT_EQ(std::string(e.what()),
+              "DesignOptions.mu: " + e.value() + " is an interval: the one-step ranking (push step) needs one value");
+  }
+}
+
 bool same(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
 // The same pentagon layout through design_scene: field for field the scene
 // written by hand above, and its region gives the one-step score again.

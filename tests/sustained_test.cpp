@@ -509,6 +509,21 @@ GTEST_TEST(SustainedSet, ItsWritersRefuseAJOrJPrimeOfAnotherSceneNamingItAndWrit
   EXPECT_EQ(test::input_error_of([&] { sustained_text(moved, J_moved, std::nullopt); }), "(no InputError)");
 }
 
+// J's picture needs its rows in doubles: a centre of mass at ±10^308
+// puts them past double range, and the refusal names J (it named the
+// CLI's "dump --off --sustained"), with nothing written.
+GTEST_TEST(SustainedSet, ItsPictureRefusesRowsBeyondDoubleRangeNamingJ) {
+  Scene far = scene_file("polygon");
+  far.body.p_AoCm_A = Vec2{parse_rational("1e308"), parse_rational("-1e308")};
+  const SustainedSet J = sustained_set(far);
+  const auto dir = std::filesystem::temp_directory_path() / "fixel_sustained_beyond_doubles";
+  std::filesystem::remove_all(dir);
+  const std::string e = test::input_error_of([&] { dump_sustained_off(far, J, dir.string()); });
+  EXPECT_EQ(e.substr(0, e.find(':')), "J") << e;
+  EXPECT_NE(e.find("a row of J is beyond double range"), std::string::npos) << e;
+  EXPECT_FALSE(std::filesystem::exists(dir / "sustained.off"));
+}
+
 GTEST_TEST(SustainedRegion, ATargetOfAnotherSceneIsRefusedNamingItsSet) {
   const Scene polygon = scene_file("polygon");
   Scene moved = polygon;
