@@ -52,8 +52,8 @@ struct Fmpq {
 };
 
 // Storage reused from call to call (one per thread). The FLINT values
-// keep their limbs too: made afresh per reconstruction, a value of more
-// than 62 bits took and gave back one of FLINT's pooled integers each time.
+// live here too rather than per reconstruction: fewer of FLINT's pooled
+// integers taken and given back (a value of more than 62 bits holds one).
 struct Workspace {
   Fmpz residue, flint_modulus, num_bound, den_bound;
   Fmpq reconstructed;
@@ -235,7 +235,7 @@ bool plausible(const Integer& v, const Scaled& d, const DixonHint& hint, int j) 
 // The least f in 2..kSmallFactor with f·d·x_j an integer, judged by the
 // hint, else 0: v ≡ d·x_j (mod M), 0 ≤ v < M, and f·v's symmetric residue
 // over f·d must lie in x_j's enclosure. A factor that d lacks is usually
-// small (2, 3, 4, 5 or 8 on the bench's LCPs: the combination's numerator
+// small (on the bench's LCPs mostly 2, 3, 4, 5 or 8: the combination's numerator
 // is divisible by a prime p of its denominator about once in p), and a
 // trial is one addition mod M, far cheaper than a reconstruction. Like
 // the reconstruction it goes before, it only proposes: the exact check
@@ -292,6 +292,7 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
   }
   ws.candidate.resize(k);
   Scaled d_scaled(d);
+  int by_trial = 0, by_reconstruction = 0;  // into the trace if this attempt answers
   for (int grown = 0, j = 0; j < k; ++j) {
     Integer& v = ws.candidate[j];
     mpz_mul(mp(v), mp(ws.lifted[j]), mp(d));
@@ -321,16 +322,16 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
       double value = 0;
       if (const int f = small_missing_factor(v, d_scaled, *hint, j, ws); f != 0) {
         mpz_mul_ui(mp(d), mp(d), static_cast<unsigned long>(f));
-        ++record.factors_by_trial;
+        ++by_trial;
       } else {
-        ++record.factors_by_reconstruction;
+        ++by_reconstruction;
         if (!reconstruct_denominator_bounded(v, bound_j, ws, ws.factor, value) || mpz_cmp_ui(mp(ws.factor), 1) == 0 ||
             !within(value, lo_j, hi_j, bound_j))
           return false;
         mpz_mul(mp(d), mp(d), mp(ws.factor));
       }
     } else {
-      ++record.factors_by_reconstruction;
+      ++by_reconstruction;
       if (!reconstruct_denominator(v, ws, ws.t) || mpz_cmp_ui(mp(ws.t), 1) == 0) return false;
       mpz_mul(mp(d), mp(d), mp(ws.t));
       if (!small_denominator(d, ws)) return false;
@@ -342,6 +343,8 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
   if (!accepts(k, c, y, in_words, ws.candidate, d, ws.modulus, ws)) return false;
   u.resize(k);
   for (int j = 0; j < k; ++j) mpz_swap(mp(u[j]), mp(ws.candidate[j]));
+  record.factors_by_trial += by_trial;
+  record.factors_by_reconstruction += by_reconstruction;
   return true;
 }
 
@@ -442,8 +445,8 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       // With a hint, none after the second step either: a two-limb
       // reconstruction costs more than a lifting step, and on the seating
       // LCPs it rarely succeeds where one limb failed (on 11% of the
-      // bench's solves; 58% need three steps). This costs time only:
-      // every later step tries.
+      // bench's solves; 57% need three steps, 2% four). This costs time
+      // only: every later step tries.
       if (hint != nullptr && step == 1 && !last) continue;
       ++record.attempts;
       if (reconstruct(k, c, y, in_words, u, d, ws, last ? nullptr : hint, record)) return true;

@@ -395,6 +395,31 @@ GTEST_TEST(DixonSolve, ReconstructsAFactorTheFirstDenominatorLacksWhenTrialCanno
   EXPECT_EQ(trace.factors_by_reconstruction, 1);
 }
 
+GTEST_TEST(DixonSolve, CountsTheMissingFactorsOfTheAttemptThatAnswersOnly) {
+  // x = (1/D, (D − 1)/(2D)), D = 2^40 + 15 (odd): x_0 + 2·x_1 = 1, so d = 1
+  // lacks D for x_0. After the first step D's reconstruction fails (the
+  // modulus is too small); after the third it succeeds, and x_1·D is
+  // then an integer. One factor, found once: the failed try is not
+  // counted.
+  const Integer D = (Integer(1) << 40) + 15;
+  System s;
+  s.k = 2;
+  s.c = {D, Integer(0), Integer(0), Integer(2 * D)};
+  s.y = {Integer(1), Integer(D - 1)};
+  VectorQ x(2);
+  x << Rational(Integer(1), D), Rational(Integer(D - 1), Integer(2 * D));
+  const DixonHint hint = hint_from(x);
+  std::vector<Integer> u;
+  Integer d;
+  DixonTrace trace;
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u, d, &hint, &trace));
+  EXPECT_EQ(Rational(u[0], d), x[0]);
+  EXPECT_EQ(Rational(u[1], d), x[1]);
+  EXPECT_EQ(trace.attempts, 2);
+  EXPECT_EQ(trace.factors_by_trial, 0);
+  EXPECT_EQ(trace.factors_by_reconstruction, 1);
+}
+
 GTEST_TEST(DixonSolve, WithAHintTriesAfterTheFirstStepThenFromTheThird) {
   // x = 1/D with D = 2^40 + 15: one prime's modulus (about 2^62) is below
   // 8·2·D², two primes' (2^124) is above it, but with a hint the attempt

@@ -103,29 +103,41 @@ GTEST_TEST(ScaledProblem, ScalesRowsWhoseLcmPassesAMachineWordAsDefined) {
 
 GTEST_TEST(ScaledProblem, ScalesRightHandSidesWithDenominatorsBeyondAWordAsDefined) {
   // As on the seating LCPs' normal rows: L_i of about 40 bits (two 20-bit
-  // denominators per row of B) and den(b_i) = L_i·q·2^30 of about 90 bits,
-  // sharing L_i, so that δ = q·2^30 is a word. Then den(b_i) with a 70-bit
-  // part of its own (δ beyond a word), and with three limbs. Each must
-  // give the entries as defined, whichever path computes them.
+  // denominators per row of B; odd rows negate the row before, as the
+  // friction rows come in pairs, and half of them repeat its b) and
+  // den(b_i) a multiple of L_i by q·2^30, about 90 bits, so that δ = q·2^30
+  // is a word (kind 0). Then den(b_i) with a part of its own past 2^64
+  // (kind 1), of three limbs (kind 2), with 41-bit parts of its own whose
+  // lcm passes 2^64 (kind 3), and coprime to L_i with δ of 62 bits, so
+  // that (L_i/g)·(δ/den) passes a word (kind 4). Each must give the
+  // entries as defined, whichever path computes them.
   std::mt19937_64 rng(14);
   std::uniform_int_distribution<long long> twenty_bits(1LL << 19, (1LL << 20) - 1), numerator(-99999, 99999);
-  for (int trial = 0; trial < 120; ++trial) {
+  for (int trial = 0; trial < 150; ++trial) {
     const int n = 2 + trial % 6;
-    const int kind = trial % 3;
+    const int kind = trial % 5;
     const Integer q(twenty_bits(rng));
     MatrixQ B(n, n);
     VectorQ b(n);
     for (int i = 0; i < n; ++i) {
       const long long den[2] = {twenty_bits(rng), twenty_bits(rng)};
-      for (int j = 0; j < n; ++j) B(i, j) = Rational(numerator(rng), den[j % 2]);
-      const Rational top(numerator(rng));
+      for (int j = 0; j < n; ++j) B(i, j) = i % 2 ? Rational(-B(i - 1, j)) : Rational(numerator(rng), den[j % 2]);
+      if (i % 2 && rng() % 2) {
+        b[i] = -b[i - 1];
+        continue;
+      }
+      const Rational top(numerator(rng) | 1);
+      const Integer L = row_lcm(B, i);
       if (kind == 0)
-        b[i] = top / Rational(row_lcm(B, i) * q * (Integer(1) << 30));
+        b[i] = top / Rational(L * q * (Integer(1) << 30));
       else if (kind == 1)
-        b[i] = top / Rational(row_lcm(B, i) * ((Integer(1) << 70) + Integer(twenty_bits(rng))));
-      else
+        b[i] = top / Rational(L * ((Integer(1) << 70) + Integer(twenty_bits(rng))));
+      else if (kind == 2)
         b[i] = top / Rational((Integer(1) << 130) + Integer(twenty_bits(rng)));
-      if (i % 3 == 2) b[i] = b[i - 1];
+      else if (kind == 3)
+        b[i] = top / Rational(L * ((Integer(1) << 40) + Integer(2 * twenty_bits(rng) + 1)));
+      else
+        b[i] = top / Rational(i % 4 < 2 ? Integer(3) : q * q * q);  // δ = 3·q³ (61–62 bits)
     }
     SCOPED_TRACE("trial " + std::to_string(trial));
     expect_scaled_as_defined(B, b);

@@ -30,8 +30,9 @@ struct DixonTrace {
   int steps = 0;       // lifting steps made with the prime that answered
   int attempts = 0;    // reconstructions tried (each a rational reconstruction or more)
   bool words = false;  // whether the lifting ran in machine words (small entries) rather than GMP
-  // Factors the combination's denominator d lacked, for some x_j: found by
-  // trial of 2..16 against the hint, or by a reconstruction of d·x_j.
+  // Factors the combination's denominator d lacked, for some x_j, in the
+  // attempt that answered: found by trial of 2..16 against the hint, or by
+  // a reconstruction of d·x_j.
   int factors_by_trial = 0, factors_by_reconstruction = 0;
 };
 
