@@ -61,6 +61,14 @@ struct Workspace {
   std::vector<mp_limb_t> digit, rhs;
   std::vector<Integer> residual, lifted, candidate;
   Integer modulus, half, t, combination, factor;
+  // The lifted x as base-p digits (digit t of x_j at digits[t·k + j]);
+  // `lifted` holds the first lifted_steps of them as integers, made only
+  // when a modulus of more than kPadicDigits steps needs them.
+  nmod_t mod{};
+  std::vector<mp_limb_t> digits;
+  int lifted_steps = 0;
+  Integer lifted_modulus;  // p^lifted_steps
+  mp_limb_t d_digits[kPadicDigits] = {}, x_digits[kPadicDigits] = {}, u_digits[kPadicDigits] = {};
   // The word path's system and residual (internal/lemke_dixon_words.h).
   std::vector<std::int64_t> c_words;
   std::vector<Int128> y_words, residual_words;
@@ -257,6 +265,29 @@ int small_missing_factor(const Integer& v, const Scaled& d, const DixonHint& hin
   return 0;
 }
 
+// ws.lifted as integers from the first `steps` digits (the digits not
+// folded in yet are added, as the lifting once did step by step).
+void fold_lifted_digits(int k, int steps, Workspace& ws) {
+  for (; ws.lifted_steps < steps; ++ws.lifted_steps) {
+    const mp_limb_t* row = &ws.digits[static_cast<std::size_t>(ws.lifted_steps) * k];
+    for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.lifted[j]), mp(ws.lifted_modulus), row[j]);
+    mpz_mul_ui(mp(ws.lifted_modulus), mp(ws.lifted_modulus), ws.mod.n);
+  }
+}
+
+// d·x_j's residue mod M = p^steps in [0, M) into v: from the digits when
+// steps ≤ kPadicDigits (ws.d_digits holding d's), else from the integers.
+void residue_of_product(int j, int k, int steps, const Integer& d, Workspace& ws, Integer& v) {
+  if (steps > kPadicDigits) {
+    mpz_mul(mp(v), mp(ws.lifted[j]), mp(d));
+    mpz_mod(mp(v), mp(v), mp(ws.modulus));
+    return;
+  }
+  for (int t = 0; t < steps; ++t) ws.x_digits[t] = ws.digits[static_cast<std::size_t>(t) * k + j];
+  padic_product(ws.x_digits, ws.d_digits, steps, ws.mod, ws.u_digits);
+  from_padic(ws.u_digits, steps, ws.mod, v);
+}
+
 // With x ≡ lifted (mod M): d from the rational reconstruction of a fixed
 // combination of the x_j (usually the lcm of their denominators), then
 // each u_j = d·x_j as the symmetric residue mod M. A u_j that fails the
@@ -266,11 +297,19 @@ int small_missing_factor(const Integer& v, const Scaled& d, const DixonHint& hin
 // garbage from reaching it. With a hint, the combination's reconstruction
 // is bounded by the hint's magnitude and the test is the hint's
 // enclosure; without, both are balanced: |u_j|·max(d, 2⁶⁴) < M/2.
-bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y, bool in_words,
-                 std::vector<Integer>& u, Integer& d, Workspace& ws, const DixonHint* hint, DixonTrace& record) {
-  mpz_set_ui(mp(ws.combination), 0);
-  for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
-  mpz_mod(mp(ws.combination), mp(ws.combination), mp(ws.modulus));
+bool reconstruct(int k, int steps, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                 bool in_words, std::vector<Integer>& u, Integer& d, Workspace& ws, const DixonHint* hint,
+                 DixonTrace& record) {
+  const bool padic = steps <= kPadicDigits;
+  if (padic) {
+    padic_weighted_sum(ws.digits.data(), k, steps, ws.mod, ws.u_digits);
+    from_padic(ws.u_digits, steps, ws.mod, ws.combination);
+  } else {
+    fold_lifted_digits(k, steps, ws);
+    mpz_set_ui(mp(ws.combination), 0);
+    for (int j = 0; j < k; ++j) mpz_addmul_ui(mp(ws.combination), mp(ws.lifted[j]), static_cast<unsigned long>(j + 1));
+    mpz_mod(mp(ws.combination), mp(ws.combination), mp(ws.modulus));
+  }
   mpz_fdiv_q_2exp(mp(ws.half), mp(ws.modulus), 1);
   double bound = 0, lo = 0, hi = 0;  // bound ≥ |Σ (j + 1) x_j|, [lo, hi] ∋ Σ (j + 1) x_j
   if (hint != nullptr) {
@@ -292,11 +331,11 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
   }
   ws.candidate.resize(k);
   Scaled d_scaled(d);
+  if (padic) padic_digits(mp(d), steps, ws.mod, ws.d_digits);
   int by_trial = 0, by_reconstruction = 0;  // into the trace if this attempt answers
   for (int grown = 0, j = 0; j < k; ++j) {
     Integer& v = ws.candidate[j];
-    mpz_mul(mp(v), mp(ws.lifted[j]), mp(d));
-    mpz_mod(mp(v), mp(v), mp(ws.modulus));
+    residue_of_product(j, k, steps, d, ws, v);
     if (mpz_cmp(mp(v), mp(ws.half)) > 0) mpz_sub(mp(v), mp(v), mp(ws.modulus));
     if (hint != nullptr) {
       if (plausible(v, d_scaled, *hint, j)) continue;
@@ -337,6 +376,7 @@ bool reconstruct(int k, const std::vector<const Integer*>& c, const std::vector<
       if (!small_denominator(d, ws)) return false;
     }
     d_scaled = Scaled(d);
+    if (padic) padic_digits(mp(d), steps, ws.mod, ws.d_digits);
     j = -1;  // d changed: every u_j again
   }
   // C·u ≡ d·y (mod M) holds by construction: C·x̄ ≡ y and u ≡ d·x̄.
@@ -373,10 +413,17 @@ int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<co
 }  // namespace
 
 void set_dixon_words_allowed(bool on) { g_words_allowed = on; }
+bool dixon_words_allowed() { return g_words_allowed; }
 
 bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
-                 std::vector<Integer>& u, Integer& d, const DixonHint* hint, DixonTrace* trace) {
-  if (k < 0 || c.size() != static_cast<std::size_t>(k) * k || y.size() != static_cast<std::size_t>(k)) return false;
+                 std::vector<Integer>& u, Integer& d, const DixonHint* hint, DixonTrace* trace,
+                 const std::vector<std::int64_t>* c_words) {
+  const auto entries = static_cast<std::size_t>(k) * k;
+  // c may be empty when c_words is given: then y must fit words too (the
+  // integers of C are never read on the word path).
+  const bool words_given = c_words != nullptr && c_words->size() == entries && k <= kWordRows;
+  if (k < 0 || y.size() != static_cast<std::size_t>(k) || !(c.size() == entries || (c.empty() && words_given)))
+    return false;
   if (hint != nullptr && (hint->lo.size() != static_cast<std::size_t>(k) || hint->hi.size() != hint->lo.size()))
     hint = nullptr;  // not this system's: ignored
   DixonTrace ignored;
@@ -388,7 +435,14 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     mpz_set_ui(mp(d), 1);
     return true;
   }
-  const bool in_words = g_words_allowed && block_in_words(k, c, y, ws.c_words, ws.y_words);
+  bool in_words = false;
+  if (words_given) {
+    ws.c_words = *c_words;
+    in_words = g_words_allowed && rhs_in_words(k, y, ws.y_words);
+  } else {
+    in_words = g_words_allowed && block_in_words(k, c, y, ws.c_words, ws.y_words);
+  }
+  if (!in_words && c.empty()) return false;  // the GMP path needs C's integers
   for (const std::uint64_t prime : dixon_primes()) {
     nmod_t mod;
     nmod_init(&mod, prime);
@@ -406,9 +460,14 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       mpz_set_ui(mp(ws.lifted[a]), 0);
     }
     mpz_set_ui(mp(ws.modulus), 1);
+    ws.mod = mod;
+    ws.digits.clear();
+    ws.lifted_steps = 0;
+    mpz_set_ui(mp(ws.lifted_modulus), 1);
     record = DixonTrace{};
     record.words = in_words;
-    // Invariant: C·lifted + modulus·residual = y, lifted < modulus entrywise.
+    // Invariant: C·x̄ + modulus·residual = y, x̄ = Σ_t digit_t·p^t below
+    // modulus entrywise (the digits kept in ws.digits).
     // It is checked, not assumed: each division by p is of a number p
     // is seen to divide (a wrong digit would stop the solve), and the
     // acceptance test (accepts) relies on it.
@@ -418,11 +477,8 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       for (int a = 0; a < k; ++a)
         ws.rhs[a] = in_words ? residue(ws.residual_words[a], mod) : residue(ws.residual[a], mod);
       ws.lu.solve(ws.rhs, ws.digit);
+      ws.digits.insert(ws.digits.end(), ws.digit.begin(), ws.digit.end());  // x's digit `step`
       for (int a = 0; a < k; ++a) {
-        if (step == 0)
-          mpz_set_ui(mp(ws.lifted[a]), ws.digit[a]);  // the modulus is still 1
-        else
-          mpz_addmul_ui(mp(ws.lifted[a]), mp(ws.modulus), ws.digit[a]);
         const std::size_t row = static_cast<std::size_t>(a) * k;
         if (in_words) {
           // r ← (r − Σ_j C(a, j)·digit_j)/p, exact: times 1/p modulo 2^128.
@@ -449,7 +505,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
       // only: every later step tries.
       if (hint != nullptr && step == 1 && !last) continue;
       ++record.attempts;
-      if (reconstruct(k, c, y, in_words, u, d, ws, last ? nullptr : hint, record)) return true;
+      if (reconstruct(k, step + 1, c, y, in_words, u, d, ws, last ? nullptr : hint, record)) return true;
     }
     return false;  // beyond the bound: not expected (p ∤ det C), and the caller solves another way
   }

@@ -23,6 +23,12 @@ bool block_in_words(int k, const std::vector<const Integer*>& c, const std::vect
     c_words[e] = (static_cast<std::int64_t>(m) ^ negative) - negative;
   }
   if (too_large != 0) return false;
+  return rhs_in_words(k, y, y_words);
+}
+
+bool rhs_in_words(int k, const std::vector<const Integer*>& y, std::vector<Int128>& y_words) {
+  if (k > kWordRows || y.size() != static_cast<std::size_t>(k)) return false;
+  mp_limb_t too_large = 0;
   y_words.resize(k);
   for (int a = 0; a < k; ++a) {
     const mpz_srcptr z = mp(*y[a]);
@@ -41,6 +47,113 @@ mp_limb_t residue(const Integer& x, nmod_t mod) {
   mp_limb_t r = 0;
   for (std::size_t i = mpz_size(z); i-- > 0;) NMOD_RED2(r, r, mpz_getlimbn(z, i), mod);
   return mpz_sgn(z) < 0 ? nmod_neg(r, mod) : r;
+}
+
+bool dot_in_words(int k, const mpz_srcptr* a, const std::vector<Integer>& u, Integer& sum) {
+  if (k > kWordRows || u.size() < static_cast<std::size_t>(k)) return false;
+  std::uint64_t limb[4] = {0, 0, 0, 0};  // the sum, two's complement mod 2^256
+  mp_limb_t too_large = 0;
+  for (int c = 0; c < k; ++c) {
+    const mpz_srcptr x = a[c], y = mp(u[c]);
+    too_large |= static_cast<mp_limb_t>(x->_mp_size > 1 || x->_mp_size < -1) |
+                 static_cast<mp_limb_t>(y->_mp_size > 2 || y->_mp_size < -2);
+    const std::uint64_t a_abs = static_cast<std::uint64_t>(low_128(x));
+    const UInt128 u_abs = low_128(y);
+    too_large |= static_cast<mp_limb_t>(a_abs >> 63) | static_cast<mp_limb_t>(u_abs >> 127);
+    // |a·u| in three limbs, then added or (by the mask) subtracted.
+    const UInt128 low = static_cast<UInt128>(a_abs) * static_cast<std::uint64_t>(u_abs);
+    const UInt128 high = static_cast<UInt128>(a_abs) * static_cast<std::uint64_t>(u_abs >> 64);
+    const UInt128 middle = (low >> 64) + static_cast<std::uint64_t>(high);
+    const std::uint64_t product[4] = {static_cast<std::uint64_t>(low), static_cast<std::uint64_t>(middle),
+                                      static_cast<std::uint64_t>(high >> 64) + static_cast<std::uint64_t>(middle >> 64),
+                                      0};
+    const std::uint64_t negative = (x->_mp_size < 0) != (y->_mp_size < 0) ? ~std::uint64_t(0) : 0;
+    UInt128 carry = negative & 1;  // −m = ~m + 1
+    for (int l = 0; l < 4; ++l) {
+      carry += static_cast<UInt128>(limb[l]) + (product[l] ^ negative);
+      limb[l] = static_cast<std::uint64_t>(carry);
+      carry >>= 64;
+    }
+  }
+  if (too_large != 0) return false;
+  const std::uint64_t negative = (limb[3] >> 63) != 0 ? ~std::uint64_t(0) : 0;
+  UInt128 carry = negative & 1;
+  mp_limb_t* out = mpz_limbs_write(mp(sum), 4);
+  int size = 0;
+  for (int l = 0; l < 4; ++l) {
+    carry += limb[l] ^ negative;
+    out[l] = static_cast<mp_limb_t>(carry);
+    carry >>= 64;
+    if (out[l] != 0) size = l + 1;
+  }
+  mpz_limbs_finish(mp(sum), negative != 0 ? -size : size);
+  return true;
+}
+
+namespace {
+
+// q = ⌊c/p⌋ and r = c mod p, for c < p·2^64 (its high word below p, so q is
+// one word): FLINT's preinverted division on the normalised divisor.
+inline void divide_by_p(UInt128 c, nmod_t mod, mp_limb_t& q, mp_limb_t& r) {
+  const auto high = static_cast<mp_limb_t>(c >> 64), low = static_cast<mp_limb_t>(c);
+  const mp_limb_t shifted_high = (high << mod.norm) + r_shift(low, FLINT_BITS - mod.norm);
+  udiv_qrnnd_preinv(q, r, shifted_high, low << mod.norm, mod.n << mod.norm, mod.ninv);
+  r >>= mod.norm;
+}
+
+}  // namespace
+
+void padic_digits(mpz_srcptr x, int s, nmod_t mod, mp_limb_t* digits) {
+  thread_local Integer rest;
+  mpz_set(mp(rest), x);
+  for (int t = 0; t < s; ++t) digits[t] = mpz_fdiv_q_ui(mp(rest), mp(rest), mod.n);
+}
+
+void padic_product(const mp_limb_t* a, const mp_limb_t* b, int s, nmod_t mod, mp_limb_t* out) {
+  // Column t of the schoolbook product plus the carry is below
+  // (t + 1)·p² + t·p < 2^126 (p < 2^62, t ≤ 3): a 128-bit word, and for
+  // t ≤ 2 its high word is below 3p/4 + 1 < p. The last column's carry
+  // falls outside p^s: only its residue is kept.
+  UInt128 carry = 0;
+  for (int t = 0; t < s; ++t) {
+    UInt128 column = carry;
+    for (int i = 0; i <= t; ++i) column += static_cast<UInt128>(a[i]) * b[t - i];
+    if (t + 1 == s) {
+      out[t] = reduce_128(column, mod);
+      break;
+    }
+    mp_limb_t q = 0;
+    divide_by_p(column, mod, q, out[t]);
+    carry = q;
+  }
+}
+
+void padic_weighted_sum(const mp_limb_t* digits, int k, int s, nmod_t mod, mp_limb_t* out) {
+  // Column t is below k(k + 1)/2·p + carry < 2^40·p: its high word < p.
+  UInt128 carry = 0;
+  for (int t = 0; t < s; ++t) {
+    UInt128 column = carry;
+    const mp_limb_t* row = digits + static_cast<std::size_t>(t) * k;
+    for (int j = 0; j < k; ++j) column += static_cast<UInt128>(row[j]) * static_cast<mp_limb_t>(j + 1);
+    mp_limb_t q = 0;
+    divide_by_p(column, mod, q, out[t]);
+    carry = q;
+  }
+}
+
+void from_padic(const mp_limb_t* digits, int s, nmod_t mod, Integer& out) {
+  // Horner's rule on limbs: below p^s < 2^(62s), so s + 1 limbs suffice.
+  mp_limb_t value[kPadicDigits + 1] = {digits[s - 1]};
+  mp_size_t size = 1;
+  for (int t = s - 2; t >= 0; --t) {
+    const mp_limb_t high = mpn_mul_1(value, value, size, mod.n);
+    if (high != 0) value[size++] = high;
+    if (mpn_add_1(value, value, size, digits[t]) != 0) value[size++] = 1;
+  }
+  while (size > 0 && value[size - 1] == 0) --size;
+  mp_limb_t* limbs = mpz_limbs_write(mp(out), size > 0 ? size : 1);
+  for (mp_size_t l = 0; l < size; ++l) limbs[l] = value[l];
+  mpz_limbs_finish(mp(out), size);
 }
 
 UInt128 inverse_mod_2_128(std::uint64_t p) {

@@ -1,6 +1,8 @@
 #include "fixel/internal/lemke_exact.h"
 
 #include "fixel/error.h"
+#include "fixel/internal/lemke_dixon.h"
+#include "fixel/internal/lemke_dixon_words.h"
 
 namespace fixel::internal {
 
@@ -74,11 +76,24 @@ bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, c
     if (!w_basic[i]) rows.push_back(i);
   const int k = static_cast<int>(block_rows.size());
   if (static_cast<int>(rows.size()) != k) return false;
-  block.resize(static_cast<std::size_t>(k) * k);
   rhs.resize(k);
-  for (int a = 0; a < k; ++a) {
-    for (int c = 0; c < k; ++c) block[static_cast<std::size_t>(a) * k + c] = &P.entry(rows[a], basis[block_rows[c]]);
-    rhs[a] = &P.entry(rows[a], 2 * n + 1);
+  for (int a = 0; a < k; ++a) rhs[a] = &P.entry(rows[a], 2 * n + 1);
+  // The block as words from the matrix's copy (no conversion of its
+  // integers per solve) when it has one and y fits too: then lifting
+  // never reads the integers, and they are not gathered.
+  thread_local std::vector<std::int64_t> block_words;
+  thread_local std::vector<Int128> rhs_words;
+  const bool words = dixon_words_allowed() && P.in_words() && rhs_in_words(k, rhs, rhs_words);
+  if (words) {
+    block_words.resize(static_cast<std::size_t>(k) * k);
+    for (int a = 0; a < k; ++a)
+      for (int c = 0; c < k; ++c)
+        block_words[static_cast<std::size_t>(a) * k + c] = P.word(rows[a], basis[block_rows[c]]);
+    block.clear();
+  } else {
+    block.resize(static_cast<std::size_t>(k) * k);
+    for (int a = 0; a < k; ++a)
+      for (int c = 0; c < k; ++c) block[static_cast<std::size_t>(a) * k + c] = &P.entry(rows[a], basis[block_rows[c]]);
   }
   // The block's unknowns are δ times the basic z's.
   thread_local DixonHint hint;
@@ -89,14 +104,22 @@ bool dixon_basic_values(const ScaledProblem& P, const std::vector<int>& basis, c
     hint.lo[c] = rhs_lo[block_rows[c]] * delta;
     hint.hi[c] = rhs_hi[block_rows[c]] * delta;
   }
-  if (!dixon_solve(k, block, rhs, u, d, &hint, &trace)) return false;
+  if (!dixon_solve(k, block, rhs, u, d, &hint, &trace, words ? &block_words : nullptr)) return false;
   out.num.resize(n);
   for (int c = 0; c < k; ++c) mpz_set(mp(out.num[block_rows[c]]), mp(u[c]));
+  thread_local std::vector<mpz_srcptr> row;
+  thread_local Integer sum;
+  row.resize(k);
   for (int t = 0; t < n; ++t) {
     if (basis[t] >= n) continue;
     // L_i·δ·d·w_i = d·(L_i δ b_i) − Σ_c A(i, β_c)·u_c.
     const int i = basis[t];
     mpz_mul(mp(out.num[t]), mp(d), mp(P.entry(i, 2 * n + 1)));
+    for (int c = 0; c < k; ++c) row[c] = mp(P.entry(i, basis[block_rows[c]]));
+    if (dixon_words_allowed() && dot_in_words(k, row.data(), u, sum)) {  // the seating LCPs' usual case
+      mpz_sub(mp(out.num[t]), mp(out.num[t]), mp(sum));
+      continue;
+    }
     for (int c = 0; c < k; ++c) {
       if (mpz_sgn(mp(u[c])) == 0) continue;
       const mpz_srcptr a = mp(P.entry(i, basis[block_rows[c]]));

@@ -1,11 +1,13 @@
 #include "fixel/internal/lemke_interval.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace fixel::internal {
 
 IntervalTableau::IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static_cast<int>(b.size())), width_(n_ + 2) {
-  start();
+  start(true);
   for (int i = 0; i < n_; ++i) {
     for (int j = 0; j < n_; ++j)
       if (mpq_sgn(B(i, j).backend().data()) != 0) at_slot(i, j) = -enclosure(B(i, j));  // no Rational(0) temporary
@@ -16,14 +18,15 @@ IntervalTableau::IntervalTableau(const MatrixQ& B, const VectorQ& b) : n_(static
 }
 
 IntervalTableau::IntervalTableau(const IntervalRows& prepared, const VectorQ& b)
-    : n_(static_cast<int>(b.size())), width_(n_ + 2) {
-  start();
+    : n_(static_cast<int>(b.size())), width_(n_ + 2), prepared_(&prepared) {
+  start(false);
   const FI* row = prepared.rows.data();
+  first_rhs_.resize(n_);
   for (int i = 0; i < n_; ++i, row += n_ + 1) {
     std::copy(row, row + n_ + 1, &at_slot(i, 0));
-    at_slot(i, n_ + 1) = enclosure(b[i]);
+    at_slot(i, n_ + 1) = first_rhs_[i] = enclosure(b[i]);
   }
-  keep_initial();
+  initial_.clear();  // made when asked for (approx)
 }
 
 void IntervalRows::assign(const MatrixQ& B) {
@@ -37,8 +40,11 @@ void IntervalRows::assign(const MatrixQ& B) {
   }
 }
 
-void IntervalTableau::start() {
-  T_.assign(static_cast<std::size_t>(n_) * width_, FI(0));
+void IntervalTableau::start(bool zeros) {
+  if (zeros)
+    T_.assign(static_cast<std::size_t>(n_) * width_, FI(0));
+  else
+    T_.resize(static_cast<std::size_t>(n_) * width_);
   basis_.resize(n_);
   for (int i = 0; i < n_; ++i) basis_[i] = i;
   slot_.assign(2 * n_ + 2, -1);
@@ -50,8 +56,16 @@ void IntervalTableau::start() {
 }
 
 void IntervalTableau::keep_initial() {
-  initial_.resize(T_.size());
-  for (std::size_t k = 0; k < T_.size(); ++k) initial_[k] = T_[k].inf();  // width_ = n + 2: ApproxProblem's layout
+  initial_.resize(static_cast<std::size_t>(n_) * width_);  // width_ = n + 2: ApproxProblem's layout
+  if (prepared_ == nullptr) {
+    for (std::size_t k = 0; k < T_.size(); ++k) initial_[k] = T_[k].inf();
+    return;
+  }
+  for (int i = 0; i < n_; ++i) {
+    const FI* row = &prepared_->rows[static_cast<std::size_t>(i) * (n_ + 1)];
+    for (int j = 0; j <= n_; ++j) initial_[static_cast<std::size_t>(i) * width_ + j] = row[j].inf();
+    initial_[static_cast<std::size_t>(i) * width_ + n_ + 1] = first_rhs_[i].inf();
+  }
 }
 
 void IntervalTableau::pivot(int r, int s) {
@@ -97,6 +111,18 @@ void IntervalTableau::flush() {
   stamp_.assign(width_, 0);
 }
 
+namespace {
+
+// |z| enclosed, for 0 < |z| < 2^960: mpz_get_d truncates toward zero, so
+// the double above it (one ulp up) bounds |z| when it has more than 53 bits.
+FI magnitude_enclosure(mpz_srcptr z) {
+  const double truncated = std::abs(mpz_get_d(z));
+  if (mpz_sizeinbase(z, 2) <= 53) return FI(truncated);
+  return FI(truncated, std::nextafter(truncated, std::numeric_limits<double>::infinity()));
+}
+
+}  // namespace
+
 FI IntervalTableau::enclosure(const Rational& q) {
   const auto* m = q.backend().data();
   const mpz_srcptr num = mpq_numref(m), den = mpq_denref(m);
@@ -104,6 +130,14 @@ FI IntervalTableau::enclosure(const Rational& q) {
   if (mpz_size(num) <= 1 && mpz_size(den) == 1 && mpz_getlimbn(num, 0) < kExact && mpz_getlimbn(den, 0) < kExact) {
     const double n = static_cast<double>(mpz_getlimbn(num, 0));
     const FI quotient = FI(n) / FI(static_cast<double>(mpz_getlimbn(den, 0)));
+    return mpz_sgn(num) < 0 ? -quotient : quotient;
+  }
+  // Long parts (b's rows often have denominators of 60 to 90 bits): each
+  // part enclosed, then one interval division, rather than GMP's correctly
+  // rounded quotient. Parts beyond double range take the shared conversion.
+  constexpr std::size_t kLimbs = 15;  // 960 bits
+  if (mpz_sgn(num) != 0 && mpz_size(num) <= kLimbs && mpz_size(den) <= kLimbs) {
+    const FI quotient = magnitude_enclosure(num) / magnitude_enclosure(den);
     return mpz_sgn(num) < 0 ? -quotient : quotient;
   }
   return to_interval(q);

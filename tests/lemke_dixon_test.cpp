@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "fixel/internal/exact_lu.h"
+#include "fixel/internal/lemke_dixon_words.h"
+#include "fixel/internal/lemke_scaled.h"
 #include "fixel/rational.h"
 
 namespace fixel::internal {
@@ -173,6 +175,29 @@ void expect_words_and_gmp_agree(const System& s, bool words_expected) {
   EXPECT_EQ(d_words, d_gmp);
   EXPECT_EQ(u_words, u_gmp);
   expect_reference_solution(s);
+  // C given as words already (as a prepared matrix's block is), its
+  // integers left out: the same answer when y fits words; else declined,
+  // and with C's integers beside its words GMP lifts as before.
+  bool entries_fit = s.k <= kWordRows;
+  for (const Integer& x : s.c)
+    entries_fit = entries_fit && mpz_size(mp(x)) <= 1 && mpz_getlimbn(mp(x), 0) < (mp_limb_t(1) << 59);
+  if (!entries_fit) return;
+  std::vector<std::int64_t> c_words;
+  for (const Integer& x : s.c) c_words.push_back(mpz_get_si(mp(x)));
+  std::vector<Integer> u_given;
+  Integer d_given;
+  DixonTrace trace_given;
+  const bool solved_given = dixon_solve(s.k, {}, s.y_pointers(), u_given, d_given, nullptr, &trace_given, &c_words);
+  EXPECT_EQ(solved_given, words_expected);
+  if (solved_given) {
+    EXPECT_TRUE(trace_given.words);
+    EXPECT_EQ(d_given, d_words);
+    EXPECT_EQ(u_given, u_words);
+  }
+  ASSERT_TRUE(dixon_solve(s.k, s.c_pointers(), s.y_pointers(), u_given, d_given, nullptr, &trace_given, &c_words));
+  EXPECT_EQ(trace_given.words, words_expected);
+  EXPECT_EQ(d_given, d_words);
+  EXPECT_EQ(u_given, u_words);
 }
 
 GTEST_TEST(DixonSolve, LiftsInMachineWordsWhenTheEntriesAreSmallWithTheAnswersOfGmp) {

@@ -157,6 +157,110 @@ GTEST_TEST(DixonWords, TakesABlockInWordsExactlyUpToTheBoundsAndNoFurther) {
   EXPECT_FALSE(block_in_words(3, pointers(c), pointers(y), c_words, y_words));         // sizes not k
 }
 
+GTEST_TEST(DixonWords, SumsProductsInWordsAsGmpDoesUpToTheBoundsAndRefusesBeyond) {
+  // Σ a_c·u_c against GMP's sum: random sizes and signs, then the largest
+  // operands accepted (|a| = 2^63 − 1, |u| = 2^127 − 1, k = 16, every
+  // product of one sign, so the sum nears 2^194), and one past each bound.
+  std::mt19937_64 rng(21);
+  const Integer a_edge = (Integer(1) << 63) - 1, u_edge = (Integer(1) << 127) - 1;
+  auto gmp_dot = [](const std::vector<Integer>& a, const std::vector<Integer>& u) {
+    Integer sum = 0;
+    for (std::size_t c = 0; c < a.size(); ++c) sum += a[c] * u[c];
+    return sum;
+  };
+  for (int trial = 0; trial < 400; ++trial) {
+    const int k = 1 + trial % 16;
+    std::vector<Integer> a(k), u(k);
+    for (int c = 0; c < k; ++c) {
+      a[c] = trial < 8 ? Integer(trial % 2 ? a_edge : Integer(-a_edge))
+                       : random_integer(rng, 1 + static_cast<int>(rng() % 63));
+      u[c] = trial < 8 ? Integer(trial % 4 < 2 ? u_edge : Integer(-u_edge))
+                       : random_integer(rng, 1 + static_cast<int>(rng() % 127));
+    }
+    std::vector<mpz_srcptr> row;
+    for (const Integer& x : a) row.push_back(mp(x));
+    Integer sum = 12345;  // overwritten
+    ASSERT_TRUE(dot_in_words(k, row.data(), u, sum)) << "trial " << trial;
+    EXPECT_EQ(sum, gmp_dot(a, u)) << "trial " << trial;
+  }
+  std::vector<Integer> a = {Integer(3), Integer(-5)}, u = {Integer(7), Integer(11)};
+  std::vector<mpz_srcptr> row = {mp(a[0]), mp(a[1])};
+  Integer sum;
+  ASSERT_TRUE(dot_in_words(2, row.data(), u, sum));
+  EXPECT_EQ(sum, Integer(3 * 7 - 5 * 11));
+  const Integer a_past = Integer(1) << 63, u_past = Integer(1) << 127;
+  row[1] = mp(a_past);
+  EXPECT_FALSE(dot_in_words(2, row.data(), u, sum));  // |a| = 2^63
+  row[1] = mp(a[1]);
+  std::vector<Integer> u_large = {Integer(7), Integer(-u_past)};
+  EXPECT_FALSE(dot_in_words(2, row.data(), u_large, sum));  // |u| = 2^127
+  std::vector<Integer> many(17, Integer(1));
+  std::vector<mpz_srcptr> long_row(17, mp(many[0]));
+  EXPECT_FALSE(dot_in_words(17, long_row.data(), many, sum));  // k > 16
+}
+
+// x from its base-p digits and p^s, by GMP.
+Integer from_digits_by_gmp(const std::vector<mp_limb_t>& digits, std::uint64_t p) {
+  Integer x = 0;
+  for (std::size_t t = digits.size(); t-- > 0;) x = x * Integer(p) + Integer(digits[t]);
+  return x;
+}
+
+GTEST_TEST(DixonWords, ComputesModuloPowersOfPInBasePDigitsAsGmpDoes) {
+  // Digits, products, weighted sums and the way back, for s = 1..4, against
+  // GMP's arithmetic modulo p^s: random values, and digits of p − 1 (the
+  // largest columns and carries) and 0 (leading zeros).
+  std::mt19937_64 rng(22);
+  const std::uint64_t p = dixon_primes()[0];
+  const nmod_t mod = modulus(p);
+  for (int s = 1; s <= kPadicDigits; ++s) {
+    Integer M = 1;
+    for (int t = 0; t < s; ++t) M *= Integer(p);
+    auto random_digits = [&](int kind) {
+      std::vector<mp_limb_t> d(s);
+      for (mp_limb_t& x : d) x = kind == 0 ? p - 1 : kind == 1 ? 0 : rng() % p;
+      if (kind == 3) d.back() = 0;  // a leading zero
+      return d;
+    };
+    for (int trial = 0; trial < 200; ++trial) {
+      SCOPED_TRACE("s " + std::to_string(s) + ", trial " + std::to_string(trial));
+      // padic_digits of any x ≥ 0, up to 300 bits.
+      Integer x = random_integer(rng, trial % 301);
+      if (x < 0) x = -x;
+      std::vector<mp_limb_t> digits(s);
+      padic_digits(mp(x), s, mod, digits.data());
+      for (const mp_limb_t t : digits) EXPECT_LT(t, p);
+      EXPECT_EQ(from_digits_by_gmp(digits, p), Integer(x % M));
+      Integer back;
+      from_padic(digits.data(), s, mod, back);
+      EXPECT_EQ(back, Integer(x % M));
+      // padic_product.
+      const std::vector<mp_limb_t> a = random_digits(trial % 4), b = random_digits((trial / 4) % 4);
+      std::vector<mp_limb_t> product(s);
+      padic_product(a.data(), b.data(), s, mod, product.data());
+      for (const mp_limb_t t : product) EXPECT_LT(t, p);
+      EXPECT_EQ(from_digits_by_gmp(product, p), Integer(from_digits_by_gmp(a, p) * from_digits_by_gmp(b, p) % M));
+      // padic_weighted_sum, k up to 16 and once 1000.
+      const int k = trial == 0 ? 1000 : 1 + trial % 16;
+      std::vector<mp_limb_t> columns(static_cast<std::size_t>(s) * k);  // digit t of x_j at [t·k + j]
+      for (mp_limb_t& t : columns) t = trial % 3 == 0 ? p - 1 : rng() % p;
+      Integer expected = 0;
+      for (int j = 0; j < k; ++j) {
+        std::vector<mp_limb_t> xj(s);
+        for (int t = 0; t < s; ++t) xj[t] = columns[static_cast<std::size_t>(t) * k + j];
+        expected += Integer(j + 1) * from_digits_by_gmp(xj, p);
+      }
+      std::vector<mp_limb_t> sum(s);
+      padic_weighted_sum(columns.data(), k, s, mod, sum.data());
+      EXPECT_EQ(from_digits_by_gmp(sum, p), Integer(expected % M));
+    }
+  }
+  Integer zero;
+  const mp_limb_t zeros[kPadicDigits] = {0, 0, 0, 0};
+  from_padic(zeros, kPadicDigits, mod, zero);
+  EXPECT_EQ(zero, 0);
+}
+
 // C·digit ≡ rhs (mod p), by GMP.
 void expect_solves_mod_p(int k, const std::vector<Integer>& c, const std::vector<std::uint64_t>& rhs,
                          const std::vector<mp_limb_t>& digit, std::uint64_t p) {

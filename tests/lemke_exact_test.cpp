@@ -101,6 +101,47 @@ GTEST_TEST(ExactTableau, GivesTheSignsAndValuesOfTheTableauAtAnyBasis) {
   EXPECT_GT(checked, 60);
 }
 
+GTEST_TEST(DixonBasicValues, GivesTheSameValuesWithMachineWordsAsWithGmp) {
+  // Words on (B's block from the matrix's word copy, the w numerators'
+  // sums in words) against words off (GMP throughout), value for value,
+  // and both against the reference tableau. b's denominators of up to
+  // 2^100 push y past the word bound in some trials, so that the integers
+  // are gathered there although the matrix has words.
+  std::mt19937_64 rng(33);
+  int checked = 0, matrix_in_words = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 2 + trial % 11;
+    RandomLcp lcp = random_lcp(rng, n);
+    if (trial % 3 == 2)
+      for (int i = 0; i < n; ++i)
+        lcp.b[i] /= Rational((Integer(1) << 100) - 1 - Integer(static_cast<long>(rng() % 1000)));
+    std::vector<int> basis(n);
+    for (int i = 0; i < n; ++i) basis[i] = (rng() % 3) ? n + i : i;  // mostly z basic: a large block
+    const MatrixQ A = test::lemke_tableau_data(lcp.B, lcp.b);
+    MatrixQ T;
+    if (!reference_tableau(A, basis, T)) continue;
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    ScaledProblem P;
+    P.assign(lcp.B, lcp.b);
+    matrix_in_words += P.in_words();
+    const int rhs = 2 * n + 1;
+    std::vector<double> lo(n, -INFINITY), hi(n, INFINITY);
+    BasicValues with_words, with_gmp;
+    DixonTrace trace;
+    ASSERT_TRUE(dixon_basic_values(P, basis, lo, hi, with_words, trace));
+    set_dixon_words_allowed(false);
+    const bool solved = dixon_basic_values(P, basis, lo, hi, with_gmp, trace);
+    set_dixon_words_allowed(true);
+    ASSERT_TRUE(solved);
+    EXPECT_EQ(with_words.den, with_gmp.den);
+    EXPECT_EQ(with_words.num, with_gmp.num);
+    for (int t = 0; t < n; ++t) EXPECT_EQ(value_of(P, basis, with_words, t), T(t, rhs)) << "row " << t;
+    ++checked;
+  }
+  EXPECT_GT(checked, 150);
+  EXPECT_GT(matrix_in_words, 150);
+}
+
 GTEST_TEST(DixonBasicValues, GivesTheBasisValuesWithOrWithoutAUsefulHint) {
   // Complementary bases without z0: lifting's values against the
   // reference, once with exact enclosures as the hint and once with the

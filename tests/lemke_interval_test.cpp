@@ -66,6 +66,66 @@ GTEST_TEST(IntervalTableau, EnclosesTheExactTableauAfterEveryPivot) {
   EXPECT_GT(pivots, 200);
 }
 
+GTEST_TEST(IntervalTableau, APreparedTableauStartsAsTheUnpreparedOneAndKeepsItsFirstEntriesForGuesses) {
+  // B's part from IntervalRows, b's entries with numerators and
+  // denominators of up to 90 bits (each enclosed on its own, then divided):
+  // the same first tableau, interval for interval, holding the exact
+  // entries; after pivots, approx() (made late for the prepared one) still
+  // gives the first tableau's lower ends, as the unprepared one's does.
+  std::mt19937_64 rng(43);
+  std::uniform_int_distribution<int> num(-9, 9), den(1, 9);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 2 + trial % 6;
+    MatrixQ B(n, n);
+    VectorQ b(n);
+    for (int i = 0; i < n; ++i) {
+      const Integer long_num = (Integer(rng()) << 26) + Integer(rng() % 1000),
+                    long_den = (Integer(rng() | 1) << 26) + 1;
+      b[i] = trial % 2 ? Rational(num(rng), den(rng)) : Rational(long_num, long_den) * Rational(num(rng), 1);
+      for (int j = 0; j < n; ++j) B(i, j) = (rng() % 3 == 0) ? Rational(0) : Rational(num(rng), den(rng));
+    }
+    Protect rounding;
+    IntervalRows rows;
+    rows.assign(B);
+    // One tableau at a time: they share per-thread storage.
+    std::vector<FI> first;
+    std::vector<double> expected;
+    {
+      IntervalTableau unprepared(B, b);
+      for (int i = 0; i < n; ++i)
+        for (int var = 0; var <= unprepared.rhs(); ++var) first.push_back(unprepared.at(i, var));
+      const ApproxProblem guess = unprepared.approx();
+      expected.assign(guess.slots, guess.slots + n * (n + 2));
+    }
+    IntervalTableau prepared(rows, b);
+    for (int i = 0; i < n; ++i)
+      for (int var = 0; var <= prepared.rhs(); ++var) {
+        const FI a = first[static_cast<std::size_t>(i) * (prepared.rhs() + 1) + var], c = prepared.at(i, var);
+        EXPECT_TRUE(a.inf() == c.inf() && a.sup() == c.sup()) << "trial " << trial << ", (" << i << ", " << var << ")";
+        const Rational exact = var == prepared.rhs() ? b[i]
+                               : var == 2 * n        ? Rational(-1)
+                               : var >= n            ? Rational(-B(i, var - n))
+                                                     : Rational(i == var ? 1 : 0);
+        EXPECT_TRUE(holds(c, exact)) << "trial " << trial << ", (" << i << ", " << var << ")";
+      }
+    // z_j enters (a column unlike z0's all −1), then every column is read,
+    // which brings it up to date in storage.
+    int pivots = 0;
+    for (int r = 0; r < n && pivots == 0; ++r)
+      for (int j = 0; j < n && pivots == 0; ++j) {
+        const int sign = certain_sign(prepared.at(r, n + j));
+        if (sign == kUndecided || sign == 0) continue;
+        prepared.pivot(r, n + j);
+        ++pivots;
+      }
+    EXPECT_EQ(pivots, 1) << "trial " << trial;
+    for (int var = 0; var <= prepared.rhs(); ++var) prepared.at(0, var);
+    const ApproxProblem late = prepared.approx();
+    ASSERT_EQ(late.n, n);
+    EXPECT_EQ(std::vector<double>(late.slots, late.slots + n * (n + 2)), expected) << "trial " << trial;
+  }
+}
+
 GTEST_TEST(IntervalTableau, KeepsExactZerosAndPointsExact) {
   // Integer data: the first tableau is exact, and an entry whose pivot
   // column entry is an exact zero stays untouched by that pivot.

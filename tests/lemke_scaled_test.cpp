@@ -41,6 +41,15 @@ void expect_scaled_as_defined(const MatrixQ& B, const VectorQ& b) {
     EXPECT_EQ(Rational(P.entry(i, 2 * n)), -L);
     EXPECT_EQ(Rational(P.entry(i, 2 * n + 1)), L * Rational(delta) * b[i]) << "row " << i;
   }
+  // The word copy: there exactly when every entry but b's is below 2^59,
+  // and then equal to them.
+  bool fits = true;
+  for (int i = 0; i < n; ++i)
+    for (int var = 0; var <= 2 * n; ++var) fits = fits && abs(P.entry(i, var)) < (Integer(1) << 59);
+  EXPECT_EQ(P.in_words(), fits);
+  if (!P.in_words()) return;
+  for (int i = 0; i < n; ++i)
+    for (int var = 0; var <= 2 * n; ++var) EXPECT_EQ(Integer(P.word(i, var)), P.entry(i, var)) << i << ", " << var;
 }
 
 Rational random_fraction(std::mt19937_64& rng, long long max_den) {

@@ -37,8 +37,10 @@ struct DixonTrace {
 };
 
 // Test switch: with `on` false, dixon_solve lifts with GMP even when the
-// system's entries are small enough for machine words (the default path).
+// system's entries are small enough for machine words (the default path),
+// and dixon_basic_values sums the w numerators with GMP too.
 void set_dixon_words_allowed(bool on);
+bool dixon_words_allowed();
 
 // The acceptance test of dixon_solve, exposed for tests: whether
 // C·u = d·y, for u and d of which C·u ≡ d·y (mod modulus) is known.
@@ -58,8 +60,13 @@ bool dixon_accepts(int k, const std::vector<const Integer*>& c, const std::vecto
 // Hadamard's bound says suffice: the caller then solves another way.
 // The pointers must stay valid during the call. `hint` (k enclosures, or
 // null) lets reconstruction start earlier: after the first step, then
-// from the third on (docs/theory.md §6).
+// from the third on (docs/theory.md §6). `c_words`, when given, is C
+// as words already (row-major, each |C(a, j)| < 2^59, equal to c's): a
+// prepared matrix's block (ScaledProblem::word), not converted again.
+// With it c may be empty; then false also when y is beyond words
+// (rhs_in_words) or words are switched off, as the GMP path needs c.
 bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
-                 std::vector<Integer>& u, Integer& d, const DixonHint* hint = nullptr, DixonTrace* trace = nullptr);
+                 std::vector<Integer>& u, Integer& d, const DixonHint* hint = nullptr, DixonTrace* trace = nullptr,
+                 const std::vector<std::int64_t>* c_words = nullptr);
 
 }  // namespace fixel::internal

@@ -48,6 +48,9 @@ inline UInt128 low_bits(mpz_srcptr z) {
 // |y_a| < 2^125 and k ≤ 16; false otherwise, with the outputs unspecified.
 bool block_in_words(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
                     std::vector<std::int64_t>& c_words, std::vector<Int128>& y_words);
+// y alone as words, when every |y_a| < 2^125 and k ≤ 16 (C's entries known
+// to be words already); false otherwise, y_words unspecified.
+bool rhs_in_words(int k, const std::vector<const Integer*>& y, std::vector<Int128>& y_words);
 
 // x mod p in [0, p), for |x| < 2^125.
 inline mp_limb_t residue(Int128 x, nmod_t mod) {
@@ -89,6 +92,30 @@ inline mp_limb_t mul_add_mod(mp_limb_t a, mp_limb_t b, mp_limb_t c, mp_limb_t e,
   NMOD_RED2(r, static_cast<mp_limb_t>(x >> 64), static_cast<mp_limb_t>(x), mod);
   return r;
 }
+
+// Numbers modulo p^s as their s base-p digits, least first: the
+// reconstruction's products and sums modulo M = p^s without a division by
+// M (src/lemke_dixon.cpp), for s ≤ kPadicDigits lifting steps.
+constexpr int kPadicDigits = 4;
+
+// x mod p^s's digits, for x ≥ 0 and 1 ≤ s ≤ kPadicDigits.
+void padic_digits(mpz_srcptr x, int s, nmod_t mod, mp_limb_t* digits);
+
+// a·b mod p^s's digits, from a's and b's (each s digits below p).
+void padic_product(const mp_limb_t* a, const mp_limb_t* b, int s, nmod_t mod, mp_limb_t* out);
+
+// Σ_j (j + 1)·x_j mod p^s's digits, for k ≤ 2^20 numbers x_j whose digit t
+// is digits[t·k + j] (each below p).
+void padic_weighted_sum(const mp_limb_t* digits, int k, int s, nmod_t mod, mp_limb_t* out);
+
+// Σ_t digits_t·p^t into `out` (0 ≤ out < p^s), for digits below p.
+void from_padic(const mp_limb_t* digits, int s, nmod_t mod, Integer& out);
+
+// Σ_c a_c·u_c into `sum`, in words: each a_c one limb below 2^63, each
+// u_c two limbs below 2^127 (the products are below 2^190, and k ≤ 16 of
+// them below 2^194, summed in 256 bits). False, with `sum` unspecified,
+// when an operand is larger or k > 16: then GMP must do it.
+bool dot_in_words(int k, const mpz_srcptr* a, const std::vector<Integer>& u, Integer& sum);
 
 // 1/p modulo 2^128, for odd p.
 UInt128 inverse_mod_2_128(std::uint64_t p);

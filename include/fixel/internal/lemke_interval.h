@@ -32,8 +32,12 @@ class IntervalTableau {
   // The same first tableau, B's part copied from `prepared` (made from B).
   IntervalTableau(const IntervalRows& prepared, const VectorQ& b);
 
-  // Doubles near the first tableau's entries, for guesses only.
-  ApproxProblem approx() const { return {initial_.data(), n_}; }
+  // Doubles near the first tableau's entries, for guesses only. Made on
+  // the first call for a prepared tableau (only tie certificates ask).
+  ApproxProblem approx() {
+    if (initial_.empty()) keep_initial();
+    return {initial_.data(), n_};
+  }
 
   int z0() const { return 2 * n_; }
   int rhs() const { return 2 * n_ + 1; }
@@ -71,9 +75,11 @@ class IntervalTableau {
   FI& at_slot(int i, int k) { return T_[static_cast<std::size_t>(i) * width_ + k]; }
 
   void forget_pivots();
-  // The state every first tableau starts from; T_ sized and zero.
-  void start();
-  // initial_ from T_.
+  // The state every first tableau starts from; T_ sized, and zero when
+  // `zeros` (else every slot is written next).
+  void start(bool zeros);
+  // initial_ from the first tableau: T_ before a pivot, else the prepared
+  // rows and b's enclosures.
   void keep_initial();
 
   // Applies the pivots made since slot k was last read, in order, with the
@@ -107,7 +113,7 @@ class IntervalTableau {
   // The vectors' storage, reused from run to run (one per thread; a run
   // does not nest another).
   struct Storage {
-    std::vector<FI> T, eta, eta_inverse;
+    std::vector<FI> T, eta, eta_inverse, first_rhs;
     std::vector<double> initial;
     std::vector<int> basis, slot, stamp, eta_row, eta_support, eta_support_start;
   };
@@ -128,6 +134,8 @@ class IntervalTableau {
   std::vector<int>& eta_support_ = storage_.eta_support;
   std::vector<int>& eta_support_start_ = storage_.eta_support_start;
   int pivots_ = 0;
+  const IntervalRows* prepared_ = nullptr;           // the first tableau's B part, when prepared
+  std::vector<FI>& first_rhs_ = storage_.first_rhs;  // b's enclosures, when prepared
 };
 
 }  // namespace fixel::internal

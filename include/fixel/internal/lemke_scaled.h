@@ -5,6 +5,7 @@
 #include <gmp.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -45,9 +46,16 @@ class ScaledMatrix {
       }
       mpz_neg(mp(at(i, 2 * n_)), mp(L));
     }
+    keep_words();
   }
 
   int n() const { return n_; }
+  // Whether every entry and every L_i is below 2^59 in magnitude: the word
+  // path of the final values' lifting (internal/lemke_dixon_words.h), whose
+  // block then comes from word() without a conversion per solve.
+  bool in_words() const { return in_words_; }
+  // entry(i, var) as a word, for var n..2n, when in_words().
+  std::int64_t word(int i, int var) const { return words_[static_cast<std::size_t>(i) * width_ + (var - n_)]; }
   // L_i.
   const Integer& scale(int i) const { return scale_[i]; }
   // L_i · (i, var) for var n..2n−1 (z) and 2n (z0).
@@ -107,6 +115,23 @@ class ScaledMatrix {
     return true;
   }
 
+  // words_ from A_, and in_words_.
+  void keep_words() {
+    words_.resize(A_.size());
+    in_words_ = true;
+    for (std::size_t e = 0; e < A_.size() && in_words_; ++e) in_words_ = word_of(mp(A_[e]), words_[e]);
+    for (int i = 0; i < n_ && in_words_; ++i) {
+      std::int64_t ignored = 0;
+      in_words_ = word_of(mp(scale_[i]), ignored);
+    }
+  }
+  // z as a word when |z| < 2^59.
+  static bool word_of(mpz_srcptr z, std::int64_t& out) {
+    if (mpz_size(z) > 1 || mpz_getlimbn(z, 0) >= (mp_limb_t(1) << 59)) return false;
+    const auto magnitude = static_cast<std::int64_t>(mpz_getlimbn(z, 0));
+    out = mpz_sgn(z) < 0 ? -magnitude : magnitude;
+    return true;
+  }
   static void scaled(Integer& out, const Rational& x, const Integer& L, Integer& factor) {
     const auto* q = x.backend().data();
     mpz_divexact(mp(factor), mp(L), mpq_denref(q));
@@ -119,6 +144,8 @@ class ScaledMatrix {
   Integer factor_;
   std::vector<unsigned long> word_factors_;  // of row words_row_, the last row scaled in words (−1: none)
   int words_row_ = -1;
+  std::vector<std::int64_t> words_;  // A_ as words, when in_words_
+  bool in_words_ = false;
 };
 
 // [A | b] = [I, −B, −e | b] with equation i scaled by L_i > 0, the lcm of
@@ -160,6 +187,13 @@ class ScaledProblem {
     if (var < n_) return var == i ? matrix_->scale(i) : zero_;
     if (var == 2 * n_ + 1) return rhs_[i];
     return matrix_->entry(i, var);
+  }
+  // Whether entry(i, var) is below 2^59 for every var ≤ 2n (not b's) and
+  // every i: then word(i, var) gives it.
+  bool in_words() const { return matrix_->in_words(); }
+  std::int64_t word(int i, int var) const {
+    if (var < n_) return var == i ? static_cast<std::int64_t>(mpz_getlimbn(mp(matrix_->scale(i)), 0)) : 0;
+    return matrix_->word(i, var);
   }
 
  private:
