@@ -66,7 +66,8 @@ void solve_lcp_lemke(const LemkeMatrix& B, const VectorQ& b, LemkeResult& result
 /// An LCP matrix B prepared once for many solves of LCP(B, b) with
 /// different b, as a time-stepper's steps or a scene's impulses have: B's
 /// rationals, with each entry's interval enclosure and B's rows scaled to
-/// integers cached beside them. A solve then does only b's share of that
+/// integers (and, when they fit, 64-bit words) cached beside them. A
+/// solve then does only b's share of that
 /// work (`docs/performance.md`, "Lemke"). Preparing costs about one solve
 /// with the bare B, so it pays from the second solve. Copies share the prepared data,
 /// which is never modified, so one LemkeMatrix may be solved from several
