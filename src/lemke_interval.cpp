@@ -133,8 +133,9 @@ FI IntervalTableau::enclosure(const Rational& q) {
     return mpz_sgn(num) < 0 ? -quotient : quotient;
   }
   // Long parts (b's rows often have denominators of 60 to 90 bits): each
-  // part enclosed, then one interval division, rather than GMP's correctly
-  // rounded quotient. Parts beyond double range take the shared conversion.
+  // part enclosed, then one interval division, rather than GMP's quotient
+  // truncated to a double (a multi-limb division) and widened by an ulp
+  // each way. Parts beyond double range take the shared conversion.
   constexpr std::size_t kLimbs = 15;  // 960 bits
   if (mpz_sgn(num) != 0 && mpz_size(num) <= kLimbs && mpz_size(den) <= kLimbs) {
     const FI quotient = magnitude_enclosure(num) / magnitude_enclosure(den);

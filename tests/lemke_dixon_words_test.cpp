@@ -211,53 +211,53 @@ GTEST_TEST(DixonWords, ComputesModuloPowersOfPInBasePDigitsAsGmpDoes) {
   // GMP's arithmetic modulo p^s: random values, and digits of p − 1 (the
   // largest columns and carries) and 0 (leading zeros).
   std::mt19937_64 rng(22);
-  const std::uint64_t p = dixon_primes()[0];
-  const nmod_t mod = modulus(p);
-  for (int s = 1; s <= kPadicDigits; ++s) {
-    Integer M = 1;
-    for (int t = 0; t < s; ++t) M *= Integer(p);
-    auto random_digits = [&](int kind) {
-      std::vector<mp_limb_t> d(s);
-      for (mp_limb_t& x : d) x = kind == 0 ? p - 1 : kind == 1 ? 0 : rng() % p;
-      if (kind == 3) d.back() = 0;  // a leading zero
-      return d;
-    };
-    for (int trial = 0; trial < 200; ++trial) {
-      SCOPED_TRACE("s " + std::to_string(s) + ", trial " + std::to_string(trial));
-      // padic_digits of any x ≥ 0, up to 300 bits.
-      Integer x = random_integer(rng, trial % 301);
-      if (x < 0) x = -x;
-      std::vector<mp_limb_t> digits(s);
-      padic_digits(mp(x), s, mod, digits.data());
-      for (const mp_limb_t t : digits) EXPECT_LT(t, p);
-      EXPECT_EQ(from_digits_by_gmp(digits, p), Integer(x % M));
-      Integer back;
-      from_padic(digits.data(), s, mod, back);
-      EXPECT_EQ(back, Integer(x % M));
-      // padic_product.
-      const std::vector<mp_limb_t> a = random_digits(trial % 4), b = random_digits((trial / 4) % 4);
-      std::vector<mp_limb_t> product(s);
-      padic_product(a.data(), b.data(), s, mod, product.data());
-      for (const mp_limb_t t : product) EXPECT_LT(t, p);
-      EXPECT_EQ(from_digits_by_gmp(product, p), Integer(from_digits_by_gmp(a, p) * from_digits_by_gmp(b, p) % M));
-      // padic_weighted_sum, k up to 16 and once 1000.
-      const int k = trial == 0 ? 1000 : 1 + trial % 16;
-      std::vector<mp_limb_t> columns(static_cast<std::size_t>(s) * k);  // digit t of x_j at [t·k + j]
-      for (mp_limb_t& t : columns) t = trial % 3 == 0 ? p - 1 : rng() % p;
-      Integer expected = 0;
-      for (int j = 0; j < k; ++j) {
-        std::vector<mp_limb_t> xj(s);
-        for (int t = 0; t < s; ++t) xj[t] = columns[static_cast<std::size_t>(t) * k + j];
-        expected += Integer(j + 1) * from_digits_by_gmp(xj, p);
+  for (const std::uint64_t p : dixon_primes())
+    for (int s = 1; s <= kPadicDigits; ++s) {
+      const nmod_t mod = modulus(p);
+      Integer M = 1;
+      for (int t = 0; t < s; ++t) M *= Integer(p);
+      auto random_digits = [&](int kind) {
+        std::vector<mp_limb_t> d(s);
+        for (mp_limb_t& x : d) x = kind == 0 ? p - 1 : kind == 1 ? 0 : rng() % p;
+        if (kind == 3) d.back() = 0;  // a leading zero
+        return d;
+      };
+      for (int trial = 0; trial < 200; ++trial) {
+        SCOPED_TRACE("s " + std::to_string(s) + ", trial " + std::to_string(trial));
+        // padic_digits of any x ≥ 0, up to 300 bits.
+        Integer x = random_integer(rng, trial % 301);
+        if (x < 0) x = -x;
+        std::vector<mp_limb_t> digits(s);
+        padic_digits(mp(x), s, mod, digits.data());
+        for (const mp_limb_t t : digits) EXPECT_LT(t, p);
+        EXPECT_EQ(from_digits_by_gmp(digits, p), Integer(x % M));
+        Integer back;
+        from_padic(digits.data(), s, mod, back);
+        EXPECT_EQ(back, Integer(x % M));
+        // padic_product.
+        const std::vector<mp_limb_t> a = random_digits(trial % 4), b = random_digits((trial / 4) % 4);
+        std::vector<mp_limb_t> product(s);
+        padic_product(a.data(), b.data(), s, mod, product.data());
+        for (const mp_limb_t t : product) EXPECT_LT(t, p);
+        EXPECT_EQ(from_digits_by_gmp(product, p), Integer(from_digits_by_gmp(a, p) * from_digits_by_gmp(b, p) % M));
+        // padic_weighted_sum, k up to 16 and once 1000.
+        const int k = trial == 0 ? 1000 : 1 + trial % 16;
+        std::vector<mp_limb_t> columns(static_cast<std::size_t>(s) * k);  // digit t of x_j at [t·k + j]
+        for (mp_limb_t& t : columns) t = trial % 3 == 0 ? p - 1 : rng() % p;
+        Integer expected = 0;
+        for (int j = 0; j < k; ++j) {
+          std::vector<mp_limb_t> xj(s);
+          for (int t = 0; t < s; ++t) xj[t] = columns[static_cast<std::size_t>(t) * k + j];
+          expected += Integer(j + 1) * from_digits_by_gmp(xj, p);
+        }
+        std::vector<mp_limb_t> sum(s);
+        padic_weighted_sum(columns.data(), k, s, mod, sum.data());
+        EXPECT_EQ(from_digits_by_gmp(sum, p), Integer(expected % M));
       }
-      std::vector<mp_limb_t> sum(s);
-      padic_weighted_sum(columns.data(), k, s, mod, sum.data());
-      EXPECT_EQ(from_digits_by_gmp(sum, p), Integer(expected % M));
     }
-  }
   Integer zero;
   const mp_limb_t zeros[kPadicDigits] = {0, 0, 0, 0};
-  from_padic(zeros, kPadicDigits, mod, zero);
+  from_padic(zeros, kPadicDigits, modulus(dixon_primes()[0]), zero);
   EXPECT_EQ(zero, 0);
 }
 

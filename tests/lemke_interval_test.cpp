@@ -68,9 +68,10 @@ GTEST_TEST(IntervalTableau, EnclosesTheExactTableauAfterEveryPivot) {
 
 GTEST_TEST(IntervalTableau, APreparedTableauStartsAsTheUnpreparedOneAndKeepsItsFirstEntriesForGuesses) {
   // B's part from IntervalRows, b's entries with numerators and
-  // denominators of up to 90 bits (each enclosed on its own, then divided):
-  // the same first tableau, interval for interval, holding the exact
-  // entries; after pivots, approx() (made late for the prepared one) still
+  // denominators of up to 90 bits or at the 53/54-bit edge (each part
+  // enclosed on its own, then divided): the same first tableau, interval
+  // for interval, holding the exact entries; after more than 2n pivots
+  // (so a flush too), approx() (made late for the prepared one) still
   // gives the first tableau's lower ends, as the unprepared one's does.
   std::mt19937_64 rng(43);
   std::uniform_int_distribution<int> num(-9, 9), den(1, 9);
@@ -81,7 +82,19 @@ GTEST_TEST(IntervalTableau, APreparedTableauStartsAsTheUnpreparedOneAndKeepsItsF
     for (int i = 0; i < n; ++i) {
       const Integer long_num = (Integer(rng()) << 26) + Integer(rng() % 1000),
                     long_den = (Integer(rng() | 1) << 26) + 1;
-      b[i] = trial % 2 ? Rational(num(rng), den(rng)) : Rational(long_num, long_den) * Rational(num(rng), 1);
+      const Integer edge = Integer(1) << 53;
+      const Integer edge_num = edge + Integer(static_cast<long>(rng() % 5)) - 2,
+                    edge_den = (edge << (rng() % 2)) + Integer(static_cast<long>(rng() % 3)) + 1;
+      switch (trial % 4) {
+        case 0:
+          b[i] = Rational(long_num, long_den) * Rational(num(rng), 1);
+          break;
+        case 2:
+          b[i] = Rational(edge_num, edge_den) * Rational(rng() % 2 ? 1 : -1, 1);
+          break;
+        default:
+          b[i] = Rational(num(rng), den(rng));
+      }
       for (int j = 0; j < n; ++j) B(i, j) = (rng() % 3 == 0) ? Rational(0) : Rational(num(rng), den(rng));
     }
     Protect rounding;
@@ -108,18 +121,22 @@ GTEST_TEST(IntervalTableau, APreparedTableauStartsAsTheUnpreparedOneAndKeepsItsF
                                                      : Rational(i == var ? 1 : 0);
         EXPECT_TRUE(holds(c, exact)) << "trial " << trial << ", (" << i << ", " << var << ")";
       }
-    // z_j enters (a column unlike z0's all −1), then every column is read,
-    // which brings it up to date in storage.
+    // Pivots on certainly nonzero entries of nonbasic columns (z's, unlike
+    // z0's all −1), past 2n so that the kept pivots are flushed, then every
+    // column read, which brings it up to date in storage.
     int pivots = 0;
-    for (int r = 0; r < n && pivots == 0; ++r)
-      for (int j = 0; j < n && pivots == 0; ++j) {
-        const int sign = certain_sign(prepared.at(r, n + j));
-        if (sign == kUndecided || sign == 0) continue;
-        prepared.pivot(r, n + j);
-        ++pivots;
-      }
-    EXPECT_EQ(pivots, 1) << "trial " << trial;
-    for (int var = 0; var <= prepared.rhs(); ++var) prepared.at(0, var);
+    for (int tries = 0; tries < 50 * n && pivots <= 2 * n; ++tries) {
+      const int r = static_cast<int>(rng() % n), v = static_cast<int>(rng() % (2 * n));
+      const bool basic = std::find(prepared.basis().begin(), prepared.basis().end(), v) != prepared.basis().end();
+      const int sign = basic ? 0 : certain_sign(prepared.at(r, v));
+      if (sign == kUndecided || sign == 0) continue;
+      prepared.pivot(r, v);
+      ++pivots;
+    }
+    EXPECT_GT(pivots, 2 * n) << "trial " << trial;
+    for (int var = 0; var <= prepared.rhs(); ++var)
+      if (std::find(prepared.basis().begin(), prepared.basis().end(), var) == prepared.basis().end())
+        prepared.at(0, var);
     const ApproxProblem late = prepared.approx();
     ASSERT_EQ(late.n, n);
     EXPECT_EQ(std::vector<double>(late.slots, late.slots + n * (n + 2)), expected) << "trial " << trial;
