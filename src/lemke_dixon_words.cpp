@@ -8,6 +8,10 @@
 
 namespace fixel::internal {
 
+// A prepared matrix's words are handed to the lifting unchecked: both must
+// mean the same bound.
+static_assert(ScaledMatrix::kWordBound == kWordEntry, "the word copy's bound is the lifting's");
+
 bool block_in_words(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
                     std::vector<std::int64_t>& c_words, std::vector<Int128>& y_words) {
   if (k > kWordRows || c.size() != static_cast<std::size_t>(k) * k || y.size() != static_cast<std::size_t>(k))

@@ -50,10 +50,12 @@ class ScaledMatrix {
   }
 
   int n() const { return n_; }
-  // Whether every entry and every L_i is below 2^59 in magnitude: the word
-  // path of the final values' lifting (internal/lemke_dixon_words.h), whose
-  // block then comes from word() without a conversion per solve.
+  // Whether every entry and every L_i is below kWordBound in magnitude: the
+  // word path of the final values' lifting (internal/lemke_dixon_words.h),
+  // whose block then comes from word() without a conversion per solve.
   bool in_words() const { return in_words_; }
+  // The lifting's bound on a word entry (kWordEntry there, checked equal).
+  static constexpr mp_limb_t kWordBound = mp_limb_t(1) << 59;
   // entry(i, var) as a word, for var n..2n, when in_words().
   std::int64_t word(int i, int var) const { return words_[static_cast<std::size_t>(i) * width_ + (var - n_)]; }
   // L_i.
@@ -125,9 +127,9 @@ class ScaledMatrix {
       in_words_ = word_of(mp(scale_[i]), ignored);
     }
   }
-  // z as a word when |z| < 2^59.
+  // z as a word when |z| < kWordBound.
   static bool word_of(mpz_srcptr z, std::int64_t& out) {
-    if (mpz_size(z) > 1 || mpz_getlimbn(z, 0) >= (mp_limb_t(1) << 59)) return false;
+    if (mpz_size(z) > 1 || mpz_getlimbn(z, 0) >= kWordBound) return false;
     const auto magnitude = static_cast<std::int64_t>(mpz_getlimbn(z, 0));
     out = mpz_sgn(z) < 0 ? -magnitude : magnitude;
     return true;
