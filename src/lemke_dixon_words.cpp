@@ -160,12 +160,66 @@ void from_padic(const mp_limb_t* digits, int s, nmod_t mod, Integer& out) {
   mpz_limbs_finish(mp(out), size);
 }
 
-UInt128 inverse_mod_2_128(std::uint64_t p) {
+UInt128 inverse_mod_2_128(UInt128 x) {
   // Newton's iteration: each step doubles the correct low bits, from 3
-  // (p·p ≡ 1 mod 8 for odd p).
-  UInt128 inverse = p;
-  for (int i = 0; i < 6; ++i) inverse *= 2 - p * inverse;
+  // (x·x ≡ 1 mod 8 for odd x).
+  UInt128 inverse = x;
+  for (int i = 0; i < 6; ++i) inverse *= 2 - x * inverse;
   return inverse;
+}
+
+namespace {
+
+int trailing_zeros(UInt128 x) {  // x ≠ 0
+  const auto low = static_cast<mp_limb_t>(x);
+  return low != 0 ? __builtin_ctzl(low) : 64 + __builtin_ctzl(static_cast<mp_limb_t>(x >> 64));
+}
+
+// x ≠ 0 into z's limbs, with the sign `negative`.
+void set_word(mpz_ptr z, UInt128 x, bool negative) {
+  const auto high = static_cast<mp_limb_t>(x >> 64);
+  const int size = high != 0 ? 2 : 1;
+  mp_limb_t* limbs = mpz_limbs_write(z, size);
+  limbs[0] = static_cast<mp_limb_t>(x);
+  if (high != 0) limbs[1] = high;
+  mpz_limbs_finish(z, negative ? -size : size);
+}
+
+}  // namespace
+
+bool lowest_terms_in_words(mpz_srcptr num, mpz_srcptr den, mpq_ptr q) {
+  const int num_size = num->_mp_size, den_size = den->_mp_size;
+  if (num_size == 0 || num_size > 2 || num_size < -2 || den_size <= 0 || den_size > 2) return false;
+  const UInt128 a = low_128(num), b = low_128(den);
+  // gcd(a, b) = 2^min(s, t)·gcd(a/2^s, b/2^t), the latter of odd numbers
+  // (mpn_gcd wants one odd operand, the larger first).
+  const int a_twos = trailing_zeros(a), b_twos = trailing_zeros(b);
+  const int twos = a_twos < b_twos ? a_twos : b_twos;
+  const UInt128 a_odd = a >> a_twos, b_odd = b >> b_twos;
+  mp_limb_t x[2] = {static_cast<mp_limb_t>(a_odd), static_cast<mp_limb_t>(a_odd >> 64)};
+  mp_limb_t y[2] = {static_cast<mp_limb_t>(b_odd), static_cast<mp_limb_t>(b_odd >> 64)};
+  const mp_size_t x_size = x[1] != 0 ? 2 : 1, y_size = y[1] != 0 ? 2 : 1;
+  UInt128 g_odd = 0;
+  if (y_size == 1) {
+    g_odd = mpn_gcd_1(x, x_size, y[0]);
+  } else if (x_size == 1) {
+    g_odd = mpn_gcd_1(y, y_size, x[0]);
+  } else {
+    mp_limb_t g[2] = {0, 0};
+    const mp_size_t g_size = mpn_gcd(g, x, 2, y, 2);  // destroys x and y
+    g_odd = g_size == 2 ? (static_cast<UInt128>(g[1]) << 64) | g[0] : g[0];
+  }
+  // a/g and b/g: exact, so the product with 1/g_odd modulo 2^128 is the
+  // quotient itself (it is below 2^128).
+  UInt128 a_reduced = a >> twos, b_reduced = b >> twos;
+  if (g_odd != 1) {
+    const UInt128 inverse = inverse_mod_2_128(g_odd);
+    a_reduced *= inverse;
+    b_reduced *= inverse;
+  }
+  set_word(mpq_numref(q), a_reduced, num_size < 0);
+  set_word(mpq_denref(q), b_reduced, false);
+  return true;
 }
 
 bool ModularLu::factor(int k, const std::vector<std::int64_t>& c_words, nmod_t mod) {

@@ -7,6 +7,7 @@
 #include "fixel/error.h"
 #include "fixel/internal/filtered.h"
 #include "fixel/internal/lemke_dixon.h"
+#include "fixel/internal/lemke_dixon_words.h"
 #include "fixel/internal/lemke_exact.h"
 #include "fixel/internal/lemke_interval.h"
 #include "fixel/internal/lemke_prepared.h"
@@ -174,6 +175,7 @@ class FilteredRun {
           mpz_mul(mp(den_w), den, mp(exact_workspace().problem.scale(v)));
           den = mp(den_w);
         }
+        if (lowest_terms_in_words(num, den, q)) continue;  // the seating LCPs' usual case
         mpz_gcd(mp(g), num, den);
         mpz_divexact(mpq_numref(q), num, mp(g));
         mpz_divexact(mpq_denref(q), den, mp(g));

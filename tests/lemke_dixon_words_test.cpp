@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -124,6 +125,80 @@ GTEST_TEST(DixonWords, InvertsOddNumbersModulo2To128) {
   std::vector<std::uint64_t> odd = dixon_primes();
   odd.insert(odd.end(), {1, 3, 0xFFFFFFFFFFFFFFFFull, 0x8000000000000001ull});
   for (const std::uint64_t p : odd) EXPECT_EQ(static_cast<UInt128>(p * inverse_mod_2_128(p)), UInt128(1)) << p;
+  // Two-limb odd numbers too (the lowest terms' gcds).
+  std::mt19937_64 rng(12);
+  for (int trial = 0; trial < 200; ++trial) {
+    const UInt128 x = ((static_cast<UInt128>(rng()) << 64) | rng()) | 1;
+    EXPECT_EQ(static_cast<UInt128>(x * inverse_mod_2_128(x)), UInt128(1)) << "trial " << trial;
+  }
+  EXPECT_EQ(static_cast<UInt128>(~UInt128(0) * inverse_mod_2_128(~UInt128(0))), UInt128(1));
+}
+
+// num/den in lowest terms by GMP's canonicalization (the second method).
+Rational canonical(const Integer& num, const Integer& den) {
+  Rational q;
+  mpz_set(mpq_numref(q.backend().data()), mp(num));
+  mpz_set(mpq_denref(q.backend().data()), mp(den));
+  mpq_canonicalize(q.backend().data());
+  return q;
+}
+
+// The result of lowest_terms_in_words for num/den, else nullopt. The
+// target starts as 7/3, so a value left over would show.
+std::optional<Rational> in_words(const Integer& num, const Integer& den) {
+  Rational q(7, 3);
+  if (!lowest_terms_in_words(mp(num), mp(den), q.backend().data())) {
+    EXPECT_EQ(q, Rational(7, 3)) << "a refusal must leave q untouched";
+    return std::nullopt;
+  }
+  return q;
+}
+
+GTEST_TEST(DixonWords, ReducesToLowestTermsAsGmpDoesForOperandsOfUpToTwoLimbs) {
+  const Integer two_128 = Integer(1) << 128;
+  // Common factors with twos and odd parts of one and two limbs, so that
+  // both mpn_gcd_1 and mpn_gcd answer, and numerators of either sign.
+  std::mt19937_64 rng(20261128);
+  int reduced_by_two_limbs = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int g_bits = 1 + static_cast<int>(rng() % 100);
+    Integer g = abs(random_integer(rng, g_bits));
+    if (g == 0) g = 1;
+    g <<= static_cast<int>(rng() % 5);
+    const int room = 128 - static_cast<int>(msb(g)) - 1;
+    const Integer a = random_integer(rng, 1 + static_cast<int>(rng() % room));
+    Integer b = abs(random_integer(rng, 1 + static_cast<int>(rng() % room)));
+    if (a == 0 || b == 0) continue;
+    const Integer num = a * g, den = b * g;
+    ASSERT_LT(abs(num), two_128);
+    ASSERT_LT(den, two_128);
+    const auto q = in_words(num, den);
+    ASSERT_TRUE(q.has_value()) << num << "/" << den;
+    EXPECT_EQ(*q, canonical(num, den)) << num << "/" << den;
+    // The canonical form: the same value, a positive denominator and no
+    // common factor left (compared as integers, not only through ==).
+    EXPECT_EQ(gcd(numerator(*q), denominator(*q)), 1) << num << "/" << den;
+    EXPECT_GT(denominator(*q), 0);
+    EXPECT_EQ(numerator(*q) * den, num * denominator(*q));
+    if (msb(gcd(num, den)) >= 64) ++reduced_by_two_limbs;
+  }
+  EXPECT_GT(reduced_by_two_limbs, 100) << "two-limb gcds must be reached";
+  // The edges: 1, powers of two, and the two-limb maximum.
+  const Integer max = two_128 - 1;
+  const std::vector<Integer> edges = {
+      1, 2, 3, Integer(1) << 63, Integer(1) << 64, (Integer(1) << 64) - 1, Integer(1) << 127, max, max - 1};
+  for (const Integer& num : edges)
+    for (const Integer& den : edges) {
+      EXPECT_EQ(in_words(num, den), canonical(num, den)) << num << "/" << den;
+      EXPECT_EQ(in_words(Integer(-num), den), canonical(Integer(-num), den)) << -num << "/" << den;
+    }
+  // Refusals: three limbs either side, a zero numerator, a denominator ≤ 0.
+  EXPECT_EQ(in_words(two_128, 3), std::nullopt);
+  EXPECT_EQ(in_words(Integer(-two_128), 3), std::nullopt);
+  EXPECT_EQ(in_words(3, two_128), std::nullopt);
+  EXPECT_EQ(in_words(0, 3), std::nullopt);
+  EXPECT_EQ(in_words(3, 0), std::nullopt);
+  EXPECT_EQ(in_words(3, -4), std::nullopt);
 }
 
 // The pointers block_in_words takes.

@@ -117,8 +117,15 @@ void from_padic(const mp_limb_t* digits, int s, nmod_t mod, Integer& out);
 // when an operand is larger or k > 16: then GMP must do it.
 bool dot_in_words(int k, const mpz_srcptr* a, const std::vector<Integer>& u, Integer& sum);
 
-// 1/p modulo 2^128, for odd p.
-UInt128 inverse_mod_2_128(std::uint64_t p);
+// 1/x modulo 2^128, for odd x.
+UInt128 inverse_mod_2_128(UInt128 x);
+
+// num/den in lowest terms into q, for num ≠ 0 and den > 0 of at most two
+// limbs each: the odd parts' gcd by GMP's mpn_gcd (or mpn_gcd_1), and both
+// exact divisions by it as products with its inverse modulo 2^128, with
+// none of mpz_gcd's and mpz_divexact's general-size work. False, q
+// untouched, for other operands: then GMP must do it.
+bool lowest_terms_in_words(mpz_srcptr num, mpz_srcptr den, mpq_ptr q);
 
 // A k×k integer matrix C triangularised modulo p, for solving C·x ≡ r
 // (mod p) again and again: division-free elimination (row r ← U_cc·row r −
