@@ -44,9 +44,9 @@ void require_single_friction(const Scene& scene) {
     if (scene.fixels[i].mu_hi)
       throw UnsupportedError("fixels[" + std::to_string(i) + "].mu",
                              "[" + to_string(scene.fixels[i].mu) + ", " + to_string(*scene.fixels[i].mu_hi) + "]",
-                             "is an interval: only the sustained-push analyses (seat --sustained, region --push "
-                             "sustained, dump --sustained), push and design accept friction intervals; the one-step "
-                             "model needs one value");
+                             "is an interval: the one-step model needs one value (friction intervals are "
+                             "accepted by the sustained-push set J and its approach-aware J', by the physics "
+                             "push and by fixture design)");
 }
 
 ContactMatrices contact_matrices(const Scene& scene) {

@@ -161,6 +161,23 @@ def test_the_exact_region_of_g_is_refused_in_the_clis_words():
     assert str(e.value)[len("exact: ") :] == cli[len("--exact: ") :]
 
 
+def test_a_friction_interval_refused_by_the_one_step_model_is_explained_in_the_librarys_terms():
+    # The refusal once named CLI commands and flags (seat --sustained, ...),
+    # which a Python caller cannot run; it names the analyses instead.
+    d = fixel.Scene.load(SCENE_DIR / "polygon.json").to_dict()
+    d["fixels"][0]["mu"] = ["1/20", "1/10"]
+    scene = fixel.Scene.from_dict(d, "interval")
+    with pytest.raises(fixel.UnsupportedError) as e:
+        fixel.seating_set(scene)
+    assert e.value.field == "fixels[0].mu" and e.value.value == "[1/20, 1/10]"
+    message = str(e.value)
+    assert message.startswith("fixels[0].mu: [1/20, 1/10] is an interval: the one-step model needs one value")
+    assert "sustained-push set J" in message and "fixture design" in message
+    assert "--" not in message
+    # The analyses it names do accept the scene.
+    assert fixel.sustained_set(scene) is not None
+
+
 def test_exact_region_refuses_the_options_it_would_ignore():
     # Root isolation has no resolution and builds no segment cones: as the CLI.
     scene = fixel.Scene.load(SCENE_DIR / "polygon.json")
