@@ -192,7 +192,7 @@ bool lowest_terms_in_words(mpz_srcptr num, mpz_srcptr den, mpq_ptr q) {
   if (num_size == 0 || num_size > 2 || num_size < -2 || den_size <= 0 || den_size > 2) return false;
   const UInt128 a = low_128(num), b = low_128(den);
   // gcd(a, b) = 2^min(s, t)·gcd(a/2^s, b/2^t), the latter of odd numbers
-  // (mpn_gcd wants one odd operand, the larger first).
+  // (mpn_gcd wants an odd operand, and the longer one first).
   const int a_twos = trailing_zeros(a), b_twos = trailing_zeros(b);
   const int twos = a_twos < b_twos ? a_twos : b_twos;
   const UInt128 a_odd = a >> a_twos, b_odd = b >> b_twos;
