@@ -46,7 +46,7 @@ void require_single_friction(const Scene& scene) {
                              "[" + to_string(scene.fixels[i].mu) + ", " + to_string(*scene.fixels[i].mu_hi) + "]",
                              "is an interval: the one-step model needs one value (friction intervals are "
                              "accepted by the sustained-push set J and its approach-aware J', by the physics "
-                             "push and by fixture design)");
+                             "push and by fixture design ranked by the sustained push)");
 }
 
 ContactMatrices contact_matrices(const Scene& scene) {

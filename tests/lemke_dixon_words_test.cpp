@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -154,17 +155,30 @@ std::optional<Rational> in_words(const Integer& num, const Integer& den) {
   return q;
 }
 
+// That lowest_terms_in_words gives num/den's canonical numerator and
+// denominator, compared as integers: Rational's == compares values, and
+// would pass a result left unreduced.
+void expect_lowest_terms(const Integer& num, const Integer& den) {
+  const auto q = in_words(num, den);
+  ASSERT_TRUE(q.has_value()) << num << "/" << den;
+  const Rational expected = canonical(num, den);
+  EXPECT_EQ(numerator(*q), numerator(expected)) << num << "/" << den;
+  EXPECT_EQ(denominator(*q), denominator(expected)) << num << "/" << den;
+}
+
 GTEST_TEST(DixonWords, ReducesToLowestTermsAsGmpDoesForOperandsOfUpToTwoLimbs) {
   const Integer two_128 = Integer(1) << 128;
-  // Common factors with twos and odd parts of one and two limbs, so that
-  // both mpn_gcd_1 and mpn_gcd answer, and numerators of either sign.
+  // Common factors with up to 120 twos and odd parts of one and two limbs,
+  // so that both mpn_gcd_1 and mpn_gcd answer and the twos span both
+  // limbs, and numerators of either sign.
   std::mt19937_64 rng(20261128);
-  int reduced_by_two_limbs = 0;
+  int reduced_by_two_limbs = 0, twos_beyond_a_limb = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     const int g_bits = 1 + static_cast<int>(rng() % 100);
     Integer g = abs(random_integer(rng, g_bits));
     if (g == 0) g = 1;
-    g <<= static_cast<int>(rng() % 5);
+    const int shift = std::min(static_cast<int>(rng() % 100), 120 - static_cast<int>(msb(g)));
+    g <<= shift;
     const int room = 128 - static_cast<int>(msb(g)) - 1;
     const Integer a = random_integer(rng, 1 + static_cast<int>(rng() % room));
     Integer b = abs(random_integer(rng, 1 + static_cast<int>(rng() % room)));
@@ -172,25 +186,23 @@ GTEST_TEST(DixonWords, ReducesToLowestTermsAsGmpDoesForOperandsOfUpToTwoLimbs) {
     const Integer num = a * g, den = b * g;
     ASSERT_LT(abs(num), two_128);
     ASSERT_LT(den, two_128);
-    const auto q = in_words(num, den);
-    ASSERT_TRUE(q.has_value()) << num << "/" << den;
-    EXPECT_EQ(*q, canonical(num, den)) << num << "/" << den;
-    // The canonical form: the same value, a positive denominator and no
-    // common factor left (compared as integers, not only through ==).
-    EXPECT_EQ(gcd(numerator(*q), denominator(*q)), 1) << num << "/" << den;
-    EXPECT_GT(denominator(*q), 0);
-    EXPECT_EQ(numerator(*q) * den, num * denominator(*q));
-    if (msb(gcd(num, den)) >= 64) ++reduced_by_two_limbs;
+    expect_lowest_terms(num, den);
+    const Integer common = gcd(num, den);
+    if (msb(common) >= 64) ++reduced_by_two_limbs;
+    if (lsb(common) >= 64) ++twos_beyond_a_limb;
   }
   EXPECT_GT(reduced_by_two_limbs, 100) << "two-limb gcds must be reached";
-  // The edges: 1, powers of two, and the two-limb maximum.
+  EXPECT_GT(twos_beyond_a_limb, 50) << "common twos of 64 and more must be reached";
+  // The edges: 1, powers of two on either side of the limbs' boundary, and
+  // the two-limb maximum.
   const Integer max = two_128 - 1;
   const std::vector<Integer> edges = {
-      1, 2, 3, Integer(1) << 63, Integer(1) << 64, (Integer(1) << 64) - 1, Integer(1) << 127, max, max - 1};
+      1,   2,      3, Integer(1) << 63, Integer(1) << 64, Integer(3) << 64, (Integer(1) << 64) - 1, Integer(1) << 127,
+      max, max - 1};
   for (const Integer& num : edges)
     for (const Integer& den : edges) {
-      EXPECT_EQ(in_words(num, den), canonical(num, den)) << num << "/" << den;
-      EXPECT_EQ(in_words(Integer(-num), den), canonical(Integer(-num), den)) << -num << "/" << den;
+      expect_lowest_terms(num, den);
+      expect_lowest_terms(Integer(-num), den);
     }
   // Refusals: three limbs either side, a zero numerator, a denominator ≤ 0.
   EXPECT_EQ(in_words(two_128, 3), std::nullopt);
