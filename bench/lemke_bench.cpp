@@ -322,9 +322,10 @@ void report_filtered_agreement() {
             << " problems differ from forced exact Lemke; decisions certified " << c.certified << ", exact fallback "
             << c.fallbacks << "; exact ties proved by a null vector " << ties.certified << ", not proved "
             << ties.fallbacks << "; final values by p-adic lifting " << values.dixon << ", from the factored block "
-            << values.factored << " (lifting steps " << values.lifting_steps << ", reconstructions tried "
-            << values.reconstructions << "; factors the first denominator lacked, found by trial "
-            << values.factors_by_trial << ", by reconstruction " << values.factors_by_reconstruction
+            << values.factored << " (unknowns fixed by short rows first " << values.unknowns_eliminated
+            << ", lifting steps " << values.lifting_steps << ", reconstructions tried " << values.reconstructions
+            << "; factors the first denominator lacked, found by trial " << values.factors_by_trial
+            << ", by reconstruction " << values.factors_by_reconstruction
             << "); z0-row decisions settled by the final values " << values.z0_settled << ", runs repeated "
             << values.z0_reruns << "\n";
   int prepared_differ = 0;

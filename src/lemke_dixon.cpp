@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "fixel/internal/flint_thread.h"
+#include "fixel/internal/lemke_dixon_sparse.h"
 #include "fixel/internal/lemke_dixon_words.h"
 #include "fixel/internal/lemke_scaled.h"
 #include "fixel/progress.h"
@@ -34,6 +35,20 @@ const std::vector<std::uint64_t>& dixon_primes() {
 }
 
 namespace {
+
+// 1/p modulo 2^128 for the primes above, made once (Newton's steps are
+// 128-bit products: noticeable beside a small system's lifting).
+UInt128 dixon_prime_inverse(std::uint64_t prime) {
+  static const std::vector<UInt128> inverses = [] {
+    std::vector<UInt128> out;
+    for (const std::uint64_t p : dixon_primes()) out.push_back(inverse_mod_2_128(p));
+    return out;
+  }();
+  const std::vector<std::uint64_t>& primes = dixon_primes();
+  for (std::size_t i = 0; i < primes.size(); ++i)
+    if (primes[i] == prime) return inverses[i];
+  return inverse_mod_2_128(prime);
+}
 
 // FLINT's fmpz and fmpq as scoped values (they own memory when large).
 struct Fmpz {
@@ -72,9 +87,16 @@ struct Workspace {
   // The word path's system and residual (internal/lemke_dixon_words.h).
   std::vector<std::int64_t> c_words;
   std::vector<Int128> y_words, residual_words;
+  // dixon_solve's short rows eliminated, and the smaller system's parts.
+  SparseRowReduction sparse;
+  std::vector<char> zero_rhs, hint_set;
+  std::vector<const Integer*> reduced_y;
+  std::vector<Integer> reduced_u;
+  DixonHint reduced_hint;
 };
 
 std::atomic<bool> g_words_allowed{true};
+std::atomic<bool> g_sparse_rows_allowed{true};
 
 Workspace& workspace() {
   free_flint_caches_at_thread_exit();  // first, so FLINT's caches go after ws
@@ -415,7 +437,10 @@ int step_limit(int k, const std::vector<const Integer*>& c, const std::vector<co
 void set_dixon_words_allowed(bool on) { g_words_allowed = on; }
 bool dixon_words_allowed() { return g_words_allowed; }
 
-bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+namespace {
+
+// dixon_solve on the system as given (no short rows eliminated).
+bool solve_block(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
                  std::vector<Integer>& u, Integer& d, const DixonHint* hint, DixonTrace* trace,
                  const std::vector<std::int64_t>* c_words) {
   const auto entries = static_cast<std::size_t>(k) * k;
@@ -449,7 +474,7 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     if (!(in_words ? ws.lu.factor(k, ws.c_words, mod) : ws.lu.factor(k, c, mod)))
       continue;  // p divides det C (or C is singular)
     const int limit = step_limit(k, c, y, in_words, std::log2(static_cast<double>(prime)));
-    const UInt128 prime_inverse = inverse_mod_2_128(prime);
+    const UInt128 prime_inverse = dixon_prime_inverse(prime);
     ws.residual.resize(k);
     ws.lifted.resize(k);
     ws.digit.resize(k);
@@ -510,6 +535,61 @@ bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<
     return false;  // beyond the bound: not expected (p ∤ det C), and the caller solves another way
   }
   return false;
+}
+
+}  // namespace
+
+void set_dixon_sparse_rows_allowed(bool on) { g_sparse_rows_allowed = on; }
+
+bool dixon_solve(int k, const std::vector<const Integer*>& c, const std::vector<const Integer*>& y,
+                 std::vector<Integer>& u, Integer& d, const DixonHint* hint, DixonTrace* trace,
+                 const std::vector<std::int64_t>* c_words) {
+  // The short rows first (internal/lemke_dixon_sparse.h), when C comes as
+  // words: x from the smaller system's t, x_j = multiplier_j·t_(unknown_j).
+  const bool words_given = c_words != nullptr && k > 0 && k <= kWordRows &&
+                           c_words->size() == static_cast<std::size_t>(k) * k &&
+                           y.size() == static_cast<std::size_t>(k);
+  if (!words_given || !g_sparse_rows_allowed || !g_words_allowed)
+    return solve_block(k, c, y, u, d, hint, trace, c_words);
+  Workspace& ws = workspace();
+  ws.zero_rhs.resize(k);
+  for (int a = 0; a < k; ++a) ws.zero_rhs[a] = static_cast<char>(mpz_sgn(mp(*y[a])) == 0);
+  SparseRowReduction& r = ws.sparse;
+  if (!r.reduce(k, *c_words, ws.zero_rhs)) return solve_block(k, c, y, u, d, hint, trace, c_words);
+  ws.reduced_y.resize(r.reduced);
+  for (int a = 0; a < r.reduced; ++a) ws.reduced_y[a] = y[r.rows[a]];
+  const DixonHint* reduced_hint = nullptr;
+  if (hint != nullptr && hint->lo.size() == static_cast<std::size_t>(k) && hint->hi.size() == hint->lo.size()) {
+    // t from the first x_j that is a multiple of it: x_j/m (only a hint).
+    ws.reduced_hint.lo.assign(r.reduced, 0);
+    ws.reduced_hint.hi.assign(r.reduced, 0);
+    ws.hint_set.assign(r.reduced, 0);
+    for (int j = 0; j < k; ++j) {
+      const int t = r.unknown[j];
+      if (t < 0 || ws.hint_set[t]) continue;
+      const double m = static_cast<double>(r.multiplier[j]);
+      const double lo = hint->lo[j] / m, hi = hint->hi[j] / m;
+      ws.reduced_hint.lo[t] = m > 0 ? lo : hi;
+      ws.reduced_hint.hi[t] = m > 0 ? hi : lo;
+      ws.hint_set[t] = 1;
+    }
+    reduced_hint = &ws.reduced_hint;
+  }
+  const std::vector<const Integer*> no_integers;
+  if (!solve_block(r.reduced, no_integers, ws.reduced_y, ws.reduced_u, d, reduced_hint, trace, &r.c_words))
+    return solve_block(k, c, y, u, d, hint, trace, c_words);  // e.g. y beyond words: C whole, with GMP if need be
+  u.resize(k);
+  for (int j = 0; j < k; ++j) {
+    if (r.unknown[j] < 0)
+      mpz_set_ui(mp(u[j]), 0);
+    else
+      mpz_mul_si(mp(u[j]), mp(ws.reduced_u[r.unknown[j]]), static_cast<long>(r.multiplier[j]));
+  }
+  if (trace != nullptr) {
+    trace->unknowns_eliminated = k - r.reduced;
+    trace->words = true;  // the word path, also when nothing was left to lift
+  }
+  return true;
 }
 
 }  // namespace fixel::internal

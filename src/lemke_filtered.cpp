@@ -19,7 +19,7 @@ namespace fixel::internal {
 namespace {
 
 std::atomic<long> g_dixon_values{0}, g_factored_values{0}, g_lifting_steps{0}, g_reconstructions{0};
-std::atomic<long> g_factors_by_trial{0}, g_factors_by_reconstruction{0};
+std::atomic<long> g_factors_by_trial{0}, g_factors_by_reconstruction{0}, g_unknowns_eliminated{0};
 std::atomic<long> g_z0_settled{0}, g_z0_reruns{0};
 std::atomic<bool> g_defer_every_z0_comparison{false};
 
@@ -134,6 +134,7 @@ class FilteredRun {
         g_reconstructions += trace.attempts;
         g_factors_by_trial += trace.factors_by_trial;
         g_factors_by_reconstruction += trace.factors_by_reconstruction;
+        g_unknowns_eliminated += trace.unknowns_eliminated;
         if (!equations_hold) exact().basic_values(T_.rhs(), final_);
       }
       thread_local std::vector<int> row_of;
@@ -404,6 +405,7 @@ FinalValueCounts final_value_counts() {
   counts.reconstructions = g_reconstructions;
   counts.factors_by_trial = g_factors_by_trial;
   counts.factors_by_reconstruction = g_factors_by_reconstruction;
+  counts.unknowns_eliminated = g_unknowns_eliminated;
   counts.z0_settled = g_z0_settled;
   counts.z0_reruns = g_z0_reruns;
   return counts;
@@ -416,6 +418,7 @@ void reset_final_value_counts() {
   g_reconstructions = 0;
   g_factors_by_trial = 0;
   g_factors_by_reconstruction = 0;
+  g_unknowns_eliminated = 0;
   g_z0_settled = 0;
   g_z0_reruns = 0;
 }

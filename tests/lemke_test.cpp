@@ -270,6 +270,10 @@ GTEST_TEST(FilteredLemke, GivesTheForcedExactAnswerOnSeatingLcpsOfRandomScenes) 
   // Factors the combination's denominator lacked were found by trial here
   // (the answers above are the forced exact run's all the same).
   EXPECT_GT(values.factors_by_trial, 0);
+  // The friction rows of the final blocks (y_a = 0, one or two entries) fix
+  // unknowns before lifting (internal/lemke_dixon_sparse.h): more than one
+  // a block on average, with the same answers as above.
+  EXPECT_GT(values.unknowns_eliminated, values.dixon);
 }
 
 // The test switch leaves every comparison of the z0 row to the final values

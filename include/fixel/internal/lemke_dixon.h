@@ -34,6 +34,8 @@ struct DixonTrace {
   // attempt that answered: found by trial of 2..16 against the hint, or by
   // a reconstruction of d·x_j.
   int factors_by_trial = 0, factors_by_reconstruction = 0;
+  // Unknowns that short rows fixed before lifting (internal/lemke_dixon_sparse.h).
+  int unknowns_eliminated = 0;
 };
 
 // Test switch: with `on` false, dixon_solve lifts with GMP even when the
@@ -41,6 +43,11 @@ struct DixonTrace {
 // and dixon_basic_values sums the w numerators with GMP too.
 void set_dixon_words_allowed(bool on);
 bool dixon_words_allowed();
+
+// Test and benchmark switch: with `on` false, dixon_solve lifts the whole
+// system even when it has rows with y_a = 0 and one or two nonzero entries,
+// which it otherwise eliminates first (internal/lemke_dixon_sparse.h).
+void set_dixon_sparse_rows_allowed(bool on);
 
 // The acceptance test of dixon_solve, exposed for tests: whether
 // C·u = d·y, for u and d of which C·u ≡ d·y (mod modulus) is known.

@@ -42,6 +42,7 @@ struct FinalValueCounts {
   long dixon = 0, factored = 0;
   long lifting_steps = 0, reconstructions = 0;               // summed over the dixon runs (DixonTrace)
   long factors_by_trial = 0, factors_by_reconstruction = 0;  // likewise
+  long unknowns_eliminated = 0;                              // likewise: fixed by short rows before lifting
   long z0_settled = 0, z0_reruns = 0;
 };
 FinalValueCounts final_value_counts();
