@@ -36,18 +36,23 @@ const std::vector<std::uint64_t>& dixon_primes() {
 
 namespace {
 
-// 1/p modulo 2^128 for the primes above, made once (Newton's steps are
-// 128-bit products: noticeable beside a small system's lifting).
-UInt128 dixon_prime_inverse(std::uint64_t prime) {
-  static const std::vector<UInt128> inverses = [] {
-    std::vector<UInt128> out;
-    for (const std::uint64_t p : dixon_primes()) out.push_back(inverse_mod_2_128(p));
+// 1/p modulo 2^128 and ⌊2^126/p⌋ (exact_quotient's), made once for the
+// primes above: Newton's steps and a 128-bit division are noticeable
+// beside a small system's lifting.
+struct PrimeDivision {
+  UInt128 inverse = 0, bound = 0;
+  explicit PrimeDivision(std::uint64_t p) : inverse(inverse_mod_2_128(p)), bound((UInt128(1) << 126) / p) {}
+};
+PrimeDivision prime_division(std::uint64_t prime) {
+  static const std::vector<PrimeDivision> divisions = [] {
+    std::vector<PrimeDivision> out;
+    for (const std::uint64_t p : dixon_primes()) out.emplace_back(p);
     return out;
   }();
   const std::vector<std::uint64_t>& primes = dixon_primes();
   for (std::size_t i = 0; i < primes.size(); ++i)
-    if (primes[i] == prime) return inverses[i];
-  return inverse_mod_2_128(prime);
+    if (primes[i] == prime) return divisions[i];
+  return PrimeDivision(prime);
 }
 
 // FLINT's fmpz and fmpq as scoped values (they own memory when large).
@@ -474,7 +479,7 @@ bool solve_block(int k, const std::vector<const Integer*>& c, const std::vector<
     if (!(in_words ? ws.lu.factor(k, ws.c_words, mod) : ws.lu.factor(k, c, mod)))
       continue;  // p divides det C (or C is singular)
     const int limit = step_limit(k, c, y, in_words, std::log2(static_cast<double>(prime)));
-    const UInt128 prime_inverse = dixon_prime_inverse(prime);
+    const PrimeDivision division = prime_division(prime);
     ws.residual.resize(k);
     ws.lifted.resize(k);
     ws.digit.resize(k);
@@ -509,8 +514,8 @@ bool solve_block(int k, const std::vector<const Integer*>& c, const std::vector<
           // r ← (r − Σ_j C(a, j)·digit_j)/p, exact: times 1/p modulo 2^128.
           Int128 r = ws.residual_words[a];
           for (int j = 0; j < k; ++j) r -= static_cast<Int128>(ws.c_words[row + j]) * static_cast<Int128>(ws.digit[j]);
-          if (residue_below_2_126(r, mod) != 0) return false;  // checked: see the invariant
-          ws.residual_words[a] = static_cast<Int128>(static_cast<UInt128>(r) * prime_inverse);
+          if (!exact_quotient(r, division.inverse, division.bound, ws.residual_words[a]))
+            return false;  // checked: see the invariant
           continue;
         }
         for (int j = 0; j < k; ++j)

@@ -37,10 +37,17 @@ bool SparseRowReduction::reduce(int size, const std::vector<std::int64_t>& c, co
   work_.assign(c.begin(), c.end());
   row_state_.assign(k, kOn);
   col_on_.assign(k, 1);
+  std::uint32_t columns_on = (std::uint32_t{1} << k) - 1;  // k ≤ kWordRows = 16
+  const auto at = [&](int a, int j) -> std::int64_t& { return work_[static_cast<std::size_t>(a) * k + j]; };
+  // Per candidate row, its nonzero columns as bits: a row's count and
+  // columns without a branch per entry.
+  nonzero_.assign(k, 0);
+  for (int a = 0; a < k; ++a)
+    if (zero_rhs[a])
+      for (int j = 0; j < k; ++j) nonzero_[a] |= static_cast<std::uint32_t>(at(a, j) != 0) << j;
   unknown.resize(k);
   multiplier.assign(k, 1);
   for (int j = 0; j < k; ++j) unknown[j] = j;
-  const auto at = [&](int a, int j) -> std::int64_t& { return work_[static_cast<std::size_t>(a) * k + j]; };
   int eliminated = 0;
   // Passes over the candidate rows until one eliminates nothing; every pass
   // but the last eliminates a row, so at most k + 1 passes.
@@ -48,41 +55,44 @@ bool SparseRowReduction::reduce(int size, const std::vector<std::int64_t>& c, co
     progress = false;
     for (int a = 0; a < k; ++a) {
       if (row_state_[a] != kOn || !zero_rhs[a]) continue;
-      int first = -1, second = -1, nonzeros = 0;
-      for (int j = 0; j < k && nonzeros <= 2; ++j) {
-        if (!col_on_[j] || at(a, j) == 0) continue;
-        (nonzeros++ == 0 ? first : second) = j;
-      }
-      if (nonzeros == 1) {  // C(a, first)·x_first = 0
+      const std::uint32_t on = nonzero_[a] & columns_on;
+      if (on == 0) continue;  // a zero row: C is singular, and stays so
+      const std::uint32_t rest = on & (on - 1);
+      if ((rest & (rest - 1)) != 0) continue;  // three entries or more
+      const int first = __builtin_ctz(on);
+      if (rest == 0) {  // C(a, first)·x_first = 0
         for (int j = 0; j < k; ++j)
           if (unknown[j] == first) unknown[j] = -1;
         row_state_[a] = kOff;
         col_on_[first] = 0;
+        columns_on &= ~(std::uint32_t{1} << first);
         ++eliminated;
         progress = true;
         continue;
       }
-      if (nonzeros != 2) continue;
       // α·x_p + β·x_q = 0: x_p = β′·t, x_q = −α′·t with (α′, β′) = (α, β)/g;
       // t's column is β′·C(·, p) − α′·C(·, q), kept in p's place.
-      const int p = first, q = second;
+      const int p = first, q = __builtin_ctz(rest);
       const std::int64_t g = std::gcd(at(a, p), at(a, q));  // positive: both nonzero
       const std::int64_t alpha = at(a, p) / g, beta = at(a, q) / g;
       bool fits = true;
       for (int r = 0; r < k && fits; ++r)
-        if (row_state_[r] == kOn && r != a)
+        if (row_state_[r] != kOff && r != a)
           fits = within(product(beta, at(r, p)) - product(alpha, at(r, q)), kEntryLimit);
       for (int j = 0; j < k && fits; ++j) {
         if (unknown[j] == p) fits = within(product(beta, multiplier[j]), kMultiplierLimit);
         if (unknown[j] == q) fits = within(-product(alpha, multiplier[j]), kMultiplierLimit);
       }
       if (!fits) {
-        row_state_[a] = kKept;  // not tried again: its entries only grow
+        row_state_[a] = kKept;  // not tried again, which bounds the passes
         continue;
       }
-      for (int r = 0; r < k; ++r)
-        if (row_state_[r] != kOff)
-          at(r, p) = static_cast<std::int64_t>(product(beta, at(r, p)) - product(alpha, at(r, q)));
+      for (int r = 0; r < k; ++r) {
+        if (row_state_[r] == kOff) continue;
+        at(r, p) = static_cast<std::int64_t>(product(beta, at(r, p)) - product(alpha, at(r, q)));
+        const std::uint32_t bit = std::uint32_t{1} << p;
+        nonzero_[r] = (nonzero_[r] & ~bit) | (at(r, p) != 0 ? bit : 0);
+      }
       for (int j = 0; j < k; ++j) {
         if (unknown[j] == p) {
           multiplier[j] = static_cast<std::int64_t>(product(beta, multiplier[j]));
@@ -93,6 +103,7 @@ bool SparseRowReduction::reduce(int size, const std::vector<std::int64_t>& c, co
       }
       row_state_[a] = kOff;
       col_on_[q] = 0;
+      columns_on &= ~(std::uint32_t{1} << q);
       ++eliminated;
       progress = true;
     }

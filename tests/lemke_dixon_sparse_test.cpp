@@ -135,6 +135,34 @@ GTEST_TEST(SparseRowReduction, LeavesARowWhoseTieWouldTakeAnEntryTo2To59) {
   EXPECT_EQ(r.c_words, (Words{big, -(big / 2), 1, 3, 2, 0, 1, 1, 1}));
 }
 
+GTEST_TEST(SparseRowReduction, ChecksTheBoundInRowsLeftBeforeToo) {
+  // Row 1 (y = 0) would tie x_0 and x_1, but row 0's 1 − (−(2^59 − 1))
+  // reaches 2^59: row 1 stays. Row 2 (3·x_0 + 2·x_2 = 0) would then write
+  // 2·2^58 = 2^59 into row 1, which C′ keeps: it stays too, and nothing is
+  // eliminated.
+  const std::int64_t big = std::int64_t{1} << 58;
+  WordSystem s;
+  s.k = 4;
+  s.c = {1,   -(2 * big - 1),
+         1,   1,  //
+         big, big,
+         0,   0,  //
+         3,   0,
+         2,   0,  //
+         1,   2,
+         3,   4};
+  s.y = {5, 0, 0, 7};
+  SparseRowReduction r;
+  EXPECT_FALSE(r.reduce(s.k, s.c, s.zero_rhs()));
+  VectorQ expected;
+  ASSERT_TRUE(s.reference(expected));
+  std::vector<Rational> x;
+  DixonTrace trace;
+  ASSERT_TRUE(solve(s, true, x, trace));
+  EXPECT_EQ(trace.unknowns_eliminated, 0);
+  for (int j = 0; j < s.k; ++j) EXPECT_EQ(x[j], expected[j]) << "x_" << j;
+}
+
 GTEST_TEST(SparseRowReduction, MakesNoChangeWithoutShortRowsOfZeroRightHandSide) {
   SparseRowReduction r;
   // Short rows, but y ≠ 0 on them.

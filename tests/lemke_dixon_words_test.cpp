@@ -90,6 +90,15 @@ GTEST_TEST(DixonWords, ResiduesAgreeWithGmpForEveryPrimeSignAndEdge) {
       values.push_back((Integer(1) << e) - 1);
       values.push_back(Integer(1) - (Integer(1) << e));
     }
+    const UInt128 inverse = inverse_mod_2_128(p);
+    const UInt128 bound = (UInt128(1) << 126) / p;
+    // The largest multiples of p below 2^126 in magnitude, and their
+    // neighbours: the edges of exact_quotient's bound.
+    const Integer top = Integer(p) * Integer(from_word(bound));
+    for (const Integer& m : {top, Integer(top - 1), Integer(top - Integer(p)), Integer(top + 1)}) {
+      values.push_back(m);
+      values.push_back(-m);
+    }
     values.push_back(Integer(p) << 63);  // multiples of p
     values.push_back(-(Integer(p) * Integer(p)));
     for (const Integer& x : values) {
@@ -102,10 +111,16 @@ GTEST_TEST(DixonWords, ResiduesAgreeWithGmpForEveryPrimeSignAndEdge) {
         EXPECT_EQ(residue(w, mod), gmp_mod(x, p));
       }
       if (mpz_sgn(mp(x)) == 0 || size <= 126) {
+        // The quotient by p exactly when GMP says p divides x.
         const Int128 w = static_cast<Int128>(low_bits(mp(x)));
-        Integer magnitude;
-        mpz_abs(mp(magnitude), mp(x));
-        EXPECT_EQ(residue_below_2_126(w, mod), gmp_mod(magnitude, p));
+        Int128 q = 0;
+        const bool divides = mpz_divisible_ui_p(mp(x), p) != 0;
+        EXPECT_EQ(exact_quotient(w, inverse, bound, q), divides);
+        if (divides) {
+          Integer expected;
+          mpz_divexact_ui(mp(expected), mp(x), p);
+          EXPECT_EQ(from_word(q), expected);
+        }
       }
       if (mpz_sgn(mp(x)) >= 0 && (mpz_sgn(mp(x)) == 0 || size <= 128)) {
         EXPECT_EQ(reduce_128(to_word(x), mod), gmp_mod(x, p));

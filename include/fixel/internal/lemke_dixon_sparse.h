@@ -37,6 +37,7 @@ struct SparseRowReduction {
   std::vector<std::int64_t> work_;
   std::vector<RowState> row_state_;
   std::vector<char> col_on_;
+  std::vector<std::uint32_t> nonzero_;    // per row with y_a = 0: its nonzero columns, as bits
   std::vector<int> column_of_, columns_;  // W's column → t, and t → W's column
 };
 

@@ -62,14 +62,15 @@ inline mp_limb_t residue(Int128 x, nmod_t mod) {
   return r ^ ((r ^ (mod.n - r)) & flip);  // p − r for x < 0 and r ≠ 0
 }
 
-// |x| mod p, for |x| < 2^126: zero exactly when p divides x.
-inline mp_limb_t residue_below_2_126(Int128 x, nmod_t mod) {
-  const UInt128 negative = static_cast<UInt128>(x >> 127);
-  const UInt128 m = (static_cast<UInt128>(x) ^ negative) - negative;
-  mp_limb_t high = static_cast<mp_limb_t>(m >> 64), r;
-  high -= mod.n & (mp_limb_t(0) - static_cast<mp_limb_t>(high >= mod.n));  // below 2^62 < 2p: NMOD_RED2 wants < p
-  NMOD_RED2(r, high, static_cast<mp_limb_t>(m), mod);
-  return r;
+// x/p into q when the odd p divides x, for |x| < 2^126: q = x·p⁻¹ mod 2^128
+// (`inverse`, inverse_mod_2_128) is x/p exactly when |q| ≤ ⌊2^126/p⌋
+// (`bound`): then q·p ≡ x mod 2^128 and |q·p − x| < 2^127, so q·p = x;
+// when p ∤ x, |q| is larger. False when p ∤ x. Two products and a
+// comparison, where a residue mod p would take a reduction.
+inline bool exact_quotient(Int128 x, UInt128 inverse, UInt128 bound, Int128& q) {
+  q = static_cast<Int128>(static_cast<UInt128>(x) * inverse);
+  const UInt128 negative = static_cast<UInt128>(q >> 127);
+  return ((static_cast<UInt128>(q) ^ negative) - negative) <= bound;
 }
 
 // x mod p in [0, p), for any integer x.
