@@ -49,6 +49,7 @@ void IntervalTableau::start(bool zeros) {
   for (int i = 0; i < n_; ++i) basis_[i] = i;
   slot_.assign(2 * n_ + 2, -1);
   stamp_.assign(width_, 0);
+  pending_.assign(width_, -1);
   forget_pivots();
   // Slots: z_j at j, z0 at n, b at n + 1; the w's are basic.
   for (int j = 0; j <= n_; ++j) slot_[n_ + j] = j;
@@ -80,20 +81,27 @@ void IntervalTableau::pivot(int r, int s) {
     if (i != r && !(f.inf() == 0 && f.sup() == 0)) eta_support_.push_back(i);
   }
   eta_row_.push_back(r);
-  const FI inverse = FI(1) / at_slot(r, ks);
-  eta_inverse_.push_back(inverse);
-  at_slot(r, ks) = inverse;
-  for (int i = 0; i < n_; ++i) {
-    if (i == r) continue;
-    const FI f = at_slot(i, ks);
-    if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
-    at_slot(i, ks) = -f * inverse;
-  }
+  eta_inverse_.push_back(FI(1) / at_slot(r, ks));
+  pending_[ks] = pivots_;  // the slot keeps T(·, s) until take_pivot_column
   stamp_[ks] = ++pivots_;
   basis_[r] = s;
   slot_[leaving] = ks;
   slot_[s] = -1;
   if (pivots_ >= 2 * n_) flush();  // bounds the pivots kept, and the work, by the eager update's
+}
+
+void IntervalTableau::take_pivot_column(int k) {
+  const int t = pending_[k];
+  pending_[k] = -1;
+  const int r = eta_row_[t];
+  const FI inverse = eta_inverse_[t];
+  at_slot(r, k) = inverse;
+  for (int i = 0; i < n_; ++i) {
+    if (i == r) continue;
+    const FI f = at_slot(i, k);
+    if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
+    at_slot(i, k) = -f * inverse;
+  }
 }
 
 void IntervalTableau::forget_pivots() {

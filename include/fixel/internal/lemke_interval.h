@@ -64,7 +64,7 @@ class IntervalTableau {
 
   // Pivot on (r, s), s nonbasic; needs a pivot interval that excludes zero.
   // The leaving variable's column, e_r before, becomes (−T(i, s)/p)_i with
-  // 1/p in row r, and is stored in s's slot. The other columns are updated
+  // 1/p in row r, and is stored in s's slot (made when first read). The other columns are updated
   // when they are next read (bring_up_to_date) or at the flush after 2n
   // pivots: the path reads b's column and the entering one, and others only
   // for a lexicographic tie-break.
@@ -88,6 +88,7 @@ class IntervalTableau {
   // T(i, s)·(new row r) for the rows where T(i, s) is not an exact zero),
   // so its enclosures are bit for bit those of an eager update.
   void bring_up_to_date(int k) {
+    if (pending_[k] >= 0) take_pivot_column(k);
     for (int t = stamp_[k]; t < pivots_; ++t) {
       const FI* f = &eta_[static_cast<std::size_t>(t) * n_];
       const int r = eta_row_[t];
@@ -105,6 +106,11 @@ class IntervalTableau {
 
   // Brings every column up to date and forgets the pivots.
   void flush();
+  // Slot k as pivot t (pending_[k]) left it: 1/p in row r, −T(i, s)/p
+  // elsewhere, from the entering column T(·, s) still in the slot. Made when
+  // the column is first read rather than at the pivot: a leaving variable's
+  // column is read again only if it enters later.
+  void take_pivot_column(int k);
 
   // q in an interval: when numerator and denominator are exact doubles, one
   // interval division (outward rounded), else the shared conversion.
@@ -115,7 +121,7 @@ class IntervalTableau {
   struct Storage {
     std::vector<FI> T, eta, eta_inverse, first_rhs;
     std::vector<double> initial;
-    std::vector<int> basis, slot, stamp, eta_row, eta_support, eta_support_start;
+    std::vector<int> basis, slot, stamp, pending, eta_row, eta_support, eta_support_start;
   };
   static Storage& storage();
 
@@ -126,6 +132,7 @@ class IntervalTableau {
   std::vector<int>& basis_ = storage_.basis;             // basic variable of each row
   std::vector<int>& slot_ = storage_.slot;               // storage slot of each nonbasic variable (and b), else −1
   std::vector<int>& stamp_ = storage_.stamp;             // per slot: how many pivots its column has seen
+  std::vector<int>& pending_ = storage_.pending;         // per slot: the pivot whose column it still holds, or −1
   std::vector<FI>& eta_ = storage_.eta;                  // per pivot: the entering column before it (n entries)
   std::vector<int>& eta_row_ = storage_.eta_row;         // per pivot: its row
   std::vector<FI>& eta_inverse_ = storage_.eta_inverse;  // per pivot: 1/p, p its pivot
