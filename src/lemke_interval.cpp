@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace fixel::internal {
@@ -129,7 +131,37 @@ FI magnitude_enclosure(mpz_srcptr z) {
   return FI(truncated, std::nextafter(truncated, std::numeric_limits<double>::infinity()));
 }
 
+double from_bits(std::uint64_t bits) {
+  double x = 0;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+std::uint64_t to_bits(double x) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &x, sizeof x);
+  return bits;
+}
+// The double next to a positive finite x, up or down: its bit pattern ± 1.
+double next_up(double x) { return from_bits(to_bits(x) + 1); }
+double next_down(double x) { return from_bits(to_bits(x) - 1); }
+
 }  // namespace
+
+FI two_limb_magnitude(mpz_srcptr z) {
+  const mp_limb_t low = mpz_getlimbn(z, 0);
+  const mp_limb_t high = mpz_size(z) > 1 ? mpz_getlimbn(z, 1) : 0;
+  if (high == 0 && low < (mp_limb_t(1) << 53)) return FI(static_cast<double>(low));
+  int shift = 0;  // |z| = (top + a fraction below 1)·2^shift
+  mp_limb_t top = low;
+  if (high != 0) {
+    const int zeros = __builtin_clzl(high);
+    shift = 64 - zeros;
+    top = zeros == 0 ? high : (high << zeros) | (low >> shift);
+  }
+  const double v = static_cast<double>(top);  // top ≥ 2^53: v ≥ 2^53, an ulp ≥ 2
+  const double scale = from_bits(static_cast<std::uint64_t>(1023 + shift) << 52);  // 2^shift, exact
+  return FI(next_down(v) * scale, next_up(v) * scale);
+}
 
 FI IntervalTableau::enclosure(const Rational& q) {
   const auto* m = q.backend().data();
@@ -144,6 +176,10 @@ FI IntervalTableau::enclosure(const Rational& q) {
   // part enclosed, then one interval division, rather than GMP's quotient
   // truncated to a double (a multi-limb division) and widened by an ulp
   // each way. Parts beyond double range take the shared conversion.
+  if (mpz_sgn(num) != 0 && mpz_size(num) <= 2 && mpz_size(den) <= 2) {  // b's usual case
+    const FI quotient = two_limb_magnitude(num) / two_limb_magnitude(den);
+    return mpz_sgn(num) < 0 ? -quotient : quotient;
+  }
   constexpr std::size_t kLimbs = 15;  // 960 bits
   if (mpz_sgn(num) != 0 && mpz_size(num) <= kLimbs && mpz_size(den) <= kLimbs) {
     const FI quotient = magnitude_enclosure(num) / magnitude_enclosure(den);

@@ -201,6 +201,50 @@ GTEST_TEST(IntervalTableau, GivesTheSameEnclosuresBitForBitWhetherColumnsAreRead
   EXPECT_GT(late_reads, 40);
 }
 
+GTEST_TEST(TwoLimbMagnitude, EnclosesEveryIntegerBelow2To128WithinTwoUlps) {
+  // Random sizes from 1 to 128 bits and the edges (2^53 ± 1, 2^64 ± 1,
+  // 2^127, 2^128 − 1, all ones below a limb's top), both signs: the ends
+  // hold |z|, compared exactly, and are within two ulps of each other.
+  std::mt19937_64 rng(47);
+  std::vector<Integer> values;
+  for (const int e : {52, 53, 54, 63, 64, 65, 117, 127, 128}) {
+    values.push_back((Integer(1) << e) - 1);
+    values.push_back(Integer(1) << e);
+    values.push_back((Integer(1) << e) + 1);
+  }
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int bits = 1 + trial % 128;
+    Integer x = 0;
+    for (int left = bits; left > 0; left -= 32) {
+      const int chunk = left < 32 ? left : 32;
+      x = (x << chunk) + Integer(rng() & ((std::uint64_t{1} << chunk) - 1));
+    }
+    x |= Integer(1) << (bits - 1);  // exactly `bits` bits
+    values.push_back(x);
+  }
+  // In the caller's rounding mode and in the tableau's (upward): the
+  // conversion of the top 64 bits rounds either way.
+  const auto check = [&values](int& exact) {
+    for (const Integer& x : values) {
+      if (x == 0 || x >= (Integer(1) << 128)) continue;
+      for (const Integer& z : {x, Integer(-x)}) {
+        const FI m = two_limb_magnitude(mp(z));
+        ASSERT_LE(Rational(m.inf()), Rational(x)) << x;
+        ASSERT_GE(Rational(m.sup()), Rational(x)) << x;
+        ASSERT_LE(Rational(m.sup()) - Rational(m.inf()), Rational(m.inf()) / Rational(Integer(1) << 51)) << x;
+        exact += m.inf() == m.sup();
+      }
+    }
+  };
+  int exact = 0;
+  check(exact);
+  {
+    Protect rounding;
+    check(exact);
+  }
+  EXPECT_GT(exact, 200);  // below 2^53: points
+}
+
 GTEST_TEST(IntervalTableau, KeepsExactZerosAndPointsExact) {
   // Integer data: the first tableau is exact, and an entry whose pivot
   // column entry is an exact zero stays untouched by that pivot.

@@ -11,6 +11,14 @@
 
 namespace fixel::internal {
 
+// |z| enclosed, for 0 < |z| < 2^128 (one or two limbs), without GMP's
+// conversion: exact below 2^53; else its top 64 bits, truncated, converted
+// to a double v (within one ulp, in any rounding mode), then
+// [prev(v), next(v)]·2^shift holds |z| (the bits dropped are below one
+// unit of the top 64, and an ulp of v is 2^11 of them or more). Exposed for
+// tests.
+FI two_limb_magnitude(mpz_srcptr z);
+
 // B's part of the first interval tableau: row i is [−B(i, ·), −1], n + 1
 // enclosures. It depends on B alone, so a prepared matrix (LemkeMatrix)
 // keeps one for all its solves. Needs a Protect scope to assign.
