@@ -560,9 +560,9 @@ bool solve_block(int k, const std::vector<const Integer*>& c, const std::vector<
       if (hint == nullptr && step == 0) continue;
       // With a hint, none after the second step either: a two-limb
       // reconstruction costs more than a lifting step, and on the seating
-      // LCPs it rarely succeeds where one limb failed (on 11% of the
-      // bench's solves; 57% need three steps, 2% four). This costs time
-      // only: every later step tries.
+      // LCPs it rarely succeeded where one limb failed (11% of the bench's
+      // solves when every step tried, 57% needing three steps, 2% four;
+      // docs/theory.md §6). This costs time only: every later step tries.
       if (hint != nullptr && step == 1 && !last) continue;
       ++record.attempts;
       if (reconstruct(k, step + 1, c, y, in_words, u, d, ws, last ? nullptr : hint, record)) return true;

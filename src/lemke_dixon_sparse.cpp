@@ -10,8 +10,10 @@ namespace fixel::internal {
 
 namespace {
 
-constexpr Int128 kEntryLimit = Int128(1) << 59;       // kWordEntry: the lifting's bound on C's entries
-constexpr Int128 kMultiplierLimit = Int128(1) << 62;  // keeps x_j = multiplier·t within the expansion's int64
+constexpr Int128 kEntryLimit = Int128(1) << 59;  // kWordEntry: the lifting's bound on C's entries
+// Multipliers are kept as int64 (below 2^62), and a tie's β′·m (|β′| < 2^59)
+// then stays within Int128 in the check that precedes it.
+constexpr Int128 kMultiplierLimit = Int128(1) << 62;
 
 static_assert(kEntryLimit == Int128(kWordEntry), "C′ must stay within the word lifting's bound");
 

@@ -118,6 +118,38 @@ GTEST_TEST(SparseRowReduction, ComposesTiesAndZerosAcrossRounds) {
   for (int j = 0; j < s.k; ++j) EXPECT_EQ(x[j], expected[j]) << "x_" << j;
 }
 
+GTEST_TEST(SparseRowReduction, PassesTheHintOnSoThatASmallAnswerComesAfterOneStep) {
+  // x = (2, 5, 3, 0) by hand: row 2 ties x_0 = −2·t, x_1 = −5·t (t = −1),
+  // row 3 fixes x_3 = 0, and C′ = [[−12, 3], [1, 1]] gives t and x_2. With
+  // the hint x_j ± 1/4, t's enclosure is x_0/(−2) with its ends swapped:
+  // the one-limb reconstruction after the first step then answers.
+  // Without a hint no attempt comes before the second step.
+  std::vector<Integer> y = {Integer(21), Integer(2), Integer(0), Integer(0)};
+  std::vector<const Integer*> y_pointers;
+  for (const Integer& v : y) y_pointers.push_back(&v);
+  const Words c = {1, 2,  3, 4,  //
+                   2, -1, 1, 5,  //
+                   5, -2, 0, 0,  //
+                   0, 0,  0, 7};
+  const std::vector<double> x = {2, 5, 3, 0};
+  DixonHint hint;
+  for (const double v : x) {
+    hint.lo.push_back(v - 0.25);
+    hint.hi.push_back(v + 0.25);
+  }
+  std::vector<Integer> u;
+  Integer d;
+  DixonTrace trace;
+  ASSERT_TRUE(dixon_solve(4, {}, y_pointers, u, d, &hint, &trace, &c));
+  EXPECT_EQ(trace.unknowns_eliminated, 2);
+  EXPECT_EQ(trace.steps, 1);
+  EXPECT_EQ(trace.attempts, 1);
+  for (int j = 0; j < 4; ++j) EXPECT_EQ(Rational(u[j], d), Rational(static_cast<long>(x[j]))) << "x_" << j;
+  ASSERT_TRUE(dixon_solve(4, {}, y_pointers, u, d, nullptr, &trace, &c));
+  EXPECT_GT(trace.steps, 1);
+  for (int j = 0; j < 4; ++j) EXPECT_EQ(Rational(u[j], d), Rational(static_cast<long>(x[j]))) << "x_" << j;
+}
+
 GTEST_TEST(SparseRowReduction, LeavesARowWhoseTieWouldTakeAnEntryTo2To59) {
   // Row 2: 3·x_0 + 2·x_1 = 0; t's column 2·C(·, 0) − 3·C(·, 1) would reach
   // 2·2^58 + 3·2^57 > 2^59 in row 0, so the row stays; row 1's single

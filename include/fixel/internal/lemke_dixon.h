@@ -61,7 +61,9 @@ bool dixon_accepts(int k, const std::vector<const Integer*>& c, const std::vecto
 
 // Solves C x = y for the k×k integer matrix C (c[a·k + j] = C(a, j)) and
 // the integer vector y, as x = u/d with one common denominator d > 0.
-// True only when C·u = d·y holds exactly (proved before returning). False
+// True only when C·u = d·y holds exactly (proved before returning: on
+// C′·u′ = d·y′ when short rows were eliminated first, which gives it for C,
+// docs/theory.md §6 step 0). False
 // when C is singular, or singular modulo every prime tried, or no
 // reconstruction passed that check within the lifting steps that
 // Hadamard's bound says suffice: the caller then solves another way.

@@ -116,12 +116,16 @@ class IntervalTableau {
   void flush();
   // Slot k as pivot t (pending_[k]) left it: 1/p in row r, −T(i, s)/p
   // elsewhere, from the entering column T(·, s) still in the slot. Made when
-  // the column is first read rather than at the pivot: a leaving variable's
-  // column is read again only if it enters later.
+  // the column is first read rather than at the pivot (when the variable
+  // enters again, at a lexicographic tie-break, or at the flush): most
+  // leaving columns are never read again.
   void take_pivot_column(int k);
 
   // q in an interval: when numerator and denominator are exact doubles, one
-  // interval division (outward rounded), else the shared conversion.
+  // interval division (outward rounded); when they have at most two limbs,
+  // their two_limb_magnitude enclosures divided; up to 15 limbs, their
+  // truncated doubles widened by an ulp, divided; else the shared
+  // conversion (to_interval).
   static FI enclosure(const Rational& q);
 
   // The vectors' storage, reused from run to run (one per thread; a run
