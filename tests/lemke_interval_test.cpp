@@ -28,32 +28,45 @@ MatrixQ reference_tableau(const MatrixQ& B, const VectorQ& b, const std::vector<
 // Whether the interval holds q, compared exactly (a double is a rational).
 bool holds(const FI& x, const Rational& q) { return Rational(x.inf()) <= q && q <= Rational(x.sup()); }
 
+// Small random B (a third of its entries zero) and b, rationals of one digit.
+void random_data(std::mt19937_64& rng, int n, MatrixQ& B, VectorQ& b) {
+  std::uniform_int_distribution<int> num(-9, 9), den(1, 9);
+  B.resize(n, n);
+  b.resize(n);
+  for (int i = 0; i < n; ++i) {
+    b[i] = Rational(num(rng), den(rng));
+    for (int j = 0; j < n; ++j) B(i, j) = (rng() % 3 == 0) ? Rational(0) : Rational(num(rng), den(rng));
+  }
+}
+
+// A random nonbasic column whose entry in row r the intervals certify
+// nonzero (4n tries), else −1.
+int certified_column(IntervalTableau& T, int r, int n, std::mt19937_64& rng) {
+  for (int tries = 0; tries < 4 * n; ++tries) {
+    const int v = static_cast<int>(rng() % (2 * n + 1));
+    const bool basic = std::find(T.basis().begin(), T.basis().end(), v) != T.basis().end();
+    if (!basic && certain_sign(T.at(r, v)) != 0 && certain_sign(T.at(r, v)) != kUndecided) return v;
+  }
+  return -1;
+}
+
 GTEST_TEST(IntervalTableau, EnclosesTheExactTableauAfterEveryPivot) {
   // Random pivots (on entries the intervals certify nonzero), more than 2n
   // of them so that the pivots kept are flushed too; after each, every
   // entry of every column encloses the exact tableau's, and the basis is
   // the one pivoted to.
   std::mt19937_64 rng(41);
-  std::uniform_int_distribution<int> num(-9, 9), den(1, 9);
   int pivots = 0;
   for (int trial = 0; trial < 30; ++trial) {
     const int n = 2 + trial % 5;
-    MatrixQ B(n, n);
-    VectorQ b(n);
-    for (int i = 0; i < n; ++i) {
-      b[i] = Rational(num(rng), den(rng));
-      for (int j = 0; j < n; ++j) B(i, j) = (rng() % 3 == 0) ? Rational(0) : Rational(num(rng), den(rng));
-    }
+    MatrixQ B;
+    VectorQ b;
+    random_data(rng, n, B, b);
     Protect rounding;
     IntervalTableau T(B, b);
     for (int step = 0; step < 3 * n; ++step) {
       const int r = static_cast<int>(rng() % n);
-      int s = -1;
-      for (int tries = 0; tries < 4 * n && s < 0; ++tries) {
-        const int v = static_cast<int>(rng() % (2 * n + 1));
-        const bool basic = std::find(T.basis().begin(), T.basis().end(), v) != T.basis().end();
-        if (!basic && certain_sign(T.at(r, v)) != 0 && certain_sign(T.at(r, v)) != kUndecided) s = v;
-      }
+      const int s = certified_column(T, r, n, rng);
       if (s < 0) continue;
       T.pivot(r, s);
       ++pivots;
@@ -153,16 +166,12 @@ GTEST_TEST(IntervalTableau, GivesTheSameEnclosuresBitForBitWhetherColumnsAreRead
   // after 2n pivots. Every entry read late has the same two ends as read at
   // once, and encloses the exact tableau's.
   std::mt19937_64 rng(43);
-  std::uniform_int_distribution<int> num(-9, 9), den(1, 9);
   int late_reads = 0;
   for (int trial = 0; trial < 30; ++trial) {
     const int n = 2 + trial % 5;
-    MatrixQ B(n, n);
-    VectorQ b(n);
-    for (int i = 0; i < n; ++i) {
-      b[i] = Rational(num(rng), den(rng));
-      for (int j = 0; j < n; ++j) B(i, j) = (rng() % 3 == 0) ? Rational(0) : Rational(num(rng), den(rng));
-    }
+    MatrixQ B;
+    VectorQ b;
+    random_data(rng, n, B, b);
     Protect rounding;
     std::vector<std::pair<int, int>> pivots;
     std::vector<std::vector<FI>> at_once;  // after each pivot, every entry, column by column
@@ -170,12 +179,7 @@ GTEST_TEST(IntervalTableau, GivesTheSameEnclosuresBitForBitWhetherColumnsAreRead
       IntervalTableau T(B, b);
       for (int step = 0; step < 4 * n; ++step) {
         const int r = static_cast<int>(rng() % n);
-        int s = -1;
-        for (int tries = 0; tries < 4 * n && s < 0; ++tries) {
-          const int v = static_cast<int>(rng() % (2 * n + 1));
-          const bool basic = std::find(T.basis().begin(), T.basis().end(), v) != T.basis().end();
-          if (!basic && certain_sign(T.at(r, v)) != 0 && certain_sign(T.at(r, v)) != kUndecided) s = v;
-        }
+        const int s = certified_column(T, r, n, rng);
         if (s < 0) continue;
         T.pivot(r, s);
         pivots.emplace_back(r, s);
