@@ -77,13 +77,16 @@ void IntervalTableau::pivot(int r, int s) {
   const int leaving = basis_[r];
   eta_.resize(static_cast<std::size_t>(pivots_ + 1) * n_);
   eta_support_start_.push_back(static_cast<int>(eta_support_.size()));
+  const FI inverse = FI(1) / at_slot(r, ks);
+  FI* g = &eta_[static_cast<std::size_t>(pivots_) * n_];
   for (int i = 0; i < n_; ++i) {
     const FI f = at_slot(i, ks);
-    eta_[static_cast<std::size_t>(pivots_) * n_ + i] = f;
-    if (i != r && !(f.inf() == 0 && f.sup() == 0)) eta_support_.push_back(i);
+    if (i == r || (f.inf() == 0 && f.sup() == 0)) continue;
+    g[i] = f * inverse;
+    eta_support_.push_back(i);
   }
   eta_row_.push_back(r);
-  eta_inverse_.push_back(FI(1) / at_slot(r, ks));
+  eta_inverse_.push_back(inverse);
   pending_[ks] = pivots_;  // the slot keeps T(·, s) until take_pivot_column
   stamp_[ks] = ++pivots_;
   basis_[r] = s;
@@ -98,11 +101,11 @@ void IntervalTableau::take_pivot_column(int k) {
   const int r = eta_row_[t];
   const FI inverse = eta_inverse_[t];
   at_slot(r, k) = inverse;
-  for (int i = 0; i < n_; ++i) {
-    if (i == r) continue;
-    const FI f = at_slot(i, k);
-    if (f.inf() == 0 && f.sup() == 0) continue;  // an exact zero stays exact
-    at_slot(i, k) = -f * inverse;
+  const FI* g = &eta_[static_cast<std::size_t>(t) * n_];
+  const int end = t + 1 < pivots_ ? eta_support_start_[t + 1] : static_cast<int>(eta_support_.size());
+  for (int e = eta_support_start_[t]; e < end; ++e) {  // an exact zero stays exact
+    const int i = eta_support_[e];
+    at_slot(i, k) = -g[i];
   }
 }
 

@@ -91,22 +91,23 @@ class IntervalTableau {
   void keep_initial();
 
   // Applies the pivots made since slot k was last read, in order, with the
-  // operations of a Gauss–Jordan step on that column (row r times the
-  // pivot's reciprocal, the interval the pivot column got, then row i less
-  // T(i, s)·(new row r) for the rows where T(i, s) is not an exact zero),
-  // so its enclosures are bit for bit those of an eager update.
+  // operations of a Gauss–Jordan step on that column (row i less
+  // m_i·(old row r) for the rows where T(i, s) is not an exact zero, m_i =
+  // T(i, s)/p enclosed at the pivot; then row r times 1/p), so its
+  // enclosures are bit for bit those of an eager update. m_i rather than
+  // T(i, s)·(row r/p): one product less on the chain from pivot to pivot.
   void bring_up_to_date(int k) {
     if (pending_[k] >= 0) take_pivot_column(k);
     for (int t = stamp_[k]; t < pivots_; ++t) {
-      const FI* f = &eta_[static_cast<std::size_t>(t) * n_];
+      const FI* g = &eta_[static_cast<std::size_t>(t) * n_];
       const int r = eta_row_[t];
-      const FI x = at_slot(r, k) * eta_inverse_[t];
-      at_slot(r, k) = x;
+      const FI x = at_slot(r, k);
+      at_slot(r, k) = x * eta_inverse_[t];
       if (x.inf() == 0 && x.sup() == 0) continue;
       const int end = t + 1 < pivots_ ? eta_support_start_[t + 1] : static_cast<int>(eta_support_.size());
       for (int e = eta_support_start_[t]; e < end; ++e) {
         const int i = eta_support_[e];
-        at_slot(i, k) -= f[i] * x;
+        at_slot(i, k) -= g[i] * x;
       }
     }
     stamp_[k] = pivots_;
@@ -114,8 +115,8 @@ class IntervalTableau {
 
   // Brings every column up to date and forgets the pivots.
   void flush();
-  // Slot k as pivot t (pending_[k]) left it: 1/p in row r, −T(i, s)/p
-  // elsewhere, from the entering column T(·, s) still in the slot. Made when
+  // Slot k as pivot t (pending_[k]) left it: 1/p in row r, −m_i on the
+  // pivot's support, the slot's exact zeros kept. Made when
   // the column is first read rather than at the pivot (when the variable
   // enters again, at a lexicographic tie-break, or at the flush): most
   // leaving columns are never read again.
@@ -145,7 +146,7 @@ class IntervalTableau {
   std::vector<int>& slot_ = storage_.slot;               // storage slot of each nonbasic variable (and b), else −1
   std::vector<int>& stamp_ = storage_.stamp;             // per slot: how many pivots its column has seen
   std::vector<int>& pending_ = storage_.pending;         // per slot: the pivot whose column it still holds, or −1
-  std::vector<FI>& eta_ = storage_.eta;                  // per pivot: the entering column before it (n entries)
+  std::vector<FI>& eta_ = storage_.eta;                  // per pivot: n slots, m_i = T(i, s)/p on its support
   std::vector<int>& eta_row_ = storage_.eta_row;         // per pivot: its row
   std::vector<FI>& eta_inverse_ = storage_.eta_inverse;  // per pivot: 1/p, p its pivot
   // Per pivot t, from eta_support_start_[t]: the rows i ≠ r whose T(i, s)
