@@ -157,20 +157,20 @@ class FilteredRun {
       result.z.resize(0);
     } else {
       // Into the result's own storage when it has the size already (a
-      // caller solving in a loop): zeros first, then each basic value in
-      // lowest terms, written straight in (den > 0).
+      // caller solving in a loop): each basic value in lowest terms,
+      // written straight in (den > 0), then zeros for the nonbasic ones.
       result.w.resize(n_);
       result.z.resize(n_);
-      for (int i = 0; i < n_; ++i) {
-        mpq_set_ui(result.w[i].backend().data(), 0, 1);
-        mpq_set_ui(result.z[i].backend().data(), 0, 1);
-      }
+      const auto value = [&](int var) { return (var < n_ ? result.w[var] : result.z[var - n_]).backend().data(); };
+      thread_local std::vector<char> written;
+      written.assign(2 * n_, 0);
       thread_local Integer den_w, g;
       for (int t = 0; t < n_; ++t) {
         const int v = T_.basic(t);
         const mpz_srcptr num = mp(final_.num[t]);
         if (mpz_sgn(num) == 0) continue;
-        auto* q = (v < n_ ? result.w[v] : result.z[v - n_]).backend().data();
+        written[v] = 1;
+        auto* q = value(v);
         mpz_srcptr den = mp(final_.den);
         if (v < n_) {
           mpz_mul(mp(den_w), den, mp(exact_workspace().problem.scale(v)));
@@ -181,6 +181,8 @@ class FilteredRun {
         mpz_divexact(mpq_numref(q), num, mp(g));
         mpz_divexact(mpq_denref(q), den, mp(g));
       }
+      for (int var = 0; var < 2 * n_; ++var)
+        if (!written[var]) mpq_set_ui(value(var), 0, 1);
     }
     return true;
   }
