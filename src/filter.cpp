@@ -68,8 +68,36 @@ long FilterStats::total_certified() const {
   return t;
 }
 
+namespace {
+
+// Whether CGAL's intervals enclose here: under Protect, 1.1·10.1 and 1/10
+// (neither a double) must come out as intervals of two distinct ends.
+// Valgrind, for one, ignores the SSE rounding mode and rounds to nearest:
+// then both ends are the same double, on one side of the exact value.
+bool intervals_enclose() {
+  internal::Protect guard;
+  volatile double a = 1.1, b = 10.1, one = 1, ten = 10;  // not constants: computed here, in this mode
+  const internal::FI product = internal::FI(a) * internal::FI(b);
+  const internal::FI quotient = internal::FI(one) / internal::FI(ten);
+  return product.inf() < product.sup() && quotient.inf() < quotient.sup();
+}
+
+std::atomic<bool> g_assume_rounding_ignored{false};
+
+}  // namespace
+
+bool directed_rounding_works() {
+  static const bool works = intervals_enclose();
+  return works && !g_assume_rounding_ignored.load(std::memory_order_relaxed);
+}
+
 void set_force_exact(bool on) { g_force_exact.store(on, std::memory_order_relaxed); }
-bool force_exact() { return g_force_exact.load(std::memory_order_relaxed); }
+bool force_exact_set() { return g_force_exact.load(std::memory_order_relaxed); }
+bool force_exact() { return force_exact_set() || !directed_rounding_works(); }
+
+namespace internal {
+void assume_directed_rounding_ignored(bool on) { g_assume_rounding_ignored.store(on, std::memory_order_relaxed); }
+}  // namespace internal
 
 FilterStats filter_stats() {
   FilterStats s;

@@ -935,5 +935,43 @@ GTEST_TEST(Filter, ForcedExactRunsCountNoFilterDecision) {
   EXPECT_GT(filter_stats().total_certified(), 0);
 }
 
+GTEST_TEST(Filter, DirectedRoundingWorksOnThisMachineSoTheSwitchAloneDecides) {
+  EXPECT_TRUE(directed_rounding_works());
+  ForceExactScope off(false);
+  EXPECT_FALSE(force_exact());
+}
+
+// As under valgrind, which rounds to nearest whatever the mode: the filters'
+// intervals would not hold their values, so no filter may decide.
+GTEST_TEST(Filter, WhereRoundingIsIgnoredEveryDecisionIsExactWhateverTheSwitchSays) {
+  const Scene scene = test::scene_file("blob");
+  const SeatingSet S = seating_set(scene);
+  RegionOptions opt;
+  opt.resolution = Rational(1, 64);
+  const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+  const bool set_before = force_exact_set();
+  internal::assume_directed_rounding_ignored(true);
+  {
+    ForceExactScope off(false);
+    EXPECT_FALSE(directed_rounding_works());
+    EXPECT_FALSE(force_exact_set());
+    EXPECT_TRUE(force_exact());
+    reset_filter_stats();
+    EXPECT_EQ(region_json_of(scene, S, opt), filtered);
+    EXPECT_EQ(filter_stats().total_certified() + filter_stats().total_fallbacks(), 0);
+    {
+      ForceExactScope on(true);  // restores the switch, not the forced state
+    }
+    EXPECT_FALSE(force_exact_set());
+  }
+  internal::assume_directed_rounding_ignored(false);
+  EXPECT_EQ(force_exact_set(), set_before);
+  ForceExactScope off(false);
+  EXPECT_FALSE(force_exact());
+  reset_filter_stats();
+  EXPECT_EQ(region_json_of(scene, S, opt), filtered);
+  EXPECT_GT(filter_stats().total_certified(), 0);
+}
+
 }  // namespace
 }  // namespace fixel

@@ -69,8 +69,21 @@ struct FilterStats {
 /// identical either way; only the time differs.
 void set_force_exact(bool on);
 
-/// Whether the exact path is forced (see set_force_exact).
+/// Whether set_force_exact (or FIXEL_FORCE_EXACT) asks for the exact path:
+/// what ForceExactScope saves and restores.
+bool force_exact_set();
+
+/// Whether the exact path is forced: by set_force_exact, or because
+/// directed rounding does not work here (directed_rounding_works()), which
+/// no call can release.
 bool force_exact();
+
+/// Whether setting the processor's rounding mode takes effect, so that the
+/// filters' intervals hold their exact values. Checked once per process
+/// (two interval operations). False under emulators that round to nearest
+/// whatever the mode, valgrind among them: then every decision takes the
+/// exact path (force_exact() is true), and answers stay exact, only slower.
+bool directed_rounding_works();
 
 /// A snapshot of the counters (thread-safe, relaxed).
 FilterStats filter_stats();
@@ -83,7 +96,7 @@ void reset_filter_stats();
 class ForceExactScope {
  public:
   /// Sets force_exact() to `on`.
-  explicit ForceExactScope(bool on = true) : previous_(force_exact()) { set_force_exact(on); }
+  explicit ForceExactScope(bool on = true) : previous_(force_exact_set()) { set_force_exact(on); }
   ~ForceExactScope() { set_force_exact(previous_); }
   ForceExactScope(const ForceExactScope&) = delete;
   ForceExactScope& operator=(const ForceExactScope&) = delete;

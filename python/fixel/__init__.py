@@ -30,6 +30,7 @@ __all__ = [
     "exact", "seating_set", "guaranteed_set", "simulate", "solutions", "region", "sample",
     "to_off", "to_svg", "SustainedSet", "sustained_set", "ApproachSet", "approach_set", "push", "push_plan",
     "design", "design_candidates", "design_scene", "Design", "Layout", "Candidate", "exact_only", "filter_stats",
+    "directed_rounding_works",
 ]  # fmt: skip
 
 
@@ -693,15 +694,25 @@ def exact_only(on=True):
     (the CLI's ``--exact-only``, ``FIXEL_FORCE_EXACT=1``): the same answers,
     more slowly. Process-wide, so other threads see it too; the previous
     setting is restored on leaving the block, also on an exception.
-    ``exact_only(False)`` turns the filters back on inside the block."""
+    ``exact_only(False)`` turns the filters back on inside the block, unless
+    ``directed_rounding_works()`` is False (under valgrind, say): then every
+    decision is exact, whatever this says."""
     if not isinstance(on, bool):
         raise TypeError(f"on: {on!r} is not a bool")
-    previous = _fixel.force_exact()
+    previous = _fixel.force_exact_set()
     _fixel.set_force_exact(on)
     try:
         yield
     finally:
         _fixel.set_force_exact(previous)
+
+
+def directed_rounding_works():
+    """Whether this machine honours the processor's rounding mode, so that
+    the interval filters can decide. False under valgrind, which rounds to
+    nearest whatever the mode: then every decision is exact (as inside
+    ``exact_only()``), the same answers, more slowly."""
+    return _fixel.directed_rounding_works()
 
 
 def filter_stats(reset=False):

@@ -10,7 +10,11 @@ namespace fixel::python {
 void bind_filter(py::module_& m) {
   m.def("set_force_exact", &set_force_exact, py::arg("on"),
         "Force (True) or release (False) the exact path for every filtered decision in the process");
-  m.def("force_exact", &force_exact, "Whether the exact path is forced");
+  m.def("force_exact", &force_exact,
+        "Whether the exact path is forced (always, when directed_rounding_works() is False)");
+  m.def("force_exact_set", &force_exact_set, "Whether set_force_exact asks for the exact path");
+  m.def("directed_rounding_works", &directed_rounding_works,
+        "Whether the processor honours the rounding mode, so that the filters can be used (False under valgrind)");
   m.def(
       "filter_stats",
       [] {

@@ -74,7 +74,10 @@ void maybe_print_filter_stats() {
   for (int k = 0; k < static_cast<int>(fixel::FilterSite::kCount); ++k)
     std::cerr << " " << fixel::to_string(static_cast<fixel::FilterSite>(k)) << " " << st.site[k].certified << "/"
               << st.site[k].fallbacks;
-  std::cerr << (fixel::force_exact() ? " (exact only)\n" : "\n");
+  if (!fixel::directed_rounding_works())
+    std::cerr << " (exact only: this machine ignores the rounding mode, as valgrind does)\n";
+  else
+    std::cerr << (fixel::force_exact() ? " (exact only)\n" : "\n");
 }
 
 }  // namespace

@@ -562,3 +562,11 @@ def test_exact_only_restores_the_previous_setting_even_after_an_exception():
             pass
     with pytest.raises(TypeError):
         fixel.filter_stats(reset="yes")
+
+
+def test_directed_rounding_works_here_so_the_switch_alone_decides():
+    assert fixel.directed_rounding_works() is True
+    with fixel.exact_only(False):
+        assert not fixel._fixel.force_exact()
+    with fixel.exact_only(True):
+        assert fixel._fixel.force_exact() and fixel._fixel.force_exact_set()

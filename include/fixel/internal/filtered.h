@@ -23,6 +23,10 @@ using FI = CGAL::Interval_nt<false>;
 // Rounds towards +∞ for its lifetime, then restores the caller's mode.
 using Protect = CGAL::Protect_FPU_rounding<true>;
 
+// Tests only: act as if directed rounding were ignored (as under
+// valgrind), so that directed_rounding_works() is false until switched off.
+void assume_directed_rounding_ignored(bool on);
+
 // Counts one filtered decision (certified) or one exact fallback.
 void record_filter(FilterSite site, bool certified);
 // Adds a batch of decisions at once (one atomic update per counter).
