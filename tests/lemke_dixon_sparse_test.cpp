@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "fixel/internal/exact_lu.h"
+#include "exact_lu_reference.h"
 #include "fixel/internal/lemke_dixon.h"
 #include "fixel/rational.h"
 
@@ -27,18 +27,7 @@ struct WordSystem {
     for (const std::int64_t v : y) out.push_back(static_cast<char>(v == 0));
     return out;
   }
-  bool reference(VectorQ& x) const {
-    MatrixQ A(k, k);
-    VectorQ b(k);
-    for (int a = 0; a < k; ++a) {
-      b[a] = Rational(y[a]);
-      for (int j = 0; j < k; ++j) A(a, j) = Rational(c[static_cast<std::size_t>(a) * k + j]);
-    }
-    const auto lu = exact_lu(A);
-    if (!lu.isInvertible()) return false;
-    x = lu.solve(b);
-    return true;
-  }
+  bool reference(VectorQ& x) const { return test::exact_lu_solution(k, c, y, x); }
 };
 
 // dixon_solve on the words, with short rows eliminated or not.

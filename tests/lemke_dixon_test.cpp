@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "fixel/internal/exact_lu.h"
+#include "exact_lu_reference.h"
 #include "fixel/internal/lemke_dixon_words.h"
 #include "fixel/internal/lemke_scaled.h"
 #include "fixel/rational.h"
@@ -31,18 +31,7 @@ struct System {
     return out;
   }
   // The reference: Eigen's exact LU over the rationals (a second method).
-  bool reference(VectorQ& x) const {
-    MatrixQ A(k, k);
-    VectorQ b(k);
-    for (int a = 0; a < k; ++a) {
-      b[a] = Rational(y[a]);
-      for (int j = 0; j < k; ++j) A(a, j) = Rational(c[static_cast<std::size_t>(a) * k + j]);
-    }
-    const auto lu = exact_lu(A);
-    if (!lu.isInvertible()) return false;
-    x = lu.solve(b);
-    return true;
-  }
+  bool reference(VectorQ& x) const { return test::exact_lu_solution(k, c, y, x); }
 };
 
 // A signed integer of up to `bits` bits; zero with probability `zeros`.
