@@ -70,24 +70,12 @@ long FilterStats::total_certified() const {
 
 namespace {
 
-// Whether CGAL's intervals enclose here: under Protect, 1.1·10.1 and 1/10
-// (neither a double) must come out as intervals of two distinct ends.
-// Valgrind, for one, ignores the SSE rounding mode and rounds to nearest:
-// then both ends are the same double, on one side of the exact value.
-bool intervals_enclose() {
-  internal::Protect guard;
-  volatile double a = 1.1, b = 10.1, one = 1, ten = 10;  // not constants: computed here, in this mode
-  const internal::FI product = internal::FI(a) * internal::FI(b);
-  const internal::FI quotient = internal::FI(one) / internal::FI(ten);
-  return product.inf() < product.sup() && quotient.inf() < quotient.sup();
-}
-
 std::atomic<bool> g_assume_rounding_ignored{false};
 
 }  // namespace
 
 bool directed_rounding_works() {
-  static const bool works = intervals_enclose();
+  static const bool works = internal::intervals_enclose_in(CGAL_FE_UPWARD);
   return works && !g_assume_rounding_ignored.load(std::memory_order_relaxed);
 }
 
@@ -96,6 +84,21 @@ bool force_exact_set() { return g_force_exact.load(std::memory_order_relaxed); }
 bool force_exact() { return force_exact_set() || !directed_rounding_works(); }
 
 namespace internal {
+
+// 1.1·10.1, 1/10 and 1 + 2⁻⁶⁰ (none a double) must come out as intervals
+// of two distinct ends. Valgrind, for one, ignores the SSE rounding mode
+// and rounds to nearest: then both ends are the same double, on one side
+// of the exact value.
+bool intervals_enclose_in(CGAL::FPU_CW_t mode) {
+  const CGAL::FPU_CW_t previous = CGAL::FPU_get_and_set_cw(mode);
+  volatile double a = 1.1, b = 10.1, one = 1, ten = 10, tiny = 0x1p-60;  // not constants: computed in `mode`
+  const FI product = FI(a) * FI(b);
+  const FI quotient = FI(one) / FI(ten);
+  const FI sum = FI(one) + FI(tiny);
+  CGAL::FPU_set_cw(previous);
+  return product.inf() < product.sup() && quotient.inf() < quotient.sup() && sum.inf() < sum.sup();
+}
+
 void assume_directed_rounding_ignored(bool on) { g_assume_rounding_ignored.store(on, std::memory_order_relaxed); }
 }  // namespace internal
 

@@ -158,7 +158,8 @@ class FilteredRun {
     } else {
       // Into the result's own storage when it has the size already (a
       // caller solving in a loop): each basic value in lowest terms,
-      // written straight in (den > 0), then zeros for the nonbasic ones.
+      // written straight in (den > 0), then zeros for the rest (the
+      // nonbasic variables and basic ones of value 0).
       result.w.resize(n_);
       result.z.resize(n_);
       const auto value = [&](int var) { return (var < n_ ? result.w[var] : result.z[var - n_]).backend().data(); };

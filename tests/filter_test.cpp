@@ -66,17 +66,19 @@ GTEST_TEST(Filter, ToIntervalHoldsEveryRationalInEveryRoundingModeAndDyadicsAreP
 }
 
 GTEST_TEST(Filter, ForceExactScopeSetsAndRestoresTheSwitch) {
-  const bool before = force_exact();
+  const bool before = force_exact_set();
   {
     ForceExactScope on(true);
+    EXPECT_TRUE(force_exact_set());
     EXPECT_TRUE(force_exact());
     {
       ForceExactScope off(false);
-      EXPECT_FALSE(force_exact());
+      EXPECT_FALSE(force_exact_set());
+      EXPECT_EQ(force_exact(), !directed_rounding_works());
     }
-    EXPECT_TRUE(force_exact());
+    EXPECT_TRUE(force_exact_set());
   }
-  EXPECT_EQ(force_exact(), before);
+  EXPECT_EQ(force_exact_set(), before);
 }
 
 GTEST_TEST(Filter, RegionsOfTheBundledScenesAreIdenticalJsonWithAndWithoutFilters) {
@@ -941,14 +943,35 @@ GTEST_TEST(Filter, DirectedRoundingWorksOnThisMachineSoTheSwitchAloneDecides) {
   EXPECT_FALSE(force_exact());
 }
 
+// The check itself: intervals enclose when computed rounding upward only,
+// and the caller's rounding mode comes back.
+GTEST_TEST(Filter, IntervalsEncloseOnlyWhenComputedRoundingUpward) {
+  if (!directed_rounding_works()) GTEST_SKIP() << "this machine ignores the rounding mode";
+  const int caller = std::fegetround();
+  EXPECT_TRUE(internal::intervals_enclose_in(CGAL_FE_UPWARD));
+  EXPECT_FALSE(internal::intervals_enclose_in(CGAL_FE_TONEAREST));
+  EXPECT_FALSE(internal::intervals_enclose_in(CGAL_FE_DOWNWARD));
+  EXPECT_FALSE(internal::intervals_enclose_in(CGAL_FE_TOWARDZERO));
+  EXPECT_EQ(std::fegetround(), caller);
+}
+
 // As under valgrind, which rounds to nearest whatever the mode: the filters'
-// intervals would not hold their values, so no filter may decide.
+// intervals would not hold their values, so no filter may decide: not
+// Lemke's (seat, simulate), not S's, not the region's.
 GTEST_TEST(Filter, WhereRoundingIsIgnoredEveryDecisionIsExactWhateverTheSwitchSays) {
+  if (!directed_rounding_works()) GTEST_SKIP() << "this machine ignores the rounding mode";
   const Scene scene = test::scene_file("blob");
-  const SeatingSet S = seating_set(scene);
+  const Scene example2 = test::scene_file("example2");
   RegionOptions opt;
   opt.resolution = Rational(1, 64);
-  const std::string filtered = run(false, [&] { return region_json_of(scene, S, opt); });
+  const VectorQ impulse = (VectorQ(3) << -1, -1, -1).finished();
+  const auto everything = [&] {
+    const SeatingSet S = seating_set(scene);
+    const SeatingSet S2 = seating_set(example2);
+    return region_json_of(scene, S, opt) + seat_json(example2, S2, seat_report(example2, S2, impulse, nullptr, false)) +
+           simulation_json(example2, simulate(example2, {impulse}, 3));
+  };
+  const std::string filtered = run(false, everything);
   const bool set_before = force_exact_set();
   internal::assume_directed_rounding_ignored(true);
   {
@@ -957,7 +980,7 @@ GTEST_TEST(Filter, WhereRoundingIsIgnoredEveryDecisionIsExactWhateverTheSwitchSa
     EXPECT_FALSE(force_exact_set());
     EXPECT_TRUE(force_exact());
     reset_filter_stats();
-    EXPECT_EQ(region_json_of(scene, S, opt), filtered);
+    EXPECT_EQ(everything(), filtered);
     EXPECT_EQ(filter_stats().total_certified() + filter_stats().total_fallbacks(), 0);
     {
       ForceExactScope on(true);  // restores the switch, not the forced state
@@ -969,8 +992,9 @@ GTEST_TEST(Filter, WhereRoundingIsIgnoredEveryDecisionIsExactWhateverTheSwitchSa
   ForceExactScope off(false);
   EXPECT_FALSE(force_exact());
   reset_filter_stats();
-  EXPECT_EQ(region_json_of(scene, S, opt), filtered);
-  EXPECT_GT(filter_stats().total_certified(), 0);
+  EXPECT_EQ(everything(), filtered);
+  EXPECT_GT(filter_stats().at(FilterSite::kLemke).certified, 0);
+  EXPECT_GT(filter_stats().at(FilterSite::kRegionTest).certified, 0);
 }
 
 }  // namespace

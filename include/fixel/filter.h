@@ -63,10 +63,11 @@ struct FilterStats {
   long total_certified() const;
 };
 
-/// Forces (true) or releases (false) the exact path for every filtered
-/// decision in the process. The initial value is true when the environment
-/// variable FIXEL_FORCE_EXACT is set to anything but "" or "0". Answers are
-/// identical either way; only the time differs.
+/// Sets the switch that forces (true) or releases (false) the exact path for
+/// every filtered decision in the process; releasing it turns the filters
+/// on only where directed_rounding_works(). The initial value is true when
+/// the environment variable FIXEL_FORCE_EXACT is set to anything but "" or
+/// "0". Answers are identical either way; only the time differs.
 void set_force_exact(bool on);
 
 /// Whether set_force_exact (or FIXEL_FORCE_EXACT) asks for the exact path:
@@ -91,11 +92,11 @@ FilterStats filter_stats();
 /// Sets every counter to zero.
 void reset_filter_stats();
 
-/// Sets force_exact() for the lifetime of the object and restores the
-/// previous value after (tests, the CLI's --exact-only).
+/// Sets the switch (set_force_exact) for the lifetime of the object and
+/// restores its previous value after (tests, the CLI's --exact-only).
 class ForceExactScope {
  public:
-  /// Sets force_exact() to `on`.
+  /// Sets the switch to `on`.
   explicit ForceExactScope(bool on = true) : previous_(force_exact_set()) { set_force_exact(on); }
   ~ForceExactScope() { set_force_exact(previous_); }
   ForceExactScope(const ForceExactScope&) = delete;

@@ -9,7 +9,8 @@ namespace fixel::python {
 
 void bind_filter(py::module_& m) {
   m.def("set_force_exact", &set_force_exact, py::arg("on"),
-        "Force (True) or release (False) the exact path for every filtered decision in the process");
+        "Force (True) or release (False) the exact path for every filtered decision in the process "
+        "(released, the filters run only where directed_rounding_works())");
   m.def("force_exact", &force_exact,
         "Whether the exact path is forced (always, when directed_rounding_works() is False)");
   m.def("force_exact_set", &force_exact_set, "Whether set_force_exact asks for the exact path");

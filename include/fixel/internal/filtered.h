@@ -23,6 +23,12 @@ using FI = CGAL::Interval_nt<false>;
 // Rounds towards +∞ for its lifetime, then restores the caller's mode.
 using Protect = CGAL::Protect_FPU_rounding<true>;
 
+// Whether CGAL's intervals computed in rounding mode `mode` (a CGAL_FE_*
+// constant) hold their values, by three operations whose results are not
+// doubles: true for CGAL_FE_UPWARD on a processor that honours it, false in
+// the other modes. directed_rounding_works() asks once, for upward.
+bool intervals_enclose_in(CGAL::FPU_CW_t mode);
+
 // Tests only: act as if directed rounding were ignored (as under
 // valgrind), so that directed_rounding_works() is false until switched off.
 void assume_directed_rounding_ignored(bool on);
