@@ -81,7 +81,7 @@ bool force_exact();
 
 /// Whether setting the processor's rounding mode takes effect, so that the
 /// filters' intervals hold their exact values. Checked once per process
-/// (two interval operations). False under emulators that round to nearest
+/// (three interval operations). False under emulators that round to nearest
 /// whatever the mode, valgrind among them: then every decision takes the
 /// exact path (force_exact() is true), and answers stay exact, only slower.
 bool directed_rounding_works();
